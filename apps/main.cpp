@@ -1,0 +1,76 @@
+// The `visors` command-line program: one binary, subcommands. See README.md.
+
+#include <cstdio>
+#include <iostream>
+#include <iterator>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "tools/tool.hpp"
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+
+int run_tool(const std::string& name) {
+  const visors::tools::ToolEntry* entry = nullptr;
+  for (const auto& t : visors::tools::tool_registry()) {
+    if (t.name == name) entry = &t;
+  }
+  if (entry == nullptr) {
+    fmt::print(stderr, "visors tool: unknown tool '{}' (see 'visors tool --help')\n", name);
+    return kExitBadInput;
+  }
+  const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+  visors::tools::Json input;
+  try {
+    input = visors::tools::Json::parse(text);
+  } catch (const visors::tools::Json::parse_error& e) {
+    fmt::print(stderr, "visors tool {}: input: not valid JSON ({})\n", name, e.what());
+    return kExitBadInput;
+  }
+  if (!input.is_object()) {
+    fmt::print(stderr, "visors tool {}: input: must be one JSON object\n", name);
+    return kExitBadInput;
+  }
+  try {
+    const auto output = entry->run(input);
+    std::cout << output.dump() << '\n';
+    return 0;
+  } catch (const visors::tools::ToolInputError& e) {
+    fmt::print(stderr, "visors tool {}: {}\n", name, e.what());
+    return kExitBadInput;
+  }
+}
+
+std::string tool_list() {
+  std::string text = "Tools (JSON object on stdin, JSON object on stdout):\n";
+  for (const auto& t : visors::tools::tool_registry()) {
+    text += fmt::format("  {:<10} {}\n", t.name, t.summary);
+  }
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"visors: formation-flying GNC for the VISORS distributed telescope"};
+  app.require_subcommand(1);
+
+  std::string tool_name;
+  auto* tool = app.add_subcommand("tool", "run a building block: JSON in, JSON out");
+  tool->add_option("name", tool_name, "tool name")->required();
+  tool->footer(tool_list());
+
+  app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors 0.1.0\n"); });
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : kExitBadInput;
+  }
+  if (tool->parsed()) return run_tool(tool_name);
+  return 0;
+}

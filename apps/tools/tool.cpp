@@ -1,0 +1,93 @@
+#include "tools/tool.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace visors::tools {
+namespace {
+
+std::string join(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+const Json& require_member(const Json& object, const std::string& key, const std::string& path) {
+  if (!object.is_object()) throw ToolInputError(path, "must be a JSON object");
+  const auto it = object.find(key);
+  if (it == object.end()) throw ToolInputError(join(path, key), "is required but missing");
+  return *it;
+}
+
+double finite_number(const Json& value, const std::string& field) {
+  if (!value.is_number()) throw ToolInputError(field, "must be a number");
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) throw ToolInputError(field, "must be finite");
+  return x;
+}
+
+}  // namespace
+
+double require_number(const Json& object, const std::string& key, const std::string& path) {
+  return finite_number(require_member(object, key, path), join(path, key));
+}
+
+std::optional<double> optional_number(const Json& object, const std::string& key,
+                                      const std::string& path) {
+  if (!object.is_object() || !object.contains(key)) return std::nullopt;
+  return finite_number(object.at(key), join(path, key));
+}
+
+std::string require_string(const Json& object, const std::string& key, const std::string& path) {
+  const Json& value = require_member(object, key, path);
+  if (!value.is_string()) throw ToolInputError(join(path, key), "must be a string");
+  return value.get<std::string>();
+}
+
+Eigen::Vector3d require_vector3(const Json& object, const std::string& key,
+                                const std::string& path) {
+  const std::string field = join(path, key);
+  const Json& value = require_member(object, key, path);
+  if (!value.is_array() || value.size() != 3) {
+    throw ToolInputError(field, "must be an array of 3 numbers");
+  }
+  Eigen::Vector3d v;
+  for (int k = 0; k < 3; ++k) {
+    v[k] = finite_number(value[static_cast<std::size_t>(k)], field + "[" + std::to_string(k) + "]");
+  }
+  return v;
+}
+
+const Json& require_object(const Json& object, const std::string& key, const std::string& path) {
+  const Json& value = require_member(object, key, path);
+  if (!value.is_object()) throw ToolInputError(join(path, key), "must be a JSON object");
+  return value;
+}
+
+void reject_unknown_keys(const Json& object, const std::vector<std::string_view>& allowed,
+                         const std::string& path) {
+  for (const auto& [key, value] : object.items()) {
+    bool known = false;
+    for (const auto& a : allowed) known = known || (a == key);
+    if (!known) throw ToolInputError(join(path, key), "is not a recognised field");
+  }
+}
+
+Json to_json(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
+
+namespace {
+std::vector<ToolEntry>& mutable_registry() {
+  static std::vector<ToolEntry> registry;
+  return registry;
+}
+}  // namespace
+
+bool register_tool(ToolEntry entry) {
+  auto& registry = mutable_registry();
+  const auto at = std::lower_bound(registry.begin(), registry.end(), entry.name,
+                                   [](const ToolEntry& e, std::string_view n) { return e.name < n; });
+  registry.insert(at, std::move(entry));
+  return true;
+}
+
+const std::vector<ToolEntry>& tool_registry() { return mutable_registry(); }
+
+}  // namespace visors::tools

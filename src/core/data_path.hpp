@@ -1,0 +1,20 @@
+#pragma once
+// Data search path: reference data files (gravity fields, EOP, space weather, GPS ephemerides)
+// are found at run time through VISORS_DATA_PATH (':'-separated folders), then the repository's
+// own data/ folder. Nothing is copied into the repository.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace visors::core {
+
+/// The folders searched, in order: each entry of VISORS_DATA_PATH, then the repository's data/.
+std::vector<std::filesystem::path> data_search_path();
+
+/// Finds `relative` (e.g. "eop/finals2000A_2024-07-01_2025-01-31.txt") in the search path.
+/// An absolute or existing path is returned as is. nullopt when found nowhere.
+std::optional<std::filesystem::path> find_data_file(const std::string& relative);
+
+}  // namespace visors::core

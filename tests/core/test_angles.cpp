@@ -1,0 +1,24 @@
+#include <gtest/gtest.h>
+
+#include "core/angles.hpp"
+#include "core/constants.hpp"
+
+namespace {
+using visors::core::kPi;
+
+// Reference: the (-pi, pi] convention of docs/conventions.md for dlambda.
+TEST(WrapPi, PiStaysPi) { EXPECT_DOUBLE_EQ(visors::core::wrap_pi(kPi), kPi); }
+TEST(WrapPi, MinusPiBecomesPi) { EXPECT_DOUBLE_EQ(visors::core::wrap_pi(-kPi), kPi); }
+TEST(WrapPi, ThreeHalfPiIsMinusHalfPi) {
+  EXPECT_NEAR(visors::core::wrap_pi(1.5 * kPi), -0.5 * kPi, 1e-15);
+}
+TEST(WrapPi, LargeMultipleKeepsRemainder) {
+  EXPECT_NEAR(visors::core::wrap_pi(0.25 + 200.0 * kPi), 0.25, 1e-12);
+}
+TEST(WrapTwoPi, NegativeSmallAngle) {
+  EXPECT_NEAR(visors::core::wrap_two_pi(-0.5), 2.0 * kPi - 0.5, 1e-15);
+}
+TEST(WrapTwoPi, NeverReturnsTwoPi) {
+  EXPECT_LT(visors::core::wrap_two_pi(-1e-18), 2.0 * kPi);
+}
+}  // namespace

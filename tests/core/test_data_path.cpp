@@ -1,0 +1,52 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "core/data_path.hpp"
+
+namespace {
+
+class DataPath : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const char* old = std::getenv("VISORS_DATA_PATH");
+    saved_ = old ? std::optional<std::string>(old) : std::nullopt;
+    root_ = std::filesystem::temp_directory_path() / "visors_data_path_test";
+    std::filesystem::create_directories(root_ / "first" / "eop");
+    std::filesystem::create_directories(root_ / "second" / "eop");
+    std::ofstream(root_ / "second" / "eop" / "x.txt") << "second";
+    ::setenv("VISORS_DATA_PATH", ((root_ / "first").string() + ":" + (root_ / "second").string()).c_str(), 1);
+  }
+  void TearDown() override {
+    if (saved_) ::setenv("VISORS_DATA_PATH", saved_->c_str(), 1);
+    else ::unsetenv("VISORS_DATA_PATH");
+    std::filesystem::remove_all(root_);
+  }
+  std::filesystem::path root_;
+  std::optional<std::string> saved_;
+};
+
+TEST_F(DataPath, SearchesEveryEntryOfTheEnvironmentVariable) {
+  const auto found = visors::core::find_data_file("eop/x.txt");
+  ASSERT_TRUE(found.has_value());
+  EXPECT_EQ(*found, root_ / "second" / "eop" / "x.txt");
+}
+
+TEST_F(DataPath, EarlierEntryWins) {
+  std::ofstream(root_ / "first" / "eop" / "x.txt") << "first";
+  EXPECT_EQ(*visors::core::find_data_file("eop/x.txt"), root_ / "first" / "eop" / "x.txt");
+}
+
+TEST_F(DataPath, MissingFileIsNullopt) {
+  EXPECT_FALSE(visors::core::find_data_file("eop/none.txt").has_value());
+}
+
+TEST_F(DataPath, RepositoryDataFolderIsLast) {
+  const auto folders = visors::core::data_search_path();
+  ASSERT_EQ(folders.size(), 3u);
+  EXPECT_EQ(folders.back().filename(), "data");
+}
+
+}  // namespace
