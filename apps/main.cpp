@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "preview/preview_command.hpp"
 #include "tools/tool.hpp"
 
 namespace {
@@ -64,6 +65,15 @@ int main(int argc, char** argv) {
   tool->add_option("name", tool_name, "tool name")->required();
   tool->footer(tool_list());
 
+  std::string scenario = "scenarios/formation_preview.toml";
+  std::string out_dir = "out/preview";
+  auto* preview = app.add_subcommand(
+      "preview", "relative motion of the mission formations over a few orbits (no control yet)");
+  preview->add_option("scenario", scenario,
+                      "scenario TOML (a path, or relative to VISORS_DATA_PATH and data/)")
+      ->capture_default_str();
+  preview->add_option("--out", out_dir, "output folder")->capture_default_str();
+
   app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors 0.1.0\n"); });
 
   try {
@@ -72,5 +82,6 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : kExitBadInput;
   }
   if (tool->parsed()) return run_tool(tool_name);
+  if (preview->parsed()) return visors::preview::run_preview_command(scenario, out_dir);
   return 0;
 }
