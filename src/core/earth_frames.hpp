@@ -1,0 +1,76 @@
+#pragma once
+// GCRF <-> ITRF, position and velocity.
+//
+// Full model (ground, truth simulation): IAU 2006/2000A, CIO based, through ERFA (IERS
+// Conventions 2010 eq. 5.1):  r_itrf = W(t) R3(ERA) C(X+dX, Y+dY, s) r_gcrf, with
+//   X, Y, s  eraXys06a(TT) plus the EOP celestial pole offsets dX, dY; C = eraC2ixys;
+//   ERA      eraEra00(UT1);  W = eraPom00(x_p, y_p, s'(TT) = eraSp00).
+// Velocity (Vallado, Fundamentals of Astrodynamics and Applications, 5th ed., Algorithm 23):
+//   v_itrf = W [R3(ERA) C v_gcrf - omega x (R3(ERA) C r_gcrf)],
+//   omega = (0, 0, 7.292115146706979e-5 (1 - LOD / 86400 s)) rad/s.
+// The neglected rates of C and W are ~3e-12 rad/s (precession), i.e. ~2e-5 m/s at LEO.
+//
+// On-board model (OnboardEarthFrame): W(x_p, y_p) R3(ERA(UT1)) C(X_P, Y_P, s) where X_P, Y_P are
+// the CIP of the IAU 2006 bias-precession matrix only (eraBp06 -> eraBpn2xy): NO nutation. x_p,
+// y_p, UT1-UTC (and LOD) are uplinked constants. The bias-precession matrix is recomputed only
+// when older than a refresh interval (default 600 s; precession moves 0.001" in 600 s, 3 cm).
+// Measured error against the full model with the same x_p, y_p, UT1-UTC, LOD, 2024-01..2026-12
+// (tests/core/test_earth_frames.cpp: 1500 epochs, 300 s after a refresh):
+//   orientation 9.8" max (bound tested: 10")  ->  position 323 m max at |r| = 6878 km (335 m),
+//   velocity 0.36 m/s max (0.37 m/s), ITRF and GCRF alike: the rotation error times |v|.
+// Omitting nutation is essentially the whole error (the digest's 2000-2040 maximum: 9.9").
+
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "core/eop.hpp"
+#include "core/gps_time.hpp"
+
+namespace visors::core {
+
+struct StateVector {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // [m]
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();  // [m/s]
+};
+
+/// Earth's angular velocity including the excess length of day [rad/s].
+double earth_rotation_rate(const EarthOrientation& eop);
+
+/// Full IAU 2006/2000A rotation GCRF -> ITRF (apply to column vectors).
+Eigen::Matrix3d gcrf_to_itrf_matrix(GpsTime t, const EarthOrientation& eop);
+StateVector gcrf_to_itrf(GpsTime t, const StateVector& gcrf, const EarthOrientation& eop);
+StateVector itrf_to_gcrf(GpsTime t, const StateVector& itrf, const EarthOrientation& eop);
+
+/// The cheap on-board transform (see the file comment for its model and error). Not const: the
+/// bias-precession matrix is cached and refreshed when it is older than the refresh interval.
+class OnboardEarthFrame {
+ public:
+  static constexpr double kDefaultRefreshInterval = 600.0;  // [s]
+
+  /// `uplinked`: x_p, y_p, dut1 (and lod for the velocity); dx, dy are ignored (they correct the
+  /// nutation model, which is not used). refresh_interval <= 0 recomputes at every call.
+  explicit OnboardEarthFrame(const EarthOrientation& uplinked = {},
+                             double refresh_interval = kDefaultRefreshInterval);
+
+  /// A new uplink: takes effect at the next call.
+  void set_earth_orientation(const EarthOrientation& uplinked);
+
+  Eigen::Matrix3d gcrf_to_itrf_matrix(GpsTime t);
+  StateVector gcrf_to_itrf(GpsTime t, const StateVector& gcrf);
+  StateVector itrf_to_gcrf(GpsTime t, const StateVector& itrf);
+
+  /// Time at which the cached bias-precession matrix was computed; empty before the first call.
+  [[nodiscard]] std::optional<GpsTime> precession_epoch() const { return precession_epoch_; }
+
+ private:
+  void refresh_if_stale(GpsTime t);
+
+  EarthOrientation eop_;
+  double refresh_interval_;
+  std::optional<GpsTime> precession_epoch_;
+  Eigen::Matrix3d c2i_ = Eigen::Matrix3d::Identity();  // GCRF -> CIRS, bias-precession only
+  Eigen::Matrix3d pom_ = Eigen::Matrix3d::Identity();  // TIRS -> ITRF, polar motion W
+};
+
+}  // namespace visors::core
