@@ -1,0 +1,50 @@
+// Secular J2 rates.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "astro/j2_secular.hpp"
+#include "astro_test_support.hpp"
+
+namespace {
+using namespace visors::astro;
+using visors::astro::test::kDeg;
+
+// The digest's constants (mu = 3.986004418e14, R_E = 6378137 m, a = R_E + 500 km) with which its
+// "VISORS chief numbers" were computed.
+const visors::core::EarthGravityConstants kDigest{3.986004418e14, 6378137.0, 1.08262668e-3};
+KeplerianElements digest_chief() {
+  return {kDigest.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
+}
+constexpr double kPerDay = 86400.0 / kDeg;  // rad/s -> deg/day
+
+// Reference: digest "VISORS chief numbers" (regression of its own scripts; we re-derived the
+// formulas: Omegadot = -(3/2) n J2 (R/p)^2 cos i, e.g. Vallado 4th ed. eq. 9-41).
+TEST(J2Secular, DigestKappa) { EXPECT_NEAR(j2_secular_rates(digest_chief(), kDigest).kappa, 7.72792e-7, 1e-11); }
+TEST(J2Secular, DigestArgpRate) {
+  EXPECT_NEAR(j2_secular_rates(digest_chief(), kDigest).argp_dot * kPerDay, -3.473, 1e-3);
+}
+TEST(J2Secular, DigestRaanRate) {
+  EXPECT_NEAR(j2_secular_rates(digest_chief(), kDigest).raan_dot * kPerDay, 1.0384, 1e-4);
+}
+TEST(J2Secular, DigestArgumentOfLatitudeRate) {
+  const auto r = j2_secular_rates(digest_chief(), kDigest);
+  EXPECT_NEAR(r.M_dot + r.argp_dot, 1.1053517e-3, 1e-10);
+}
+
+// Property: the sun-synchronous inclination at 500 km is 97.40 deg (digest flag, and e.g.
+// Vallado 4th ed. Fig. 11-5), i.e. the node rate there equals 360 deg / 365.2422 d.
+TEST(J2Secular, SunSynchronousAt500km) {
+  KeplerianElements el = digest_chief();
+  el.i = 97.402 * kDeg;
+  EXPECT_NEAR(j2_secular_rates(el, kDigest).raan_dot * kPerDay, 360.0 / 365.2422, 2e-4);
+}
+
+// Property: propagation is linear in the rates; a, e, i untouched.
+TEST(J2Secular, PropagationAdvancesAnglesLinearly) {
+  const KeplerianElements el = digest_chief();
+  const auto r = j2_secular_rates(el, kDigest);
+  EXPECT_DOUBLE_EQ(propagate_mean_j2(el, 1000.0, kDigest).raan, el.raan + 1000.0 * r.raan_dot);
+}
+
+}  // namespace
