@@ -32,14 +32,14 @@ void BM_RoeToRtnEccentric(benchmark::State& state) {
   roe /= kChief.a;
   for (auto _ : state) {
     benchmark::DoNotOptimize(roe);
-    RelativeStateRtn x = rtn_from_roe(kChief, roe, kGravity.mu, 100.0);
+    RelativeRtnVector x = rtn_from_roe(kChief, roe, kGravity.mu, 100.0);
     benchmark::DoNotOptimize(x);
   }
 }
 BENCHMARK(BM_RoeToRtnEccentric);
 
 void BM_RtnToRoeEccentric(benchmark::State& state) {
-  RelativeStateRtn x;
+  RelativeRtnVector x;
   x << -34.8, 19.3, -6.9, 0.01, 0.07, -0.02;
   for (auto _ : state) {
     benchmark::DoNotOptimize(x);
@@ -63,14 +63,14 @@ void BM_KeplerianToCartesian(benchmark::State& state) {
   KeplerianElements el = kChief;
   for (auto _ : state) {
     benchmark::DoNotOptimize(el);
-    CartesianState x = cartesian_from_keplerian(el, kGravity.mu);
+    visors::core::StateVector x = cartesian_from_keplerian(el, kGravity.mu);
     benchmark::DoNotOptimize(x);
   }
 }
 BENCHMARK(BM_KeplerianToCartesian);
 
 void BM_CartesianToKeplerian(benchmark::State& state) {
-  const CartesianState x = cartesian_from_keplerian(kChief, kGravity.mu);
+  const visors::core::StateVector x = cartesian_from_keplerian(kChief, kGravity.mu);
   Eigen::Vector3d r = x.r;
   Eigen::Vector3d v = x.v;
   for (auto _ : state) {

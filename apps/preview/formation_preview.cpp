@@ -53,8 +53,7 @@ core::Result<core::StateVector> osculating_state(const astro::KeplerianElements&
                                                  const core::EarthGravityConstants& earth) {
   auto osc = astro::osculating_from_mean(mean, earth);
   if (!osc.ok()) return osc.error();
-  const auto c = astro::cartesian_from_keplerian(osc.value(), earth.mu);
-  return core::StateVector{c.r, c.v};
+  return astro::cartesian_from_keplerian(osc.value(), earth.mu);
 }
 
 double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -109,7 +108,7 @@ core::Result<FormationSummary> preview_formation(const PreviewScenario& s, const
     const auto rel = core::relative_state_rtn(chief.value(), deputy.value());
 
     const astro::RelativeOrbitalElements roe_t = astro::j2_roe_stm(s.chief_mean, t, s.earth) * roe0;
-    const astro::RelativeStateRtn linear = astro::rtn_from_roe(chief_mean, roe_t, s.earth.mu);
+    const astro::RelativeRtnVector linear = astro::rtn_from_roe(chief_mean, roe_t, s.earth.mu);
     const double model_error = (linear.head<3>() - rel.dr_rtn).norm();
 
     const Eigen::Vector3d dr_gcrf = deputy.value().r - chief.value().r;

@@ -41,7 +41,7 @@ Json run_elements(const Json& in) {
   const astro::KeplerianElements el{require_number(in, "a"),    require_number(in, "e"),
                                     require_number(in, "i"),    require_number(in, "raan"),
                                     require_number(in, "argp"), require_number(in, "M")};
-  const astro::CartesianState x = take(astro::keplerian_to_cartesian(el, mu));
+  const visors::core::StateVector x = take(astro::keplerian_to_cartesian(el, mu));
   return Json{{"r", to_json(x.r)}, {"v", to_json(x.v)}};
 }
 

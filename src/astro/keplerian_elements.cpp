@@ -30,7 +30,7 @@ core::Result<KeplerianElements> validate_keplerian(const KeplerianElements& el) 
 
 double true_anomaly(const KeplerianElements& el) { return true_from_mean(el.M, el.e); }
 
-CartesianState cartesian_from_keplerian(const KeplerianElements& el, double mu) {
+core::StateVector cartesian_from_keplerian(const KeplerianElements& el, double mu) {
   const double ecc_anomaly = eccentric_from_mean(el.M, el.e);
   const double cos_e = std::cos(ecc_anomaly);
   const double sin_e = std::sin(ecc_anomaly);
@@ -48,10 +48,10 @@ CartesianState cartesian_from_keplerian(const KeplerianElements& el, double mu) 
   const double ci = std::cos(el.i), si = std::sin(el.i);
   const Eigen::Vector3d p{co * cw - so * sw * ci, so * cw + co * sw * ci, sw * si};
   const Eigen::Vector3d q{-co * sw - so * cw * ci, -so * sw + co * cw * ci, cw * si};
-  return CartesianState{x_pf * p + y_pf * q, vx_pf * p + vy_pf * q};
+  return core::StateVector{x_pf * p + y_pf * q, vx_pf * p + vy_pf * q};
 }
 
-core::Result<CartesianState> keplerian_to_cartesian(const KeplerianElements& elements, double mu) {
+core::Result<core::StateVector> keplerian_to_cartesian(const KeplerianElements& elements, double mu) {
   if (!std::isfinite(mu) || mu <= 0.0) return core::Error{"mu", "must be finite and > 0"};
   auto checked = validate_keplerian(elements);
   if (!checked) return checked.error();

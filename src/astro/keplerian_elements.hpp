@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "core/constants.hpp"
+#include "core/state_vector.hpp"
 #include "core/status.hpp"
 
 namespace visors::astro {
@@ -24,11 +25,6 @@ struct KeplerianElements {
   double M = 0.0;     // mean anomaly [rad]
 };
 
-struct CartesianState {
-  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // position, inertial [m]
-  Eigen::Vector3d v = Eigen::Vector3d::Zero();  // velocity, inertial [m/s]
-};
-
 inline constexpr double kCircularTolerance = 1e-13;    // below: e = 0, argp = 0 [-]
 inline constexpr double kEquatorialTolerance = 1e-13;  // sin i below: raan = 0 [-]
 
@@ -36,10 +32,10 @@ inline constexpr double kEquatorialTolerance = 1e-13;  // sin i below: raan = 0 
 core::Result<KeplerianElements> validate_keplerian(const KeplerianElements& elements);
 
 /// Two-body Cartesian state of validated elements (no check; see keplerian_to_cartesian).
-CartesianState cartesian_from_keplerian(const KeplerianElements& elements, double mu);
+core::StateVector cartesian_from_keplerian(const KeplerianElements& elements, double mu);
 
 /// Checked conversion: invalid elements or mu <= 0 ("mu") give an Error.
-core::Result<CartesianState> keplerian_to_cartesian(const KeplerianElements& elements,
+core::Result<core::StateVector> keplerian_to_cartesian(const KeplerianElements& elements,
                                                     double mu = core::EarthGravityConstants{}.mu);
 
 /// Elements of an inertial state. Angles raan, argp, M are wrapped to [0, 2 pi). Rejects

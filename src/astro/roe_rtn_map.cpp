@@ -91,17 +91,17 @@ RoeToRtnMatrix roe_to_rtn_matrix_near_circular(const KeplerianElements& chief, d
   return m * keplerian_drift(n, tau);
 }
 
-RelativeStateRtn rtn_from_roe(const KeplerianElements& chief, const RelativeOrbitalElements& roe,
+RelativeRtnVector rtn_from_roe(const KeplerianElements& chief, const RelativeOrbitalElements& roe,
                               double mu, double tau) {
   return roe_to_rtn_matrix(chief, mu, tau) * roe;
 }
 
 RelativeOrbitalElements roe_from_rtn(const KeplerianElements& chief,
-                                     const RelativeStateRtn& state_rtn, double mu, double tau) {
+                                     const RelativeRtnVector& state_rtn, double mu, double tau) {
   return roe_to_rtn_matrix(chief, mu, tau).partialPivLu().solve(state_rtn);
 }
 
-RelativeStateRtn rtn_from_roe_near_circular(const KeplerianElements& chief,
+RelativeRtnVector rtn_from_roe_near_circular(const KeplerianElements& chief,
                                             const RelativeOrbitalElements& roe, double mu,
                                             double tau) {
   return roe_to_rtn_matrix_near_circular(chief, mu, tau) * roe;

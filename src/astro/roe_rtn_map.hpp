@@ -23,7 +23,7 @@ namespace visors::astro {
 /// 6x6: [r_rtn; v_rtn] = matrix * roe. Columns in the roe:: index order.
 using RoeToRtnMatrix = Eigen::Matrix<double, 6, 6>;
 /// [r_rtn (m); v_rtn (m/s)].
-using RelativeStateRtn = Eigen::Matrix<double, 6, 1>;
+using RelativeRtnVector = Eigen::Matrix<double, 6, 1>;
 
 /// Eccentric-chief map (validated chief, 0 < i < pi). tau in [s].
 RoeToRtnMatrix roe_to_rtn_matrix(const KeplerianElements& chief, double mu, double tau = 0.0);
@@ -31,14 +31,14 @@ RoeToRtnMatrix roe_to_rtn_matrix(const KeplerianElements& chief, double mu, doub
 RoeToRtnMatrix roe_to_rtn_matrix_near_circular(const KeplerianElements& chief, double mu,
                                                double tau = 0.0);
 
-RelativeStateRtn rtn_from_roe(const KeplerianElements& chief, const RelativeOrbitalElements& roe,
+RelativeRtnVector rtn_from_roe(const KeplerianElements& chief, const RelativeOrbitalElements& roe,
                               double mu, double tau = 0.0);
 /// Inverse of rtn_from_roe (solves the 6x6 system, LU with partial pivoting).
 RelativeOrbitalElements roe_from_rtn(const KeplerianElements& chief,
-                                     const RelativeStateRtn& state_rtn, double mu,
+                                     const RelativeRtnVector& state_rtn, double mu,
                                      double tau = 0.0);
 
-RelativeStateRtn rtn_from_roe_near_circular(const KeplerianElements& chief,
+RelativeRtnVector rtn_from_roe_near_circular(const KeplerianElements& chief,
                                             const RelativeOrbitalElements& roe, double mu,
                                             double tau = 0.0);
 

@@ -26,13 +26,9 @@
 
 #include "core/eop.hpp"
 #include "core/gps_time.hpp"
+#include "core/state_vector.hpp"
 
 namespace visors::core {
-
-struct StateVector {
-  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // [m]
-  Eigen::Vector3d v = Eigen::Vector3d::Zero();  // [m/s]
-};
 
 /// Earth's angular velocity including the excess length of day [rad/s].
 double earth_rotation_rate(const EarthOrientation& eop);

@@ -9,6 +9,7 @@
 
 #include "astro/keplerian_elements.hpp"
 #include "core/constants.hpp"
+#include "core/rtn_frame.hpp"
 
 namespace visors::astro::test {
 
@@ -22,25 +23,14 @@ inline KeplerianElements visors_chief(double mean_anomaly_deg = 0.0) {
                            mean_anomaly_deg * kDeg};
 }
 
-/// Exact relative state of the deputy in the chief's RTN frame (R along r_c, N along h_c,
-/// T = N x R), velocity as seen in the rotating frame: omega_rtn = (r_c x v_c) / |r_c|^2 is the
-/// exact angular velocity of the RTN frame of a two-body (no out-of-plane acceleration) chief.
-inline Eigen::Matrix<double, 6, 1> exact_rtn(const CartesianState& chief,
-                                             const CartesianState& deputy) {
-  const Eigen::Vector3d h = chief.r.cross(chief.v);
-  const Eigen::Vector3d r_hat = chief.r.normalized();
-  const Eigen::Vector3d n_hat = h.normalized();
-  const Eigen::Vector3d t_hat = n_hat.cross(r_hat);
-  Eigen::Matrix3d to_rtn;
-  to_rtn.row(0) = r_hat.transpose();
-  to_rtn.row(1) = t_hat.transpose();
-  to_rtn.row(2) = n_hat.transpose();
-  const Eigen::Vector3d omega = h / chief.r.squaredNorm();
-  const Eigen::Vector3d rho = deputy.r - chief.r;
-  const Eigen::Vector3d rho_dot = deputy.v - chief.v - omega.cross(rho);
+/// Exact relative state of the deputy in the chief's RTN frame, velocity as seen in the rotating
+/// frame (core::relative_state_rtn, whose sign conventions tests/core/test_rtn_frame.cpp pins),
+/// stacked as [dr_rtn; dv_rtn] like the linear maps.
+inline Eigen::Matrix<double, 6, 1> exact_rtn(const core::StateVector& chief,
+                                             const core::StateVector& deputy) {
+  const core::RelativeStateRtn rel = core::relative_state_rtn(chief, deputy);
   Eigen::Matrix<double, 6, 1> out;
-  out.head<3>() = to_rtn * rho;
-  out.tail<3>() = to_rtn * rho_dot;
+  out << rel.dr_rtn, rel.dv_rtn;
   return out;
 }
 
@@ -58,7 +48,7 @@ inline Eigen::Vector3d j2_acceleration(const Eigen::Vector3d& r, const core::Ear
 }
 
 /// One classical fourth-order Runge-Kutta step of the J2 problem.
-inline CartesianState rk4_j2_step(const CartesianState& s, double h, const core::EarthGravityConstants& g) {
+inline core::StateVector rk4_j2_step(const core::StateVector& s, double h, const core::EarthGravityConstants& g) {
   const Eigen::Vector3d k1r = s.v;
   const Eigen::Vector3d k1v = j2_acceleration(s.r, g);
   const Eigen::Vector3d k2r = s.v + 0.5 * h * k1v;
@@ -67,8 +57,8 @@ inline CartesianState rk4_j2_step(const CartesianState& s, double h, const core:
   const Eigen::Vector3d k3v = j2_acceleration(s.r + 0.5 * h * k2r, g);
   const Eigen::Vector3d k4r = s.v + h * k3v;
   const Eigen::Vector3d k4v = j2_acceleration(s.r + h * k3r, g);
-  return CartesianState{s.r + h / 6.0 * (k1r + 2.0 * k2r + 2.0 * k3r + k4r),
-                        s.v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v)};
+  return core::StateVector{s.r + h / 6.0 * (k1r + 2.0 * k2r + 2.0 * k3r + k4r),
+                           s.v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v)};
 }
 
 }  // namespace visors::astro::test

@@ -7,24 +7,24 @@
 #include "astro/control_input_matrix.hpp"
 #include "astro/relative_orbital_elements.hpp"
 #include "astro_test_support.hpp"
+#include "core/rtn_frame.hpp"
 
 namespace {
 using namespace visors::astro;
 using visors::astro::test::kDeg;
 const double kMu = visors::core::EarthGravityConstants{}.mu;
 
-Eigen::Vector3d to_inertial(const CartesianState& chief, const Eigen::Vector3d& dv_rtn) {
-  const Eigen::Vector3d r_hat = chief.r.normalized();
-  const Eigen::Vector3d n_hat = chief.r.cross(chief.v).normalized();
-  return dv_rtn.x() * r_hat + dv_rtn.y() * n_hat.cross(r_hat) + dv_rtn.z() * n_hat;
+// Impulse given in the chief's RTN axes, expressed in GCRF (core::gcrf_to_rtn_matrix transposed).
+Eigen::Vector3d to_inertial(const visors::core::StateVector& chief, const Eigen::Vector3d& dv_rtn) {
+  return visors::core::gcrf_to_rtn_matrix(chief).transpose() * dv_rtn;
 }
 
 // Exact ROE jump: the spacecraft (elements `sc`) receives dv_rtn (RTN of `chief`); ROE of the
 // spacecraft w.r.t. the chief after minus before.
 RelativeOrbitalElements exact_jump(const KeplerianElements& chief, const KeplerianElements& sc,
                                    const Eigen::Vector3d& dv_rtn, double mu) {
-  const CartesianState x_c = cartesian_from_keplerian(chief, mu);
-  const CartesianState x = cartesian_from_keplerian(sc, mu);
+  const visors::core::StateVector x_c = cartesian_from_keplerian(chief, mu);
+  const visors::core::StateVector x = cartesian_from_keplerian(sc, mu);
   const KeplerianElements after = cartesian_to_keplerian(x.r, x.v + to_inertial(x_c, dv_rtn), mu).value();
   return roe_from_keplerian(chief, after).value() - roe_from_keplerian(chief, sc).value();
 }

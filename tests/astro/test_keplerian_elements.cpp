@@ -31,7 +31,7 @@ std::vector<GridCase> grid() {
   return cases;
 }
 
-double relative_state_error(const CartesianState& x, const CartesianState& y) {
+double relative_state_error(const visors::core::StateVector& x, const visors::core::StateVector& y) {
   return std::max((x.r - y.r).norm() / y.r.norm(), (x.v - y.v).norm() / y.v.norm());
 }
 
@@ -42,7 +42,7 @@ TEST(KeplerianElements, CartesianRoundTripOverGrid) {
   for (const auto& c : grid()) {
     for (double m = 0.0; m < 2.0 * kPi; m += 0.41) {
       const KeplerianElements el{7.0e6, c.e, c.i, 2.0, 1.0, m};
-      const CartesianState x = cartesian_from_keplerian(el, kMu);
+      const visors::core::StateVector x = cartesian_from_keplerian(el, kMu);
       const auto back = cartesian_to_keplerian(x.r, x.v, kMu);
       ASSERT_TRUE(back.ok());
       worst = std::max(worst, relative_state_error(cartesian_from_keplerian(back.value(), kMu), x));
@@ -59,7 +59,7 @@ TEST(KeplerianElements, ElementRoundTripOverGridWellDefinedQuantities) {
   for (const auto& c : grid()) {
     for (double m = 0.0; m < 2.0 * kPi; m += 0.41) {
       const KeplerianElements el{7.0e6, c.e, c.i, 2.0, 1.0, m};
-      const CartesianState x = cartesian_from_keplerian(el, kMu);
+      const visors::core::StateVector x = cartesian_from_keplerian(el, kMu);
       const KeplerianElements b = cartesian_to_keplerian(x.r, x.v, kMu).value();
       worst = std::max(worst, std::abs(b.a - el.a) / el.a);
       worst = std::max(worst, std::abs(b.e - el.e));
@@ -87,13 +87,13 @@ TEST(KeplerianElements, ElementRoundTripOverGridWellDefinedQuantities) {
 
 // Convention (keplerian_elements.hpp): circular -> argp = 0.
 TEST(KeplerianElements, CircularOrbitHasZeroArgumentOfPerigee) {
-  const CartesianState x = cartesian_from_keplerian({7.0e6, 0.0, 1.0, 2.0, 1.0, 0.5}, kMu);
+  const visors::core::StateVector x = cartesian_from_keplerian({7.0e6, 0.0, 1.0, 2.0, 1.0, 0.5}, kMu);
   EXPECT_EQ(cartesian_to_keplerian(x.r, x.v, kMu).value().argp, 0.0);
 }
 
 // Convention: equatorial -> raan = 0.
 TEST(KeplerianElements, EquatorialOrbitHasZeroRaan) {
-  const CartesianState x = cartesian_from_keplerian({7.0e6, 0.1, 0.0, 2.0, 1.0, 0.5}, kMu);
+  const visors::core::StateVector x = cartesian_from_keplerian({7.0e6, 0.1, 0.0, 2.0, 1.0, 0.5}, kMu);
   EXPECT_EQ(cartesian_to_keplerian(x.r, x.v, kMu).value().raan, 0.0);
 }
 
@@ -124,14 +124,14 @@ TEST_F(ValladoExample2_5, TrueAnomaly) {
 // printed to 5 digits (e.g. e), which alone moves r by ~0.1 km: tolerances 0.03 km, 2e-5 km/s.
 class ValladoExample2_6 : public ::testing::Test {
  protected:
-  static CartesianState state() {
+  static visors::core::StateVector state() {
     const double p = 11067.790e3;
     const double e = 0.83285;
     const KeplerianElements el{p / (1.0 - e * e), e, 87.87 * kDegToRad, 227.89 * kDegToRad,
                                53.38 * kDegToRad, mean_from_true(92.335 * kDegToRad, e)};
     return keplerian_to_cartesian(el, 398600.4418e9).value();
   }
-  CartesianState x = state();
+  visors::core::StateVector x = state();
 };
 TEST_F(ValladoExample2_6, Position) {
   EXPECT_LT((x.r / 1e3 - Eigen::Vector3d(6525.344, 6861.535, 6449.125)).norm(), 0.03);

@@ -78,7 +78,7 @@ struct MeanHistory {
   double n = 0.0;
 };
 MeanHistory integrate(const KeplerianElements& mean0, const visors::core::EarthGravityConstants& g) {
-  CartesianState s = cartesian_from_keplerian(osculating_from_mean(mean0, g).value(), g.mu);
+  visors::core::StateVector s = cartesian_from_keplerian(osculating_from_mean(mean0, g).value(), g.mu);
   std::vector<double> t, a, u, raan, e_norm;
   double osc_min = 1e30, osc_max = -1e30;
   double u_acc = 0.0, raan_acc = 0.0, u_prev = 0.0, raan_prev = 0.0;

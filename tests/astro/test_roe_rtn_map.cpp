@@ -21,7 +21,7 @@ RelativeOrbitalElements science_roe(double a) {
 
 // Exact relative state: deputy elements from the (exact) ROE definition at t0, both spacecraft
 // propagated two-body by tau, Cartesian states, chief RTN from its own state.
-RelativeStateRtn exact_state(const KeplerianElements& chief_t0, const RelativeOrbitalElements& roe,
+RelativeRtnVector exact_state(const KeplerianElements& chief_t0, const RelativeOrbitalElements& roe,
                              double tau) {
   const KeplerianElements deputy_t0 = deputy_from_roe(chief_t0, roe).value();
   return test::exact_rtn(cartesian_from_keplerian(propagate_kepler(chief_t0, tau, kMu), kMu),
@@ -75,7 +75,7 @@ TEST(RoeRtnMap, DigestTableExactPositions) {
                               TableRow{120.0, {-29.817, 88.122, 11.842}, 4e-4},
                               TableRow{180.0, {2.149, 113.978, 18.795}, 6e-4}}) {
     const KeplerianElements chief = test::visors_chief(row.m_deg);
-    const RelativeStateRtn exact = exact_state(chief, science_roe(chief.a), 0.0);
+    const RelativeRtnVector exact = exact_state(chief, science_roe(chief.a), 0.0);
     EXPECT_LT((exact.head<3>() - row.exact).cwiseAbs().maxCoeff(), 6e-4) << "M = " << row.m_deg;
   }
 }
@@ -84,7 +84,7 @@ TEST(RoeRtnMap, DigestTableEccentricMapBounds) {
                               TableRow{120.0, {}, 4e-4}, TableRow{180.0, {}, 6e-4}}) {
     const KeplerianElements chief = test::visors_chief(row.m_deg);
     const RelativeOrbitalElements roe = science_roe(chief.a);
-    const RelativeStateRtn err = rtn_from_roe(chief, roe, kMu) - exact_state(chief, roe, 0.0);
+    const RelativeRtnVector err = rtn_from_roe(chief, roe, kMu) - exact_state(chief, roe, 0.0);
     EXPECT_LT(err.head<3>().cwiseAbs().maxCoeff(), row.eccentric_bound) << "M = " << row.m_deg;
   }
 }
@@ -99,7 +99,7 @@ TEST(RoeRtnMap, DigestTableEccentricVelocityBelowOneMicrometrePerSecond) {
 TEST(RoeRtnMap, NearCircularMapOffByDecimetres) {
   const KeplerianElements chief = test::visors_chief(60.0);
   const RelativeOrbitalElements roe = science_roe(chief.a);
-  const RelativeStateRtn err = rtn_from_roe_near_circular(chief, roe, kMu) - exact_state(chief, roe, 0.0);
+  const RelativeRtnVector err = rtn_from_roe_near_circular(chief, roe, kMu) - exact_state(chief, roe, 0.0);
   EXPECT_LT((err.head<3>() - Eigen::Vector3d(-0.073, -0.359, -0.136)).cwiseAbs().maxCoeff(), 1e-3);
 }
 
@@ -132,7 +132,7 @@ TEST(RoeRtnMap, MatchesJacobianOfExactMapForEccentricChief) {
   for (int k = 0; k < 6; ++k) {
     RelativeOrbitalElements step = RelativeOrbitalElements::Zero();
     step[k] = 1e-7;
-    const RelativeStateRtn col = (exact_state(chief, step, tau) - exact_state(chief, -step, tau)) / 2e-7;
+    const RelativeRtnVector col = (exact_state(chief, step, tau) - exact_state(chief, -step, tau)) / 2e-7;
     worst = std::max(worst, ((m.col(k) - col).head<3>() / chief.a).cwiseAbs().maxCoeff());
     worst = std::max(worst, ((m.col(k) - col).tail<3>() / 7e3).cwiseAbs().maxCoeff());
   }
