@@ -71,6 +71,16 @@ void reject_unknown_keys(const Json& object, const std::vector<std::string_view>
   }
 }
 
+astro::KeplerianElements require_keplerian(const Json& object, const std::string& path,
+                                           const std::vector<std::string_view>& also_allowed) {
+  std::vector<std::string_view> allowed = {"a", "e", "i", "raan", "argp", "M"};
+  allowed.insert(allowed.end(), also_allowed.begin(), also_allowed.end());
+  reject_unknown_keys(object, allowed, path);
+  return {require_number(object, "a", path),    require_number(object, "e", path),
+          require_number(object, "i", path),    require_number(object, "raan", path),
+          require_number(object, "argp", path), require_number(object, "M", path)};
+}
+
 Json to_json(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
 namespace {

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "astro/keplerian_elements.hpp"
 #include "core/status.hpp"
 
 namespace visors::tools {
@@ -54,6 +55,12 @@ const Json& require_object(const Json& object, const std::string& key, const std
 /// Rejects any key of `object` not in `allowed` (a typo must not be silently ignored).
 void reject_unknown_keys(const Json& object, const std::vector<std::string_view>& allowed,
                          const std::string& path = "");
+
+/// Keplerian elements {a, e, i, raan, argp, M} (m, rad) held by `object` (named `path` in
+/// errors); any other key is rejected unless listed in `also_allowed`. Values are not validated
+/// here (the astro functions do it and name the field).
+astro::KeplerianElements require_keplerian(const Json& object, const std::string& path = "",
+                                           const std::vector<std::string_view>& also_allowed = {});
 
 Json to_json(const Eigen::Vector3d& v);
 

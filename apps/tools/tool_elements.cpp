@@ -37,10 +37,7 @@ Json run_elements(const Json& in) {
                 {"nu", core::wrap_two_pi(astro::true_anomaly(el))},
                 {"u", core::wrap_two_pi(el.argp + el.M)}};
   }
-  reject_unknown_keys(in, {"a", "e", "i", "raan", "argp", "M", "mu"});
-  const astro::KeplerianElements el{require_number(in, "a"),    require_number(in, "e"),
-                                    require_number(in, "i"),    require_number(in, "raan"),
-                                    require_number(in, "argp"), require_number(in, "M")};
+  const astro::KeplerianElements el = require_keplerian(in, "", {"mu"});
   const visors::core::StateVector x = take(astro::keplerian_to_cartesian(el, mu));
   return Json{{"r", to_json(x.r)}, {"v", to_json(x.v)}};
 }

@@ -13,11 +13,7 @@ namespace visors::tools {
 namespace {
 
 astro::KeplerianElements read_elements(const Json& in, const std::string& key) {
-  const Json& obj = require_object(in, key);
-  reject_unknown_keys(obj, {"a", "e", "i", "raan", "argp", "M"}, key);
-  return {require_number(obj, "a", key),    require_number(obj, "e", key),
-          require_number(obj, "i", key),    require_number(obj, "raan", key),
-          require_number(obj, "argp", key), require_number(obj, "M", key)};
+  return require_keplerian(require_object(in, key), key);
 }
 
 Json run_roe(const Json& in) {
