@@ -37,7 +37,7 @@ void BM_FullGcrfToItrfState(benchmark::State& state) {
 }
 BENCHMARK(BM_FullGcrfToItrfState);
 
-// On-board variant at a 1 Hz call rate (precession refreshed every 600 calls).
+// On-board variant at a 1 Hz call rate (precession-nutation refreshed every 600 calls).
 void BM_OnboardGcrfToItrfState(benchmark::State& state) {
   GpsTime t = mission_epoch();
   visors::core::OnboardEarthFrame frame(mission_eop());
@@ -47,6 +47,17 @@ void BM_OnboardGcrfToItrfState(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_OnboardGcrfToItrfState);
+
+// On-board variant refreshing at every call: the cost of one IAU 2000B refresh.
+void BM_OnboardGcrfToItrfStateRefreshEveryCall(benchmark::State& state) {
+  GpsTime t = mission_epoch();
+  visors::core::OnboardEarthFrame frame(mission_eop(), 0.0);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(frame.gcrf_to_itrf(t, kLeo));
+    t += 1.0;
+  }
+}
+BENCHMARK(BM_OnboardGcrfToItrfStateRefreshEveryCall);
 
 // GpsTime -> UTC calendar (leap-second lookup through eraDat).
 void BM_GpsTimeToUtcCalendar(benchmark::State& state) {

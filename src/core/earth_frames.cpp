@@ -110,16 +110,14 @@ void OnboardEarthFrame::refresh_if_stale(GpsTime t) {
     return;
   }
   const JulianDate tt = t.jd_tt();
-  // IAU 2006 frame bias + precession only; its CIP (X_P, Y_P) and the CIO locator s for it.
-  double rb[3][3];
-  double rp[3][3];
-  double rbp[3][3];
-  eraBp06(tt.jd1, tt.jd2, rb, rp, rbp);
+  // IAU 2000B precession-nutation (77 luni-solar terms, ~1 mas against 2000A; McCarthy & Luzum
+  // 2003): the CIP (X, Y) and CIO locator s, held until the next refresh.
   double x = 0.0;
   double y = 0.0;
-  eraBpn2xy(rbp, &x, &y);
+  double s = 0.0;
+  eraXys00b(tt.jd1, tt.jd2, &x, &y, &s);
   double rc2i[3][3];
-  eraC2ixys(x, y, eraS06(tt.jd1, tt.jd2, x, y), rc2i);
+  eraC2ixys(x, y, s, rc2i);
   c2i_ = to_eigen(rc2i);
   pom_ = polar_motion(tt, eop_);
   precession_epoch_ = t;

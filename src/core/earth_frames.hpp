@@ -10,15 +10,19 @@
 //   omega = (0, 0, 7.292115146706979e-5 (1 - LOD / 86400 s)) rad/s.
 // The neglected rates of C and W are ~3e-12 rad/s (precession), i.e. ~2e-5 m/s at LEO.
 //
-// On-board model (OnboardEarthFrame): W(x_p, y_p) R3(ERA(UT1)) C(X_P, Y_P, s) where X_P, Y_P are
-// the CIP of the IAU 2006 bias-precession matrix only (eraBp06 -> eraBpn2xy): NO nutation. x_p,
-// y_p, UT1-UTC (and LOD) are uplinked constants. The bias-precession matrix is recomputed only
-// when older than a refresh interval (default 600 s; precession moves 0.001" in 600 s, 3 cm).
+// On-board model (OnboardEarthFrame): W(x_p, y_p) R3(ERA(UT1)) C(X, Y, s) with the CIP (X, Y)
+// and CIO locator s of the IAU 2000B precession-nutation model (eraXys00b: 77 luni-solar
+// nutation terms, ~1 mas from 2000A), recomputed together with W only when older than a refresh
+// interval (default 600 s); ERA is evaluated at every call. x_p, y_p, UT1-UTC and LOD are
+// uplinked constants (their staleness is the operator's error budget, not modelled here).
 // Measured error against the full model with the same x_p, y_p, UT1-UTC, LOD, 2024-01..2026-12
-// (tests/core/test_earth_frames.cpp: 1500 epochs, 300 s after a refresh):
-//   orientation 9.8" max (bound tested: 10")  ->  position 323 m max at |r| = 6878 km (335 m),
-//   velocity 0.36 m/s max (0.37 m/s), ITRF and GCRF alike: the rotation error times |v|.
-// Omitting nutation is essentially the whole error (the digest's 2000-2040 maximum: 9.9").
+// (tests/core/test_earth_frames.cpp: 1500 epochs, each 600 s after a refresh, the worst case):
+//   orientation 0.0017" max (bound tested: 0.003")  ->  position 0.055 m max at 6878 km
+//   (0.1 m), velocity 6e-5 m/s max (1e-4 m/s).
+// Design note: the digest (navigation-and-dynamics.md sec. 1.3) suggests omitting nutation
+// (bias-precession only); that costs ~10" (330 m) for nothing, since the precession-nutation
+// matrix is refreshed only every few minutes (a refresh costs ~4 us, bench_frames), so the
+// per-call cost is the same as without nutation.
 
 #include <optional>
 
@@ -39,13 +43,15 @@ StateVector gcrf_to_itrf(GpsTime t, const StateVector& gcrf, const EarthOrientat
 StateVector itrf_to_gcrf(GpsTime t, const StateVector& itrf, const EarthOrientation& eop);
 
 /// The cheap on-board transform (see the file comment for its model and error). Not const: the
-/// bias-precession matrix is cached and refreshed when it is older than the refresh interval.
+/// precession-nutation and polar-motion matrices are cached and refreshed when older than the
+/// refresh interval.
 class OnboardEarthFrame {
  public:
   static constexpr double kDefaultRefreshInterval = 600.0;  // [s]
 
-  /// `uplinked`: x_p, y_p, dut1 (and lod for the velocity); dx, dy are ignored (they correct the
-  /// nutation model, which is not used). refresh_interval <= 0 recomputes at every call.
+  /// `uplinked`: x_p, y_p, dut1 (and lod for the velocity); dx, dy are ignored (they are
+  /// corrections to IAU 2006/2000A, below the 2000B model's own error). refresh_interval <= 0
+  /// recomputes at every call.
   explicit OnboardEarthFrame(const EarthOrientation& uplinked = {},
                              double refresh_interval = kDefaultRefreshInterval);
 
@@ -56,7 +62,7 @@ class OnboardEarthFrame {
   StateVector gcrf_to_itrf(GpsTime t, const StateVector& gcrf);
   StateVector itrf_to_gcrf(GpsTime t, const StateVector& itrf);
 
-  /// Time at which the cached bias-precession matrix was computed; empty before the first call.
+  /// Time at which the cached matrices were computed; empty before the first call.
   [[nodiscard]] std::optional<GpsTime> precession_epoch() const { return precession_epoch_; }
 
  private:
@@ -65,7 +71,7 @@ class OnboardEarthFrame {
   EarthOrientation eop_;
   double refresh_interval_;
   std::optional<GpsTime> precession_epoch_;
-  Eigen::Matrix3d c2i_ = Eigen::Matrix3d::Identity();  // GCRF -> CIRS, bias-precession only
+  Eigen::Matrix3d c2i_ = Eigen::Matrix3d::Identity();  // GCRF -> CIRS, IAU 2000B
   Eigen::Matrix3d pom_ = Eigen::Matrix3d::Identity();  // TIRS -> ITRF, polar motion W
 };
 
