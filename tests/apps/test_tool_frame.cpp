@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -110,6 +111,9 @@ struct BadCase {
   std::string input;
   const char* field;
 };
+
+// Readable test output: gtest would otherwise print the case's raw bytes.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
 
 class ToolFrameBadInput : public ::testing::TestWithParam<BadCase> {};
 
