@@ -1,0 +1,163 @@
+// solve() allocates nothing (issue 4, CONTRIBUTING "Memory"): this file replaces the global
+// operator new of the test_optim executable with a counting one and checks that no allocation
+// happens between the start and the end of solve(), on an SOCP of the planner's shape, a QP, and
+// an LP that exercises the dense-LU fallback of the KKT solve.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <random>
+
+#include "optim/conic_solver.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+std::atomic<bool> g_counting{false};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (g_counting.load()) ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) { return ::operator new(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  if (g_counting.load()) ++g_allocations;
+  return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return ::operator new(size, tag); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+using visors::optim::ConicDimensions;
+using visors::optim::ConicProblem;
+using visors::optim::ConicSettings;
+using visors::optim::ConicSolver;
+using visors::optim::ConicStatus;
+
+long allocations_during_solve(ConicSolver& solver, const ConicProblem& problem, ConicStatus* status, int* fallbacks) {
+  g_allocations = 0;
+  g_counting = true;
+  const auto info = solver.solve(problem);
+  g_counting = false;
+  *status = info.ok() ? info->status : ConicStatus::numerical_error;
+  *fallbacks = info.ok() ? info->dense_fallbacks : 0;
+  return g_allocations.load();
+}
+
+// Minimum-fuel shape: 30 impulses, 6 equality rows, cones (t_k, dv_k).
+ConicProblem fuel_problem(int impulses, std::mt19937& rng) {
+  std::normal_distribution<double> normal;
+  const int n = 4 * impulses;
+  ConicProblem pr;
+  pr.c = Eigen::VectorXd::Zero(n);
+  pr.c.tail(impulses).setOnes();
+  pr.G = Eigen::MatrixXd::Zero(n, n);
+  for (int k = 0; k < impulses; ++k) {
+    pr.G(4 * k, 3 * impulses + k) = -1.0;
+    for (int i = 0; i < 3; ++i) pr.G(4 * k + 1 + i, 3 * k + i) = -1.0;
+  }
+  pr.h = Eigen::VectorXd::Zero(n);
+  pr.A = Eigen::MatrixXd::Zero(6, n);
+  for (int r = 0; r < 6; ++r) {
+    for (int j = 0; j < 3 * impulses; ++j) pr.A(r, j) = normal(rng);
+  }
+  pr.b = Eigen::VectorXd::NullaryExpr(6, [&] { return normal(rng); });
+  return pr;
+}
+
+// The harness sees allocations: setting a solver up allocates its workspace.
+TEST(ConicAllocation, CounterSeesSetupAllocations) {
+  ConicDimensions dims;
+  dims.n = 4;
+  dims.l = 4;
+  g_allocations = 0;
+  g_counting = true;
+  const auto created = ConicSolver::create(dims);
+  g_counting = false;
+  ASSERT_TRUE(created.ok());
+  EXPECT_GT(g_allocations.load(), 0);
+}
+
+TEST(ConicAllocation, SolveOfPlannerSocpAllocatesNothing) {
+  std::mt19937 rng(7);
+  ConicDimensions dims;
+  dims.n = 120;
+  dims.p = 6;
+  dims.q.assign(30, 4);
+  auto created = ConicSolver::create(dims);
+  ASSERT_TRUE(created.ok());
+  ConicSolver solver = std::move(created).value();
+  for (int trial = 0; trial < 3; ++trial) {  // first solve and re-solves with new data
+    const ConicProblem pr = fuel_problem(30, rng);
+    ConicStatus status{};
+    int fallbacks = 0;
+    EXPECT_EQ(allocations_during_solve(solver, pr, &status, &fallbacks), 0) << "trial " << trial;
+    EXPECT_EQ(status, ConicStatus::optimal);
+  }
+}
+
+// A random feasible LP with equality rows at tight tolerances: its last iterations need the
+// dense LU fallback, which must not allocate either.
+TEST(ConicAllocation, SolveWithDenseFallbackAllocatesNothing) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(0.1, 2.0);
+  const int n = 23, m = 40, p = 9;
+  ConicProblem pr;
+  pr.G = Eigen::MatrixXd::NullaryExpr(m, n, [&] { return normal(rng); });
+  pr.A = Eigen::MatrixXd::NullaryExpr(p, n, [&] { return normal(rng); });
+  const Eigen::VectorXd x0 = Eigen::VectorXd::NullaryExpr(n, [&] { return normal(rng); });
+  const Eigen::VectorXd s0 = Eigen::VectorXd::NullaryExpr(m, [&] { return uniform(rng); });
+  const Eigen::VectorXd z0 = Eigen::VectorXd::NullaryExpr(m, [&] { return uniform(rng); });
+  const Eigen::VectorXd y0 = Eigen::VectorXd::NullaryExpr(p, [&] { return normal(rng); });
+  pr.h = pr.G * x0 + s0;
+  pr.b = pr.A * x0;
+  pr.c = -(pr.G.transpose() * z0 + pr.A.transpose() * y0);
+  ConicDimensions dims;
+  dims.n = n;
+  dims.p = p;
+  dims.l = m;
+  ConicSettings settings;
+  settings.feasibility_tolerance = settings.absolute_gap_tolerance = settings.relative_gap_tolerance = 1e-10;
+  auto created = ConicSolver::create(dims, settings);
+  ASSERT_TRUE(created.ok());
+  ConicSolver solver = std::move(created).value();
+  ConicStatus status{};
+  int fallbacks = 0;
+  EXPECT_EQ(allocations_during_solve(solver, pr, &status, &fallbacks), 0);
+  EXPECT_EQ(status, ConicStatus::optimal);
+  EXPECT_GT(fallbacks, 0) << "instance no longer exercises the fallback; pick another";
+}
+
+TEST(ConicAllocation, SolveOfQpAllocatesNothing) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  const int n = 15, m = 20;
+  ConicProblem pr;
+  const Eigen::MatrixXd F = Eigen::MatrixXd::NullaryExpr(8, n, [&] { return normal(rng); });
+  pr.P = F.transpose() * F;
+  pr.c = Eigen::VectorXd::NullaryExpr(n, [&] { return normal(rng); });
+  pr.G = Eigen::MatrixXd::NullaryExpr(m, n, [&] { return normal(rng); });
+  pr.h = Eigen::VectorXd::Ones(m) + pr.G * Eigen::VectorXd::NullaryExpr(n, [&] { return normal(rng); });
+  pr.A.resize(0, n);
+  pr.b.resize(0);
+  ConicDimensions dims;
+  dims.n = n;
+  dims.l = m;
+  dims.quadratic = true;
+  auto created = ConicSolver::create(dims);
+  ASSERT_TRUE(created.ok());
+  ConicSolver solver = std::move(created).value();
+  ConicStatus status{};
+  int fallbacks = 0;
+  EXPECT_EQ(allocations_during_solve(solver, pr, &status, &fallbacks), 0);
+  EXPECT_EQ(status, ConicStatus::optimal);
+}
+
+}  // namespace
