@@ -83,6 +83,7 @@ void BM_ConicSolve(benchmark::State& state) {
   std::vector<double> times;
   std::vector<int> iterations;
   int failures = 0;
+  int fallbacks = 0;
   std::size_t next = 0;
   for (auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -92,6 +93,7 @@ void BM_ConicSolve(benchmark::State& state) {
     times.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
     iterations.push_back(info.ok() ? info->iterations : -1);
     if (!info.ok() || info->status != visors::optim::ConicStatus::optimal) ++failures;
+    if (info.ok()) fallbacks += info->dense_fallbacks;
     next = (next + 1) % instances.size();
   }
   std::sort(times.begin(), times.end());
@@ -102,6 +104,7 @@ void BM_ConicSolve(benchmark::State& state) {
   state.counters["worst_us"] = times.back();
   state.counters["median_iterations"] = iterations[iterations.size() / 2];
   state.counters["not_optimal"] = failures;
+  state.counters["dense_fallbacks_per_solve"] = static_cast<double>(fallbacks) / static_cast<double>(times.size());
 }
 BENCHMARK(BM_ConicSolve)->Arg(10)->Arg(30)->Arg(60)->Iterations(4 * kInstances)->Unit(benchmark::kMicrosecond);
 

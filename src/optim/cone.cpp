@@ -108,17 +108,25 @@ double ConeProduct::max_step(const double* x, const double* d, double cap) const
 NtScaling::NtScaling(const ConeProduct& cone)
     : cone_(cone),
       w_(static_cast<std::size_t>(cone.rows()), 1.0),
-      eta_(static_cast<std::size_t>(cone.soc_count()), 1.0) {
+      eta_(static_cast<std::size_t>(cone.soc_count()), 1.0),
+      w_inv_(static_cast<std::size_t>(cone.orthant()), 1.0),
+      eta_inv_(eta_.size(), 1.0),
+      w0_inv_(eta_.size(), 0.5) {
   set_identity();
 }
 
 void NtScaling::set_identity() {
-  for (int i = 0; i < cone_.orthant(); ++i) w_[i] = 1.0;
+  for (int i = 0; i < cone_.orthant(); ++i) {
+    w_[i] = 1.0;
+    w_inv_[i] = 1.0;
+  }
   for (int k = 0; k < cone_.soc_count(); ++k) {
     const int o = cone_.soc_start(k);
     w_[o] = 1.0;
     for (int i = 1; i < cone_.soc_dim(k); ++i) w_[o + i] = 0.0;
     eta_[k] = 1.0;
+    eta_inv_[k] = 1.0;
+    w0_inv_[k] = 0.5;
   }
 }
 
@@ -126,6 +134,7 @@ bool NtScaling::update(const double* s, const double* z, double* lambda) {
   for (int i = 0; i < cone_.orthant(); ++i) {
     if (!(s[i] > 0.0) || !(z[i] > 0.0)) return false;
     w_[i] = std::sqrt(s[i] / z[i]);
+    w_inv_[i] = 1.0 / w_[i];
     lambda[i] = std::sqrt(s[i] * z[i]);
   }
   for (int k = 0; k < cone_.soc_count(); ++k) {
@@ -145,17 +154,11 @@ bool NtScaling::update(const double* s, const double* z, double* lambda) {
     double* w = w_.data() + o;
     w[0] = (sk[0] / sn + zk[0] / zn) / (2.0 * gamma);
     for (int i = 1; i < q; ++i) w[i] = (sk[i] / sn - zk[i] / zn) / (2.0 * gamma);
+    eta_inv_[k] = 1.0 / eta_[k];
+    w0_inv_[k] = 1.0 / (1.0 + w[0]);
   }
   apply(z, lambda);
   return true;
-}
-
-int NtScaling::block_start(int block) const {
-  return block < cone_.orthant() ? block : cone_.soc_start(block - cone_.orthant());
-}
-
-int NtScaling::block_dim(int block) const {
-  return block < cone_.orthant() ? 1 : cone_.soc_dim(block - cone_.orthant());
 }
 
 void NtScaling::apply(const double* in, double* out) const {
@@ -165,23 +168,39 @@ void NtScaling::apply(const double* in, double* out) const {
     const int q = cone_.soc_dim(k);
     const double* w = w_.data() + o;
     const double w1u1 = dot(w + 1, in + o + 1, q - 1);
-    const double coef = in[o] + w1u1 / (1.0 + w[0]);
+    const double coef = in[o] + w1u1 * w0_inv_[k];
     out[o] = eta_[k] * (w[0] * in[o] + w1u1);
     for (int i = 1; i < q; ++i) out[o + i] = eta_[k] * (in[o + i] + coef * w[i]);
   }
 }
 
 void NtScaling::apply_inverse(const double* in, double* out) const {
-  for (int i = 0; i < cone_.orthant(); ++i) out[i] = in[i] / w_[i];
+  for (int i = 0; i < cone_.orthant(); ++i) out[i] = in[i] * w_inv_[i];
   for (int k = 0; k < cone_.soc_count(); ++k) {
     const int o = cone_.soc_start(k);
     apply_inverse_block(cone_.orthant() + k, in + o, out + o, 1);
   }
 }
 
+void NtScaling::apply_block(int block, const double* in, double* out, int stride) const {
+  if (block < cone_.orthant()) {
+    out[0] = w_[block] * in[0];
+    return;
+  }
+  const int k = block - cone_.orthant();
+  const int q = cone_.soc_dim(k);
+  const double* w = w_.data() + cone_.soc_start(k);
+  double w1u1 = 0.0;
+  for (int i = 1; i < q; ++i) w1u1 += w[i] * in[i * stride];
+  // W u = eta (w0 u0 + w1'u1,  u1 + (u0 + w1'u1/(1+w0)) w1).
+  const double coef = in[0] + w1u1 * w0_inv_[k];
+  out[0] = eta_[k] * (w[0] * in[0] + w1u1);
+  for (int i = 1; i < q; ++i) out[i * stride] = eta_[k] * (in[i * stride] + coef * w[i]);
+}
+
 void NtScaling::apply_inverse_block(int block, const double* in, double* out, int stride) const {
   if (block < cone_.orthant()) {
-    out[0] = in[0] / w_[block];
+    out[0] = in[0] * w_inv_[block];
     return;
   }
   const int k = block - cone_.orthant();
@@ -190,9 +209,9 @@ void NtScaling::apply_inverse_block(int block, const double* in, double* out, in
   const double* w = w_.data() + o;
   double w1u1 = 0.0;
   for (int i = 1; i < q; ++i) w1u1 += w[i] * in[i * stride];
-  const double inv = 1.0 / eta_[k];
+  const double inv = eta_inv_[k];
   // W^{-1} u = (1/eta) (w0 u0 - w1'u1,  u1 + (w1'u1/(1+w0) - u0) w1).
-  const double coef = w1u1 / (1.0 + w[0]) - in[0];
+  const double coef = w1u1 * w0_inv_[k] - in[0];
   const double head = inv * (w[0] * in[0] - w1u1);
   for (int i = 1; i < q; ++i) out[i * stride] = inv * (in[i * stride] + coef * w[i]);
   out[0] = head;

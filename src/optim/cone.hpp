@@ -59,18 +59,30 @@ class NtScaling {
   /// out = W in / out = W^{-1} in, over the whole cone (in != out).
   void apply(const double* in, double* out) const;
   void apply_inverse(const double* in, double* out) const;
+  /// out = W in on the rows [start, start + dim) of one block; `in` and `out` point at the
+  /// block's first row and step by `stride` (in != out).
+  void apply_block(int block, const double* in, double* out, int stride) const;
   /// out = W^{-1} in on the rows [start, start + dim) of one block; `in` and `out` point at the
   /// block's first row and step by `stride` (to scale matrix columns in place of vectors).
   void apply_inverse_block(int block, const double* in, double* out, int stride) const;
   /// Blocks: the l orthant rows one by one, then the second-order cones.
   [[nodiscard]] int blocks() const { return cone_.orthant() + cone_.soc_count(); }
-  [[nodiscard]] int block_start(int block) const;
-  [[nodiscard]] int block_dim(int block) const;
+  [[nodiscard]] int block_start(int block) const {
+    return block < cone_.orthant() ? block : cone_.soc_start(block - cone_.orthant());
+  }
+  [[nodiscard]] int block_dim(int block) const {
+    return block < cone_.orthant() ? 1 : cone_.soc_dim(block - cone_.orthant());
+  }
 
  private:
   ConeProduct cone_;  // a copy: the scaling stays valid when its owner moves
   std::vector<double> w_;    // orthant: sqrt(s/z); SOC: the vector w of each cone
   std::vector<double> eta_;  // one per SOC
+  // Reciprocals computed once per update(), so the many applications per iteration multiply:
+  // orthant 1/w_i; per SOC 1/eta and 1/(1 + w0).
+  std::vector<double> w_inv_;
+  std::vector<double> eta_inv_;
+  std::vector<double> w0_inv_;
 };
 
 }  // namespace visors::optim

@@ -99,6 +99,14 @@ struct ConicSolver::Workspace {
   std::vector<int> block_of_row;
   std::vector<int> bc_ptr, bc_col, marker, pos;
   Vec vbuf;
+  // Separable cone blocks (eliminated in closed form before the LDL', see assemble_kkt): flags
+  // per block and per column, how many blocks (or P) touch each column; per G row of such a
+  // block its column c_r and 1/g_r, and the row r of G_k^-T A_k' (A(i, c_r) / g_r, i < p);
+  // scratch for U = W_k G_k^-T A_k' (dim x p) and block vectors.
+  std::vector<unsigned char> sep_block, sep_col;
+  std::vector<int> col_uses, sep_gcol;
+  bool any_separable = false;
+  Vec sep_ginv, sep_ak, ubuf, sep_in, sep_mid, sep_out;
   Vec pwork, rfac;  // PSD check of P: work copy and pivoted Cholesky factor R (P = R'R)
   std::vector<unsigned char> pdone;
   // Iterate and directions.
@@ -151,6 +159,14 @@ ConicSolver::ConicSolver(const ConicDimensions& dims, const ConicSettings& setti
   w.marker.assign(static_cast<std::size_t>(w.ne) + 1, -1);
   w.pos.assign(static_cast<std::size_t>(w.ne) + 1, 0);
   w.vbuf = sized(max_block * w.ne);
+  w.sep_block.assign(static_cast<std::size_t>(blocks) + 1, 0);
+  w.sep_col.assign(static_cast<std::size_t>(w.ne) + 1, 0);
+  w.col_uses.assign(static_cast<std::size_t>(w.ne) + 1, 0);
+  w.sep_gcol.assign(static_cast<std::size_t>(w.me) + 1, 0);
+  w.sep_ginv = sized(w.me);
+  w.sep_ak = sized(w.me * w.p);
+  w.ubuf = sized(max_block * w.p);
+  for (Vec* v : {&w.sep_in, &w.sep_mid, &w.sep_out}) *v = sized(max_block);
   if (dims.quadratic) {
     w.pwork = sized(w.n * w.n);
     w.rfac = sized(w.n * w.n);
@@ -363,10 +379,20 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
 
   // ---- Structure of the reduced KKT matrix [G'W^-2 G + dI, A'; A, -dI]: block k of the cone
   // couples the columns its rows touch (W^-1 is dense within a block).
+  //
+  // A block is separable when each of its rows has one entry of G, in distinct columns that no
+  // other block and no P entry touch (bounds x_j >= 0, norm cones on variables such as the
+  // planner's ||dv_k|| <= t_k). Its diagonal block H_k = G_k'W_k^-2 G_k then has the closed-form
+  // inverse G_k^-1 W_k^2 G_k^-T, and it is eliminated before the LDL': the y rows get
+  // -A_k H_k^-1 A_k' = -U'U with U = W_k G_k^-T A_k' (a sum of squares, no cancellation), and its
+  // columns become unit pivots. Forming and pivoting on H_k itself instead squares the
+  // condition of W_k near the optimum (eigenvalues eta^-2 (w0 +- ||w1||)^2), where the fixed-order
+  // LDL' would meet tiny, cancellation-made pivots.
   QuasiDefiniteLdl& ldl = w.ldl;
   ldl.begin_structure(ne + p, ne);
   {
     int count = 0;
+    std::fill(w.col_uses.begin(), w.col_uses.end(), 0);
     for (int k = 0; k < blocks; ++k) {
       w.bc_ptr[k] = count;
       const int r0 = w.nt.block_start(k);
@@ -375,22 +401,60 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
         for (int e = w.G.ptr[i]; e < w.G.ptr[i + 1]; ++e) w.marker[w.G.col[e]] = k;
       }
       for (int j = 0; j < ne; ++j) {
-        if (w.marker[j] == k) w.bc_col[count++] = j;
-      }
-      for (int a = w.bc_ptr[k]; a < count; ++a) {
-        for (int bb = w.bc_ptr[k]; bb <= a; ++bb) ldl.mark(w.bc_col[a], w.bc_col[bb]);
+        if (w.marker[j] == k) {
+          w.bc_col[count++] = j;
+          ++w.col_uses[j];
+        }
       }
     }
     w.bc_ptr[blocks] = count;
     std::fill(w.marker.begin(), w.marker.end(), -1);
+    for (int i = 0; i < w.P.rows; ++i) {
+      for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) w.col_uses[w.P.col[e]] += 2;
+    }
+    std::fill(w.sep_col.begin(), w.sep_col.end(), 0);
+    w.any_separable = false;
+    for (int k = 0; k < blocks; ++k) {
+      const int r0 = w.nt.block_start(k);
+      const int dim = w.nt.block_dim(k);
+      bool separable = w.bc_ptr[k + 1] - w.bc_ptr[k] == dim;
+      for (int r = r0; separable && r < r0 + dim; ++r) {
+        separable = w.G.ptr[r + 1] - w.G.ptr[r] == 1 && w.col_uses[w.G.col[w.G.ptr[r]]] == 1;
+      }
+      w.sep_block[k] = separable ? 1 : 0;
+      w.any_separable = w.any_separable || separable;
+      for (int r = r0; separable && r < r0 + dim; ++r) {
+        w.sep_gcol[r] = w.G.col[w.G.ptr[r]];
+        w.sep_ginv[r] = 1.0 / w.G.val[w.G.ptr[r]];
+        w.marker[w.sep_gcol[r]] = r;  // column -> row, for the A entries below
+      }
+      for (int a = w.bc_ptr[k]; a < w.bc_ptr[k + 1]; ++a) {
+        if (separable) {
+          w.sep_col[w.bc_col[a]] = 1;
+          continue;
+        }
+        for (int bb = w.bc_ptr[k]; bb <= a; ++bb) ldl.mark(w.bc_col[a], w.bc_col[bb]);
+      }
+    }
+    std::fill(w.sep_ak.begin(), w.sep_ak.end(), 0.0);
     for (int i = 0; i < p; ++i) {
-      for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) ldl.mark(ne + i, w.A.col[e]);
+      for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
+        const int j = w.A.col[e];
+        if (w.sep_col[j] == 0) {
+          ldl.mark(ne + i, j);
+        } else {
+          const int r = w.marker[j];
+          w.sep_ak[static_cast<std::size_t>(r * p + i)] = w.A.val[e] * w.sep_ginv[r];
+        }
+      }
+      for (int i2 = 0; w.any_separable && i2 <= i; ++i2) ldl.mark(ne + i, ne + i2);
     }
     for (int i = 0; i < w.P.rows; ++i) {
       for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) {
         if (w.P.col[e] <= i) ldl.mark(i, w.P.col[e]);
       }
     }
+    std::fill(w.marker.begin(), w.marker.end(), -1);
     ldl.analyse();
   }
 
@@ -411,9 +475,24 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     for (int a = 0; a < nc; ++a) w.nt.apply_inverse_block(k, v + a, v + a, nc);
     return v;
   };
+  // y rows -= A_k H_k^-1 A_k' = U'U, U = W_k G_k^-T A_k' (dim x p, row-major in ubuf).
+  const auto eliminate_separable = [&](int k) {
+    const int r0 = w.nt.block_start(k);
+    const int dim = w.nt.block_dim(k);
+    double* u = w.ubuf.data();
+    const double* ak = w.sep_ak.data() + static_cast<std::size_t>(r0 * p);
+    for (int i = 0; i < p; ++i) w.nt.apply_block(k, ak + i, u + i, p);
+    for (int i = 0; i < p; ++i) {
+      for (int i2 = 0; i2 <= i; ++i2) {
+        double sum = 0.0;
+        for (int r = 0; r < dim; ++r) sum += u[r * p + i] * u[r * p + i2];
+        ldl.at(ne + i, ne + i2) -= sum;
+      }
+    }
+  };
   const auto assemble_kkt = [&]() {
     ldl.clear_values();
-    for (int j = 0; j < ne; ++j) ldl.at(j, j) = delta;
+    for (int j = 0; j < ne; ++j) ldl.at(j, j) = w.sep_col[j] != 0 ? 1.0 : delta;
     for (int i = 0; i < w.P.rows; ++i) {
       for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) {
         if (w.P.col[e] <= i) ldl.at(i, w.P.col[e]) += w.P.val[e];
@@ -421,13 +500,19 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     }
     for (int i = 0; i < p; ++i) {
       ldl.at(ne + i, ne + i) = -delta;
-      for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) ldl.at(ne + i, w.A.col[e]) += w.A.val[e];
+      for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
+        if (w.sep_col[w.A.col[e]] == 0) ldl.at(ne + i, w.A.col[e]) += w.A.val[e];
+      }
     }
     for (int k = 0; k < blocks; ++k) {
       const int dim = w.nt.block_dim(k);
       const int c0 = w.bc_ptr[k];
       const int nc = w.bc_ptr[k + 1] - c0;
       if (nc == 0) continue;
+      if (w.sep_block[k] != 0) {
+        eliminate_separable(k);
+        continue;
+      }
       const double* v = scaled_block(k);
       for (int a = 0; a < nc; ++a) {
         for (int bb = 0; bb <= a; ++bb) {
@@ -438,15 +523,43 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       }
     }
   };
+  // The same reduced matrix, unreduced by the elimination, into the dense fallback storage.
+  const auto assemble_dense = [&]() {
+    Eigen::MatrixXd& K = w.dense;
+    K.setZero();
+    for (int j = 0; j < ne; ++j) K(j, j) = delta;
+    for (int i = 0; i < w.P.rows; ++i) {
+      for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) K(i, w.P.col[e]) += w.P.val[e];
+    }
+    for (int i = 0; i < p; ++i) {
+      K(ne + i, ne + i) = -delta;
+      for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
+        K(ne + i, w.A.col[e]) += w.A.val[e];
+        K(w.A.col[e], ne + i) += w.A.val[e];
+      }
+    }
+    for (int k = 0; k < blocks; ++k) {
+      const int dim = w.nt.block_dim(k);
+      const int c0 = w.bc_ptr[k];
+      const int nc = w.bc_ptr[k + 1] - c0;
+      if (nc == 0) continue;
+      const double* v = scaled_block(k);
+      for (int a = 0; a < nc; ++a) {
+        for (int bb = 0; bb < nc; ++bb) {
+          double sum = 0.0;
+          for (int r = 0; r < dim; ++r) sum += v[r * nc + a] * v[r * nc + bb];
+          K(w.bc_col[c0 + a], w.bc_col[c0 + bb]) += sum;
+        }
+      }
+    }
+  };
   // Switches this iteration to the dense LU with partial pivoting of the same reduced matrix: the
   // row exchanges pick A entries over the tiny, cancellation-made pivots that H takes near the
   // optimum (H then has one tiny eigenvalue per active cone), which the fixed-order LDL' must
   // accept or regularise. False on breakdown.
   const auto factor_dense = [&]() -> bool {
-    Eigen::MatrixXd& K = w.dense;
-    assemble_kkt();
-    ldl.copy_to(K);
-    w.lu.compute(K);
+    assemble_dense();
+    w.lu.compute(w.dense);
     w.use_lu = true;
     ++w.fallbacks;
     const auto diagonal = w.lu.matrixLU().diagonal();
@@ -461,13 +574,71 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     return factor_dense();
   };
 
+  // out = W^-2 in block by block, on the blocks of the LDL' (all of them when the dense LU is in
+  // use); the separable blocks' rows, solved in closed form, get 0.
+  const auto inverse_square = [&](const double* in, double* out) {
+    for (int k = 0; k < blocks; ++k) {
+      const int r0 = w.nt.block_start(k);
+      const int dim = w.nt.block_dim(k);
+      if (w.sep_block[k] != 0 && !w.use_lu) {
+        std::fill(out + r0, out + r0 + dim, 0.0);
+        continue;
+      }
+      w.nt.apply_inverse_block(k, in + r0, w.tmp_z.data() + r0, 1);
+      w.nt.apply_inverse_block(k, w.tmp_z.data() + r0, out + r0, 1);
+    }
+  };
+  // Separable block k of the unreduced system (its columns C, A_C the columns of A, g = G_k^-T bx_C
+  // and ak = G_k^-T A_C', both by row r: divide by g_r):
+  //   G_k'z_k + A_C'y = bx_C,  G_k x_C - W_k^2 z_k = bz_k
+  //   =>  z_k = g - ak y,  x_C = G_k^-1 (bz_k + W_k^2 z_k),
+  // and its share of the y rows, A_C x_C = ak'(bz_k + W_k^2 g) - U'U y, moves to the right side
+  // before the LDL' solve. No W^-2 appears, so nothing of W's condition is squared.
+  const auto separable_forward = [&](const double* bz, double* red) {
+    double* g = w.sep_in.data();
+    double* mid = w.sep_mid.data();
+    double* out = w.sep_out.data();
+    for (int k = 0; k < blocks; ++k) {
+      if (w.sep_block[k] == 0) continue;
+      const int r0 = w.nt.block_start(k);
+      const int dim = w.nt.block_dim(k);
+      for (int r = 0; r < dim; ++r) g[r] = red[w.sep_gcol[r0 + r]] * w.sep_ginv[r0 + r];
+      w.nt.apply_block(k, g, mid, 1);
+      w.nt.apply_block(k, mid, out, 1);
+      for (int r = 0; r < dim; ++r) {
+        const double* ak = w.sep_ak.data() + static_cast<std::size_t>((r0 + r) * p);
+        const double v = bz[r0 + r] + out[r];
+        for (int i = 0; i < p; ++i) red[ne + i] -= ak[i] * v;
+      }
+    }
+  };
+  // After the LDL' solve (red[C] still holds bx_C: unit pivots, no coupling): x_C into red, z_k
+  // into oz.
+  const auto separable_backward = [&](const double* bz, double* red, double* oz) {
+    double* mid = w.sep_mid.data();
+    double* out = w.sep_out.data();
+    for (int k = 0; k < blocks; ++k) {
+      if (w.sep_block[k] == 0) continue;
+      const int r0 = w.nt.block_start(k);
+      const int dim = w.nt.block_dim(k);
+      for (int r = 0; r < dim; ++r) {
+        const double* ak = w.sep_ak.data() + static_cast<std::size_t>((r0 + r) * p);
+        oz[r0 + r] = red[w.sep_gcol[r0 + r]] * w.sep_ginv[r0 + r] - dot(ak, red + ne, p);
+      }
+      w.nt.apply_block(k, oz + r0, mid, 1);
+      w.nt.apply_block(k, mid, out, 1);
+      for (int r = 0; r < dim; ++r) red[w.sep_gcol[r0 + r]] = (bz[r0 + r] + out[r]) * w.sep_ginv[r0 + r];
+    }
+  };
+
   // One solve of the regularised reduced system for the right side (bx, by, bz) of
   //   [0 A' G'; A 0 0; G 0 -W^2] (ox, oy, oz) = (bx, by, bz):
-  //   (G'W^-2 G) ox + A'oy = bx + G'W^-2 bz,  A ox = by,  oz = W^-2 (G ox - bz).
+  //   (G'W^-2 G) ox + A'oy = bx + G'W^-2 bz,  A ox = by,  oz = W^-2 (G ox - bz),
+  // the separable blocks in closed form (separable_forward / separable_backward) unless the
+  // dense LU is in use.
   const auto reduced_solve = [&](const double* bx, const double* by, const double* bz, double* ox,
                                  double* oy, double* oz) {
-    w.nt.apply_inverse(bz, w.tmp_z.data());
-    w.nt.apply_inverse(w.tmp_z.data(), w.tmp_s.data());
+    inverse_square(bz, w.tmp_s.data());
     double* red = w.red.data();
     for (int j = 0; j < ne; ++j) red[j] = bx[j];
     w.G.multiply_transpose_add(w.tmp_s.data(), red);
@@ -477,14 +648,25 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       w.lu_sol.noalias() = w.lu.solve(w.lu_rhs);
       for (int i = 0; i < ne + p; ++i) red[i] = w.lu_sol(i);
     } else {
+      separable_forward(bz, red);
       ldl.solve(red);
+      separable_backward(bz, red, oz);
     }
     for (int j = 0; j < ne; ++j) ox[j] = red[j];
     for (int i = 0; i < p; ++i) oy[i] = red[ne + i];
-    w.G.multiply(ox, w.tmp_s.data());
-    for (int i = 0; i < me; ++i) w.tmp_s[i] -= bz[i];
-    w.nt.apply_inverse(w.tmp_s.data(), w.tmp_z.data());
-    w.nt.apply_inverse(w.tmp_z.data(), oz);
+    // oz = W^-2 (G ox - bz) on the other blocks (the separable rows of G ox are not needed).
+    for (int k = 0; k < blocks; ++k) {
+      if (w.sep_block[k] != 0 && !w.use_lu) continue;
+      const int r0 = w.nt.block_start(k);
+      const int dim = w.nt.block_dim(k);
+      for (int r = r0; r < r0 + dim; ++r) {
+        double v = -bz[r];
+        for (int e = w.G.ptr[r]; e < w.G.ptr[r + 1]; ++e) v += w.G.val[e] * ox[w.G.col[e]];
+        w.tmp_s[r] = v;
+      }
+      w.nt.apply_inverse_block(k, w.tmp_s.data() + r0, w.tmp_z.data() + r0, 1);
+      w.nt.apply_inverse_block(k, w.tmp_z.data() + r0, oz + r0, 1);
+    }
   };
 
   // Solve with iterative refinement against the exact, unregularised, unreduced system.

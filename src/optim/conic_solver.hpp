@@ -12,6 +12,11 @@
 //   (quasidefinite_ldl.hpp); iterative refinement against the exact, unregularised, unreduced
 //   system; when a pivot had to be regularised or the refinement stalls, that iteration uses a
 //   dense LU with partial pivoting of the same matrix instead.
+// - Separable cone blocks (each row one entry of G, in columns no other block or P touches:
+//   variable bounds, norm cones on variables as in the planners' ||dv_k|| <= t_k) are eliminated
+//   in closed form before the LDL' (their diagonal block G_k'W_k^-2 G_k has the explicit inverse
+//   G_k^-1 W_k^2 G_k^-T), so the LDL' never pivots on those blocks, whose condition is that of
+//   W_k squared near the optimum; there the dense LU fallback becomes rare.
 // Stopping tests and tolerances: conic_settings.hpp.
 //
 // All storage is sized by create(); solve() allocates nothing on accepted data (a rejected input

@@ -37,16 +37,6 @@ void QuasiDefiniteLdl::analyse() {
   col_ptr_[size_] = count;
 }
 
-void QuasiDefiniteLdl::copy_to(Eigen::MatrixXd& dense) const {
-  for (int j = 0; j < size_; ++j) {
-    for (int i = j; i < size_; ++i) {
-      const double v = pattern_[index(i, j)] != 0 ? value_[index(i, j)] : 0.0;
-      dense(i, j) = v;
-      dense(j, i) = v;
-    }
-  }
-}
-
 void QuasiDefiniteLdl::clear_values() {
   for (int j = 0; j < size_; ++j) {
     value_[index(j, j)] = 0.0;

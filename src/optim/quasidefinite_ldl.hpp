@@ -11,9 +11,8 @@
 // Dynamic regularisation (ECOS, Domahidi et al. 2013 sec. 5.2): a pivot whose sign is wrong or
 // whose magnitude is below `epsilon` is replaced by sign * delta.
 
+#include <cstddef>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace visors::optim {
 
@@ -35,8 +34,6 @@ class QuasiDefiniteLdl {
   /// Entry (i, j) of the lower triangle, i >= j; must have been marked.
   double& at(int i, int j) { return value_[index(i, j)]; }
 
-  /// Writes the assembled (not yet factored) matrix, both triangles, into `dense` (size x size).
-  void copy_to(Eigen::MatrixXd& dense) const;
   /// Factors in place; returns the number of regularised pivots, or -1 on a non-finite pivot.
   int factor(double epsilon, double delta);
   /// Solves L D L' x = rhs in place.
