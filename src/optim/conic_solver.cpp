@@ -42,6 +42,20 @@ struct Csr {
     col.assign(static_cast<std::size_t>(r) * static_cast<std::size_t>(c) + 1, 0);
     val.assign(col.size(), 0.0);
   }
+  /// Rows of `dense` (rows x cols as reserved), zero entries skipped.
+  void assign(const Eigen::MatrixXd& dense) {
+    int count = 0;
+    for (int i = 0; i < rows; ++i) {
+      ptr[static_cast<std::size_t>(i)] = count;
+      for (int j = 0; j < dense.cols(); ++j) {
+        if (const double v = dense(i, j); v != 0.0) {
+          col[static_cast<std::size_t>(count)] = j;
+          val[static_cast<std::size_t>(count++)] = v;
+        }
+      }
+    }
+    ptr[static_cast<std::size_t>(rows)] = count;
+  }
   // out = M v
   void multiply(const double* v, double* out) const {
     for (int i = 0; i < rows; ++i) {
@@ -80,7 +94,6 @@ std::string_view to_string(ConicStatus status) {
 // with x = D xs, y = E ys, z = F zs, s = F^{-1} ss between original and scaled variables.
 struct ConicSolver::Workspace {
   int n = 0, p = 0, m = 0;  // original
-  int ne = 0, me = 0;       // as solved (equal to n and m)
   ConeProduct cone;
   NtScaling nt;
   QuasiDefiniteLdl ldl;
@@ -125,46 +138,44 @@ ConicSolver::ConicSolver(const ConicDimensions& dims, const ConicSettings& setti
   w.n = dims.n;
   w.p = dims.p;
   w.m = dims.m();
-  w.ne = w.n;
-  w.me = w.m;
   w.cone = ConeProduct(dims.l, dims.q);
   w.nt = NtScaling(w.cone);
-  w.ldl = QuasiDefiniteLdl(w.ne + w.p);
-  const int full = w.ne + w.p;
+  w.ldl = QuasiDefiniteLdl(w.n + w.p);
+  const int full = w.n + w.p;
   w.dense = Eigen::MatrixXd::Zero(full, full);
   w.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(full);
   w.lu_rhs = Eigen::VectorXd::Zero(full);
   w.lu_sol = Eigen::VectorXd::Zero(full);
-  w.G.reserve(w.me, w.ne);
-  w.A.reserve(w.p, w.ne);
-  w.P.reserve(dims.quadratic ? w.n : 0, w.ne);
-  w.c = sized(w.ne);
-  w.h = sized(w.me);
+  w.G.reserve(w.m, w.n);
+  w.A.reserve(w.p, w.n);
+  w.P.reserve(dims.quadratic ? w.n : 0, w.n);
+  w.c = sized(w.n);
+  w.h = sized(w.m);
   w.b = sized(w.p);
-  w.dcol = sized(w.ne);
+  w.dcol = sized(w.n);
   w.erow = sized(w.p);
-  w.frow = sized(w.me);
-  w.colmax = sized(w.ne);
+  w.frow = sized(w.m);
+  w.colmax = sized(w.n);
   w.rowmax = sized(w.p);
   const int blocks = w.nt.blocks();
   w.blockmax = sized(blocks);
-  w.block_of_row.assign(static_cast<std::size_t>(w.me) + 1, 0);
+  w.block_of_row.assign(static_cast<std::size_t>(w.m) + 1, 0);
   int max_block = 1;
   for (int k = 0; k < blocks; ++k) {
     max_block = std::max(max_block, w.nt.block_dim(k));
     for (int r = 0; r < w.nt.block_dim(k); ++r) w.block_of_row[w.nt.block_start(k) + r] = k;
   }
   w.bc_ptr.assign(static_cast<std::size_t>(blocks) + 1, 0);
-  w.bc_col.assign(static_cast<std::size_t>(blocks) * static_cast<std::size_t>(w.ne) + 1, 0);
-  w.marker.assign(static_cast<std::size_t>(w.ne) + 1, -1);
-  w.pos.assign(static_cast<std::size_t>(w.ne) + 1, 0);
-  w.vbuf = sized(max_block * w.ne);
+  w.bc_col.assign(static_cast<std::size_t>(blocks) * static_cast<std::size_t>(w.n) + 1, 0);
+  w.marker.assign(static_cast<std::size_t>(w.n) + 1, -1);
+  w.pos.assign(static_cast<std::size_t>(w.n) + 1, 0);
+  w.vbuf = sized(max_block * w.n);
   w.sep_block.assign(static_cast<std::size_t>(blocks) + 1, 0);
-  w.sep_col.assign(static_cast<std::size_t>(w.ne) + 1, 0);
-  w.col_uses.assign(static_cast<std::size_t>(w.ne) + 1, 0);
-  w.sep_gcol.assign(static_cast<std::size_t>(w.me) + 1, 0);
-  w.sep_ginv = sized(w.me);
-  w.sep_ak = sized(w.me * w.p);
+  w.sep_col.assign(static_cast<std::size_t>(w.n) + 1, 0);
+  w.col_uses.assign(static_cast<std::size_t>(w.n) + 1, 0);
+  w.sep_gcol.assign(static_cast<std::size_t>(w.m) + 1, 0);
+  w.sep_ginv = sized(w.m);
+  w.sep_ak = sized(w.m * w.p);
   w.ubuf = sized(max_block * w.p);
   for (Vec* v : {&w.sep_in, &w.sep_mid, &w.sep_out}) *v = sized(max_block);
   if (dims.quadratic) {
@@ -172,13 +183,13 @@ ConicSolver::ConicSolver(const ConicDimensions& dims, const ConicSettings& setti
     w.rfac = sized(w.n * w.n);
     w.pdone.assign(static_cast<std::size_t>(w.n) + 1, 0);
   }
-  for (Vec* v : {&w.x, &w.px, &w.dxi, &w.pdxi, &w.hx, &w.rx, &w.x1, &w.x2, &w.bx, &w.ex, &w.kx}) *v = sized(w.ne);
+  for (Vec* v : {&w.x, &w.px, &w.dxi, &w.pdxi, &w.hx, &w.rx, &w.x1, &w.x2, &w.bx, &w.ex, &w.kx}) *v = sized(w.n);
   for (Vec* v : {&w.y, &w.ax, &w.ry, &w.y1, &w.y2, &w.by, &w.ey, &w.ky}) *v = sized(w.p);
   for (Vec* v : {&w.z, &w.s, &w.lambda, &w.gxs, &w.rz, &w.z1, &w.z2, &w.ds_aff, &w.dz_aff,
                  &w.tmp_s, &w.tmp_z, &w.ds, &w.dzs, &w.rs, &w.ds_full, &w.bz, &w.ez, &w.kz}) {
-    *v = sized(w.me);
+    *v = sized(w.m);
   }
-  w.red = sized(w.ne + w.p);
+  w.red = sized(w.n + w.p);
   x_out_ = Eigen::VectorXd::Zero(w.n);
   y_out_ = Eigen::VectorXd::Zero(w.p);
   z_out_ = Eigen::VectorXd::Zero(w.m);
@@ -265,62 +276,24 @@ bool factor_psd(const Eigen::MatrixXd& P, double tol, double* work, double* r,
 core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   if (auto ok = validate_problem(problem, dims_); !ok) return ok.error();
   Workspace& w = *work_;
-  const int n = w.n, p = w.p, m = w.m, ne = w.ne, me = w.me;
+  const int n = w.n, p = w.p, m = w.m;
   const ConicSettings& st = settings_;
 
-  // ---- Extended data (QP -> SOCP), unscaled, in sparse rows.
+  // ---- Problem data, unscaled, in sparse rows.
   if (dims_.quadratic) {
     if (!factor_psd(problem.P, st.psd_tolerance, w.pwork.data(), w.rfac.data(), w.pdone.data())) {
       return core::Error{"P", "must be positive semidefinite"};
     }
   }
-  {
-    Csr& G = w.G;
-    int count = 0;
-    for (int i = 0; i < m; ++i) {
-      G.ptr[i] = count;
-      for (int j = 0; j < n; ++j) {
-        const double v = problem.G(i, j);
-        if (v != 0.0) {
-          G.col[count] = j;
-          G.val[count++] = v;
-        }
-      }
-      w.h[i] = problem.h(i);
-    }
-    G.ptr[me] = count;
-    Csr& A = w.A;
-    count = 0;
-    for (int i = 0; i < p; ++i) {
-      A.ptr[i] = count;
-      for (int j = 0; j < n; ++j) {
-        const double v = problem.A(i, j);
-        if (v != 0.0) {
-          A.col[count] = j;
-          A.val[count++] = v;
-        }
-      }
-      w.b[i] = problem.b(i);
-    }
-    A.ptr[p] = count;
-    for (int j = 0; j < n; ++j) w.c[j] = problem.c(j);
-    Csr& P = w.P;
-    count = 0;
-    for (int i = 0; i < P.rows; ++i) {
-      P.ptr[i] = count;
-      for (int j = 0; j < n; ++j) {
-        const double v = problem.P(i, j);
-        if (v != 0.0) {
-          P.col[count] = j;
-          P.val[count++] = v;
-        }
-      }
-    }
-    if (P.rows > 0) P.ptr[P.rows] = count;
-  }
-  w.cnorm = std::max(1.0, norm2(w.c.data(), ne));
+  w.G.assign(problem.G);
+  w.A.assign(problem.A);
+  if (w.P.rows > 0) w.P.assign(problem.P);
+  for (int i = 0; i < m; ++i) w.h[i] = problem.h(i);
+  for (int i = 0; i < p; ++i) w.b[i] = problem.b(i);
+  for (int j = 0; j < n; ++j) w.c[j] = problem.c(j);
+  w.cnorm = std::max(1.0, norm2(w.c.data(), n));
   w.bnorm = std::max(1.0, norm2(w.b.data(), p));
-  w.hnorm = std::max(1.0, norm2(w.h.data(), me));
+  w.hnorm = std::max(1.0, norm2(w.h.data(), m));
 
   // ---- Ruiz equilibration of [A; G] (Ruiz 2001, "A scaling algorithm to equilibrate both rows
   // and columns norms in matrices", RAL-TR-2001-034): repeatedly divide every row and column by
@@ -348,7 +321,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
         w.colmax[w.P.col[k]] = std::max(w.colmax[w.P.col[k]], std::abs(w.P.val[k]));
       }
     }
-    for (int i = 0; i < me; ++i) {
+    for (int i = 0; i < m; ++i) {
       const int blk = w.block_of_row[i];
       for (int k = w.G.ptr[i]; k < w.G.ptr[i + 1]; ++k) {
         const double v = std::abs(w.G.val[k]);
@@ -356,14 +329,14 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
         w.colmax[w.G.col[k]] = std::max(w.colmax[w.G.col[k]], v);
       }
     }
-    for (int j = 0; j < ne; ++j) w.colmax[j] = root_inverse(w.colmax[j]);
+    for (int j = 0; j < n; ++j) w.colmax[j] = root_inverse(w.colmax[j]);
     for (int i = 0; i < p; ++i) w.rowmax[i] = root_inverse(w.rowmax[i]);
     for (int k = 0; k < blocks; ++k) w.blockmax[k] = root_inverse(w.blockmax[k]);
     for (int i = 0; i < p; ++i) {
       w.erow[i] *= w.rowmax[i];
       for (int k = w.A.ptr[i]; k < w.A.ptr[i + 1]; ++k) w.A.val[k] *= w.rowmax[i] * w.colmax[w.A.col[k]];
     }
-    for (int i = 0; i < me; ++i) {
+    for (int i = 0; i < m; ++i) {
       const double f = w.blockmax[w.block_of_row[i]];
       w.frow[i] *= f;
       for (int k = w.G.ptr[i]; k < w.G.ptr[i + 1]; ++k) w.G.val[k] *= f * w.colmax[w.G.col[k]];
@@ -371,11 +344,11 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     for (int i = 0; i < w.P.rows; ++i) {
       for (int k = w.P.ptr[i]; k < w.P.ptr[i + 1]; ++k) w.P.val[k] *= w.colmax[i] * w.colmax[w.P.col[k]];
     }
-    for (int j = 0; j < ne; ++j) w.dcol[j] *= w.colmax[j];
+    for (int j = 0; j < n; ++j) w.dcol[j] *= w.colmax[j];
   }
-  for (int j = 0; j < ne; ++j) w.c[j] *= w.dcol[j];
+  for (int j = 0; j < n; ++j) w.c[j] *= w.dcol[j];
   for (int i = 0; i < p; ++i) w.b[i] *= w.erow[i];
-  for (int i = 0; i < me; ++i) w.h[i] *= w.frow[i];
+  for (int i = 0; i < m; ++i) w.h[i] *= w.frow[i];
 
   // ---- Structure of the reduced KKT matrix [G'W^-2 G + dI, A'; A, -dI]: block k of the cone
   // couples the columns its rows touch (W^-1 is dense within a block).
@@ -389,7 +362,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   // condition of W_k near the optimum (eigenvalues eta^-2 (w0 +- ||w1||)^2), where the fixed-order
   // LDL' would meet tiny, cancellation-made pivots.
   QuasiDefiniteLdl& ldl = w.ldl;
-  ldl.begin_structure(ne + p, ne);
+  ldl.begin_structure(n + p, n);
   {
     int count = 0;
     std::fill(w.col_uses.begin(), w.col_uses.end(), 0);
@@ -400,7 +373,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       for (int i = r0; i < r1; ++i) {
         for (int e = w.G.ptr[i]; e < w.G.ptr[i + 1]; ++e) w.marker[w.G.col[e]] = k;
       }
-      for (int j = 0; j < ne; ++j) {
+      for (int j = 0; j < n; ++j) {
         if (w.marker[j] == k) {
           w.bc_col[count++] = j;
           ++w.col_uses[j];
@@ -441,13 +414,13 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
         const int j = w.A.col[e];
         if (w.sep_col[j] == 0) {
-          ldl.mark(ne + i, j);
+          ldl.mark(n + i, j);
         } else {
           const int r = w.marker[j];
           w.sep_ak[static_cast<std::size_t>(r * p + i)] = w.A.val[e] * w.sep_ginv[r];
         }
       }
-      for (int i2 = 0; w.any_separable && i2 <= i; ++i2) ldl.mark(ne + i, ne + i2);
+      for (int i2 = 0; w.any_separable && i2 <= i; ++i2) ldl.mark(n + i, n + i2);
     }
     for (int i = 0; i < w.P.rows; ++i) {
       for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) {
@@ -486,22 +459,22 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       for (int i2 = 0; i2 <= i; ++i2) {
         double sum = 0.0;
         for (int r = 0; r < dim; ++r) sum += u[r * p + i] * u[r * p + i2];
-        ldl.at(ne + i, ne + i2) -= sum;
+        ldl.at(n + i, n + i2) -= sum;
       }
     }
   };
   const auto assemble_kkt = [&]() {
     ldl.clear_values();
-    for (int j = 0; j < ne; ++j) ldl.at(j, j) = w.sep_col[j] != 0 ? 1.0 : delta;
+    for (int j = 0; j < n; ++j) ldl.at(j, j) = w.sep_col[j] != 0 ? 1.0 : delta;
     for (int i = 0; i < w.P.rows; ++i) {
       for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) {
         if (w.P.col[e] <= i) ldl.at(i, w.P.col[e]) += w.P.val[e];
       }
     }
     for (int i = 0; i < p; ++i) {
-      ldl.at(ne + i, ne + i) = -delta;
+      ldl.at(n + i, n + i) = -delta;
       for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
-        if (w.sep_col[w.A.col[e]] == 0) ldl.at(ne + i, w.A.col[e]) += w.A.val[e];
+        if (w.sep_col[w.A.col[e]] == 0) ldl.at(n + i, w.A.col[e]) += w.A.val[e];
       }
     }
     for (int k = 0; k < blocks; ++k) {
@@ -527,15 +500,15 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   const auto assemble_dense = [&]() {
     Eigen::MatrixXd& K = w.dense;
     K.setZero();
-    for (int j = 0; j < ne; ++j) K(j, j) = delta;
+    for (int j = 0; j < n; ++j) K(j, j) = delta;
     for (int i = 0; i < w.P.rows; ++i) {
       for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) K(i, w.P.col[e]) += w.P.val[e];
     }
     for (int i = 0; i < p; ++i) {
-      K(ne + i, ne + i) = -delta;
+      K(n + i, n + i) = -delta;
       for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
-        K(ne + i, w.A.col[e]) += w.A.val[e];
-        K(w.A.col[e], ne + i) += w.A.val[e];
+        K(n + i, w.A.col[e]) += w.A.val[e];
+        K(w.A.col[e], n + i) += w.A.val[e];
       }
     }
     for (int k = 0; k < blocks; ++k) {
@@ -608,7 +581,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       for (int r = 0; r < dim; ++r) {
         const double* ak = w.sep_ak.data() + static_cast<std::size_t>((r0 + r) * p);
         const double v = bz[r0 + r] + out[r];
-        for (int i = 0; i < p; ++i) red[ne + i] -= ak[i] * v;
+        for (int i = 0; i < p; ++i) red[n + i] -= ak[i] * v;
       }
     }
   };
@@ -623,7 +596,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       const int dim = w.nt.block_dim(k);
       for (int r = 0; r < dim; ++r) {
         const double* ak = w.sep_ak.data() + static_cast<std::size_t>((r0 + r) * p);
-        oz[r0 + r] = red[w.sep_gcol[r0 + r]] * w.sep_ginv[r0 + r] - dot(ak, red + ne, p);
+        oz[r0 + r] = red[w.sep_gcol[r0 + r]] * w.sep_ginv[r0 + r] - dot(ak, red + n, p);
       }
       w.nt.apply_block(k, oz + r0, mid, 1);
       w.nt.apply_block(k, mid, out, 1);
@@ -640,20 +613,20 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
                                  double* oy, double* oz) {
     inverse_square(bz, w.tmp_s.data());
     double* red = w.red.data();
-    for (int j = 0; j < ne; ++j) red[j] = bx[j];
+    for (int j = 0; j < n; ++j) red[j] = bx[j];
     w.G.multiply_transpose_add(w.tmp_s.data(), red);
-    for (int i = 0; i < p; ++i) red[ne + i] = by[i];
+    for (int i = 0; i < p; ++i) red[n + i] = by[i];
     if (w.use_lu) {
-      for (int i = 0; i < ne + p; ++i) w.lu_rhs(i) = red[i];
+      for (int i = 0; i < n + p; ++i) w.lu_rhs(i) = red[i];
       w.lu_sol.noalias() = w.lu.solve(w.lu_rhs);
-      for (int i = 0; i < ne + p; ++i) red[i] = w.lu_sol(i);
+      for (int i = 0; i < n + p; ++i) red[i] = w.lu_sol(i);
     } else {
       separable_forward(bz, red);
       ldl.solve(red);
       separable_backward(bz, red, oz);
     }
-    for (int j = 0; j < ne; ++j) ox[j] = red[j];
-    for (int i = 0; i < p; ++i) oy[i] = red[ne + i];
+    for (int j = 0; j < n; ++j) ox[j] = red[j];
+    for (int i = 0; i < p; ++i) oy[i] = red[n + i];
     // oz = W^-2 (G ox - bz) on the other blocks (the separable rows of G ox are not needed).
     for (int k = 0; k < blocks; ++k) {
       if (w.sep_block[k] != 0 && !w.use_lu) continue;
@@ -673,7 +646,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   const auto refined_solve = [&](const double* bx, const double* by, const double* bz, double* ox,
                                  double* oy, double* oz) -> double {
     reduced_solve(bx, by, bz, ox, oy, oz);
-    const double scale = std::max({norm_inf(bx, ne), norm_inf(by, p), norm_inf(bz, me), 1e-300});
+    const double scale = std::max({norm_inf(bx, n), norm_inf(by, p), norm_inf(bz, m), 1e-300});
     double err = 0.0;
     for (int step = 0; step <= st.refinement_steps; ++step) {
       // e = rhs - K o.
@@ -681,21 +654,21 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       if (w.P.rows == 0) std::fill(w.ex.begin(), w.ex.end(), 0.0);
       w.A.multiply_transpose_add(oy, w.ex.data());
       w.G.multiply_transpose_add(oz, w.ex.data());
-      for (int j = 0; j < ne; ++j) w.ex[j] = bx[j] - w.ex[j];
+      for (int j = 0; j < n; ++j) w.ex[j] = bx[j] - w.ex[j];
       w.A.multiply(ox, w.ey.data());
       for (int i = 0; i < p; ++i) w.ey[i] = by[i] - w.ey[i];
       w.nt.apply(oz, w.tmp_z.data());
       w.nt.apply(w.tmp_z.data(), w.tmp_s.data());
       w.G.multiply(ox, w.ez.data());
-      for (int i = 0; i < me; ++i) w.ez[i] = bz[i] - (w.ez[i] - w.tmp_s[i]);
+      for (int i = 0; i < m; ++i) w.ez[i] = bz[i] - (w.ez[i] - w.tmp_s[i]);
       const double previous = err;
-      err = std::max({norm_inf(w.ex.data(), ne), norm_inf(w.ey.data(), p), norm_inf(w.ez.data(), me)}) / scale;
+      err = std::max({norm_inf(w.ex.data(), n), norm_inf(w.ey.data(), p), norm_inf(w.ez.data(), m)}) / scale;
       // Stop at working accuracy, at the step cap, or once a step no longer halves the residual.
       if (!(err > 1e-13) || step == st.refinement_steps || (step > 0 && err > 0.5 * previous)) break;
       reduced_solve(w.ex.data(), w.ey.data(), w.ez.data(), w.kx.data(), w.ky.data(), w.kz.data());
-      for (int j = 0; j < ne; ++j) ox[j] += w.kx[j];
+      for (int j = 0; j < n; ++j) ox[j] += w.kx[j];
       for (int i = 0; i < p; ++i) oy[i] += w.ky[i];
-      for (int i = 0; i < me; ++i) oz[i] += w.kz[i];
+      for (int i = 0; i < m; ++i) oz[i] += w.kz[i];
     }
     return err;
   };
@@ -721,7 +694,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     s_out_.setZero();
     const double inf = std::numeric_limits<double>::infinity();
     if (status == ConicStatus::primal_infeasible) {
-      const double scale = -(dot(w.b.data(), w.y.data(), p) + dot(w.h.data(), w.z.data(), me));
+      const double scale = -(dot(w.b.data(), w.y.data(), p) + dot(w.h.data(), w.z.data(), m));
       for (int i = 0; i < p; ++i) y_out_(i) = w.erow[i] * w.y[i] / scale;
       for (int i = 0; i < m; ++i) z_out_(i) = w.frow[i] * w.z[i] / scale;
       info.primal_objective = inf;
@@ -729,7 +702,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       return info;
     }
     if (status == ConicStatus::dual_infeasible) {
-      const double scale = -dot(w.c.data(), w.x.data(), ne);
+      const double scale = -dot(w.c.data(), w.x.data(), n);
       for (int j = 0; j < n; ++j) x_out_(j) = w.dcol[j] * w.x[j] / scale;
       for (int i = 0; i < m; ++i) s_out_(i) = w.s[i] / w.frow[i] / scale;
       info.primal_objective = -inf;
@@ -759,7 +732,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     double cx_out = 0.0;
     for (int j = 0; j < n; ++j) cx_out += problem.c(j) * x_out_(j);
     info.dual_objective = -(objective - cx_out) -
-                          (dot(w.b.data(), w.y.data(), p) + dot(w.h.data(), w.z.data(), me)) / t;
+                          (dot(w.b.data(), w.y.data(), p) + dot(w.h.data(), w.z.data(), m)) / t;
     return info;
   };
 
@@ -771,21 +744,21 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   w.fallbacks = 0;
   if (!factor_kkt()) return finish(ConicStatus::numerical_error, 0);
   if (dims_.quadratic) {
-    for (int j = 0; j < ne; ++j) w.bx[j] = -w.c[j];
+    for (int j = 0; j < n; ++j) w.bx[j] = -w.c[j];
     kkt_solve(w.bx.data(), w.b.data(), w.h.data(), w.x.data(), w.y.data(), w.z.data());
-    for (int i = 0; i < me; ++i) w.s[i] = -w.z[i];
+    for (int i = 0; i < m; ++i) w.s[i] = -w.z[i];
   } else {
-    for (int j = 0; j < ne; ++j) w.bx[j] = 0.0;
+    for (int j = 0; j < n; ++j) w.bx[j] = 0.0;
     kkt_solve(w.bx.data(), w.b.data(), w.h.data(), w.x.data(), w.y1.data(), w.z1.data());
-    for (int i = 0; i < me; ++i) w.s[i] = -w.z1[i];
-    for (int j = 0; j < ne; ++j) w.bx[j] = -w.c[j];
+    for (int i = 0; i < m; ++i) w.s[i] = -w.z1[i];
+    for (int j = 0; j < n; ++j) w.bx[j] = -w.c[j];
     for (int i = 0; i < p; ++i) w.by[i] = 0.0;
-    for (int i = 0; i < me; ++i) w.bz[i] = 0.0;
+    for (int i = 0; i < m; ++i) w.bz[i] = 0.0;
     kkt_solve(w.bx.data(), w.by.data(), w.bz.data(), w.x1.data(), w.y.data(), w.z.data());
   }
   for (Vec* v : {&w.s, &w.z}) {
     const double shift = -w.cone.interior_margin(v->data());
-    if (shift >= -1e-8 * std::max(1.0, norm2(v->data(), me))) w.cone.add_identity(v->data(), 1.0 + shift);
+    if (shift >= -1e-8 * std::max(1.0, norm2(v->data(), m))) w.cone.add_identity(v->data(), 1.0 + shift);
   }
   w.tau = 1.0;
   w.kappa = 1.0;
@@ -798,20 +771,20 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     //   rx = Px + A'y + G'z + c tau, ry = A x - b tau, rz = s + G x - h tau,
     //   rt = kappa + c'x + b'y + h'z + x'Px / tau.
     if (w.P.rows > 0) w.P.multiply(w.x.data(), w.px.data());
-    const double xpx = w.P.rows > 0 ? dot(w.x.data(), w.px.data(), ne) : 0.0;
+    const double xpx = w.P.rows > 0 ? dot(w.x.data(), w.px.data(), n) : 0.0;
     std::fill(w.hx.begin(), w.hx.end(), 0.0);
     w.A.multiply_transpose_add(w.y.data(), w.hx.data());
     w.G.multiply_transpose_add(w.z.data(), w.hx.data());
     w.A.multiply(w.x.data(), w.ax.data());
     w.G.multiply(w.x.data(), w.gxs.data());
-    for (int i = 0; i < me; ++i) w.gxs[i] += w.s[i];
-    for (int j = 0; j < ne; ++j) w.rx[j] = w.hx[j] + w.c[j] * w.tau + (w.P.rows > 0 ? w.px[j] : 0.0);
+    for (int i = 0; i < m; ++i) w.gxs[i] += w.s[i];
+    for (int j = 0; j < n; ++j) w.rx[j] = w.hx[j] + w.c[j] * w.tau + (w.P.rows > 0 ? w.px[j] : 0.0);
     for (int i = 0; i < p; ++i) w.ry[i] = w.ax[i] - w.b[i] * w.tau;
-    for (int i = 0; i < me; ++i) w.rz[i] = w.gxs[i] - w.h[i] * w.tau;
-    const double cx = dot(w.c.data(), w.x.data(), ne);
+    for (int i = 0; i < m; ++i) w.rz[i] = w.gxs[i] - w.h[i] * w.tau;
+    const double cx = dot(w.c.data(), w.x.data(), n);
     const double by = dot(w.b.data(), w.y.data(), p);
-    const double hz = dot(w.h.data(), w.z.data(), me);
-    const double sz = dot(w.s.data(), w.z.data(), me);
+    const double hz = dot(w.h.data(), w.z.data(), m);
+    const double sz = dot(w.s.data(), w.z.data(), m);
     const double rt = w.kappa + cx + by + hz + xpx / w.tau;
     // Norms on the unscaled problem: rx_orig = D^-1 rx, ry_orig = E^-1 ry, rz_orig = F^-1 rz.
     const auto unscaled = [](const double* v, const double* scale, int len, bool divide) {
@@ -822,9 +795,9 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       }
       return std::sqrt(sum);
     };
-    const double nrx = unscaled(w.rx.data(), w.dcol.data(), ne, true);
+    const double nrx = unscaled(w.rx.data(), w.dcol.data(), n, true);
     const double nry = unscaled(w.ry.data(), w.erow.data(), p, true);
-    const double nrz = unscaled(w.rz.data(), w.frow.data(), me, true);
+    const double nrz = unscaled(w.rz.data(), w.frow.data(), m, true);
     const double quad = 0.5 * xpx / (w.tau * w.tau);  // (1/2) xi'P xi, xi = x / tau
     const double pcost = quad + cx / w.tau;
     const double dcost = -quad - (by + hz) / w.tau;
@@ -845,13 +818,13 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       return finish(ConicStatus::optimal, iter);
     }
     if (hz + by < 0.0) {
-      const double pinf = unscaled(w.hx.data(), w.dcol.data(), ne, true) / w.cnorm / -(hz + by);
+      const double pinf = unscaled(w.hx.data(), w.dcol.data(), n, true) / w.cnorm / -(hz + by);
       if (pinf <= st.feasibility_tolerance) return finish(ConicStatus::primal_infeasible, iter);
     }
     if (cx < 0.0) {
-      const double pray = w.P.rows > 0 ? unscaled(w.px.data(), w.dcol.data(), ne, true) / w.cnorm : 0.0;
+      const double pray = w.P.rows > 0 ? unscaled(w.px.data(), w.dcol.data(), n, true) / w.cnorm : 0.0;
       const double dinf = std::max({unscaled(w.ax.data(), w.erow.data(), p, true) / w.bnorm,
-                                    unscaled(w.gxs.data(), w.frow.data(), me, true) / w.hnorm, pray}) / -cx;
+                                    unscaled(w.gxs.data(), w.frow.data(), m, true) / w.hnorm, pray}) / -cx;
       if (dinf <= st.feasibility_tolerance) return finish(ConicStatus::dual_infeasible, iter);
     }
     if (iter >= st.max_iterations) return finish(ConicStatus::max_iterations, iter);
@@ -863,11 +836,11 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
 
     // u1 = K^-1 (-c, b, h): the tau column of the embedding (Vandenberghe 2010 sec. 7.3). The
     // linearised tau row has coefficients q = (c + 2 P xi, b, h) and -(kappa/tau + xi'P xi).
-    for (int j = 0; j < ne; ++j) w.bx[j] = -w.c[j];
+    for (int j = 0; j < n; ++j) w.bx[j] = -w.c[j];
     kkt_solve(w.bx.data(), w.b.data(), w.h.data(), w.x1.data(), w.y1.data(), w.z1.data());
     const auto q_dot = [&](const double* dx, const double* dy, const double* dz) {
-      double v = dot(w.c.data(), dx, ne) + dot(w.b.data(), dy, p) + dot(w.h.data(), dz, me);
-      if (w.P.rows > 0) v += 2.0 / w.tau * dot(w.px.data(), dx, ne);
+      double v = dot(w.c.data(), dx, n) + dot(w.b.data(), dy, p) + dot(w.h.data(), dz, m);
+      if (w.P.rows > 0) v += 2.0 / w.tau * dot(w.px.data(), dx, n);
       return v;
     };
     // Denominator of dtau, q'u1 - kappa/tau - xi'P xi, in the cancellation-free form
@@ -875,11 +848,11 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     // near the optimum x1 -> xi and the direct difference loses every digit.
     double denom = -w.kappa / w.tau;
     w.nt.apply(w.z1.data(), w.tmp_z.data());
-    denom -= dot(w.tmp_z.data(), w.tmp_z.data(), me);
+    denom -= dot(w.tmp_z.data(), w.tmp_z.data(), m);
     if (w.P.rows > 0) {
-      for (int j = 0; j < ne; ++j) w.dxi[j] = w.x1[j] - w.x[j] / w.tau;
+      for (int j = 0; j < n; ++j) w.dxi[j] = w.x1[j] - w.x[j] / w.tau;
       w.P.multiply(w.dxi.data(), w.pdxi.data());
-      denom -= dot(w.dxi.data(), w.pdxi.data(), ne);
+      denom -= dot(w.dxi.data(), w.pdxi.data(), n);
     }
 
     // Newton system, with rs the target of lambda o (W dz + W^-T ds) and rk that of
@@ -891,8 +864,8 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     const auto direction = [&](double eta, double rk) -> bool {
       w.cone.divide(w.lambda.data(), w.rs.data(), w.dzs.data());  // dzs = lambda \ rs (temporary)
       w.nt.apply(w.dzs.data(), w.bz.data());
-      for (int i = 0; i < me; ++i) w.bz[i] = -eta * w.rz[i] - w.bz[i];
-      for (int j = 0; j < ne; ++j) w.bx[j] = -eta * w.rx[j];
+      for (int i = 0; i < m; ++i) w.bz[i] = -eta * w.rz[i] - w.bz[i];
+      for (int j = 0; j < n; ++j) w.bx[j] = -eta * w.rx[j];
       for (int i = 0; i < p; ++i) w.by[i] = -eta * w.ry[i];
       kkt_solve(w.bx.data(), w.by.data(), w.bz.data(), w.x2.data(), w.y2.data(), w.z2.data());
       const double at = -eta * rt - rk / w.tau;
@@ -900,15 +873,15 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
 
       dtau = (at - qu2) / denom;
       if (!std::isfinite(dtau)) return false;
-      for (int j = 0; j < ne; ++j) w.x2[j] += dtau * w.x1[j];
+      for (int j = 0; j < n; ++j) w.x2[j] += dtau * w.x1[j];
       for (int i = 0; i < p; ++i) w.y2[i] += dtau * w.y1[i];
-      for (int i = 0; i < me; ++i) w.z2[i] += dtau * w.z1[i];
+      for (int i = 0; i < m; ++i) w.z2[i] += dtau * w.z1[i];
       dkappa = (rk - w.kappa * dtau) / w.tau;
       // ds from the primal rows, ds = -eta rz - G dx + h dtau (equal in exact arithmetic to
       // W (lambda \ rs - W dz), but free of the W^2-sized roundoff of that form, so the primal
       // residual contracts by exactly 1 - alpha eta); kept unscaled in ds_full.
       w.G.multiply(w.x2.data(), w.ds_full.data());
-      for (int i = 0; i < me; ++i) w.ds_full[i] = -eta * w.rz[i] - w.ds_full[i] + w.h[i] * dtau;
+      for (int i = 0; i < m; ++i) w.ds_full[i] = -eta * w.rz[i] - w.ds_full[i] + w.h[i] * dtau;
       // Scaled directions: dz~ = W dz, ds~ = W^-1 ds.
       w.nt.apply(w.z2.data(), w.dzs.data());
       w.nt.apply_inverse(w.ds_full.data(), w.ds.data());
@@ -924,11 +897,11 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
 
     // Predictor (affine scaling): rs = -lambda o lambda, rk = -tau kappa, eta = 1.
     w.cone.product(w.lambda.data(), w.lambda.data(), w.rs.data());
-    for (int i = 0; i < me; ++i) w.rs[i] = -w.rs[i];
+    for (int i = 0; i < m; ++i) w.rs[i] = -w.rs[i];
     if (!direction(1.0, -w.tau * w.kappa)) return finish(ConicStatus::numerical_error, iter);
     const double alpha_aff = step_to_boundary(1.0);
     const double sigma = std::pow(std::clamp(1.0 - alpha_aff, 0.0, 1.0), 3.0);
-    for (int i = 0; i < me; ++i) {
+    for (int i = 0; i < m; ++i) {
       w.ds_aff[i] = w.ds[i];
       w.dz_aff[i] = w.dzs[i];
     }
@@ -938,7 +911,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     // rk = -tau kappa + sigma mu - dtau_aff dkappa_aff, eta = 1 - sigma.
     w.cone.product(w.ds_aff.data(), w.dz_aff.data(), w.tmp_s.data());
     w.cone.product(w.lambda.data(), w.lambda.data(), w.rs.data());
-    for (int i = 0; i < me; ++i) w.rs[i] = -w.rs[i] - w.tmp_s[i];
+    for (int i = 0; i < m; ++i) w.rs[i] = -w.rs[i] - w.tmp_s[i];
     w.cone.add_identity(w.rs.data(), sigma * mu);
     if (!direction(1.0 - sigma, -w.tau * w.kappa + sigma * mu - dtau_aff * dkappa_aff)) {
       return finish(ConicStatus::numerical_error, iter);
@@ -946,10 +919,10 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     const double alpha = std::min(1.0, frac * step_to_boundary(1e30));
     if (!(alpha > 0.0)) return finish(ConicStatus::numerical_error, iter);
 
-    for (int i = 0; i < me; ++i) w.tmp_s[i] = w.ds_full[i];
-    for (int j = 0; j < ne; ++j) w.x[j] += alpha * w.x2[j];
+    for (int i = 0; i < m; ++i) w.tmp_s[i] = w.ds_full[i];
+    for (int j = 0; j < n; ++j) w.x[j] += alpha * w.x2[j];
     for (int i = 0; i < p; ++i) w.y[i] += alpha * w.y2[i];
-    for (int i = 0; i < me; ++i) {
+    for (int i = 0; i < m; ++i) {
       w.z[i] += alpha * w.z2[i];
       w.s[i] += alpha * w.tmp_s[i];
     }
