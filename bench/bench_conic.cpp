@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "optim/conic_solver.hpp"
+#include "optim/minimum_fuel_problem.hpp"
 
 namespace {
 
@@ -33,35 +34,11 @@ using visors::optim::ConicSolver;
 
 constexpr int kInstances = 40;
 
-ConicDimensions fuel_dims(int impulses) {
-  ConicDimensions dims;
-  dims.n = 4 * impulses;
-  dims.p = 6;
-  dims.q.assign(static_cast<std::size_t>(impulses), 4);
-  return dims;
-}
-
 std::vector<ConicProblem> fuel_instances(int impulses) {
   std::mt19937 rng(static_cast<unsigned>(1000 + impulses));
-  std::normal_distribution<double> normal;
   std::vector<ConicProblem> out;
-  const int n = 4 * impulses;
   for (int k = 0; k < kInstances; ++k) {
-    ConicProblem pr;
-    pr.c = Eigen::VectorXd::Zero(n);
-    pr.c.tail(impulses).setOnes();
-    pr.G = Eigen::MatrixXd::Zero(n, n);
-    for (int j = 0; j < impulses; ++j) {
-      pr.G(4 * j, 3 * impulses + j) = -1.0;
-      for (int i = 0; i < 3; ++i) pr.G(4 * j + 1 + i, 3 * j + i) = -1.0;
-    }
-    pr.h = Eigen::VectorXd::Zero(n);
-    pr.A = Eigen::MatrixXd::Zero(6, n);
-    for (int r = 0; r < 6; ++r) {
-      for (int j = 0; j < 3 * impulses; ++j) pr.A(r, j) = normal(rng);
-    }
-    pr.b = Eigen::VectorXd::NullaryExpr(6, [&] { return normal(rng); });
-    out.push_back(std::move(pr));
+    out.push_back(visors::optim::test::minimum_fuel_problem(impulses, rng));
   }
   return out;
 }
@@ -74,7 +51,7 @@ std::map<int, double>& our_median() {
 void BM_ConicSolve(benchmark::State& state) {
   const int impulses = static_cast<int>(state.range(0));
   const auto instances = fuel_instances(impulses);
-  auto created = ConicSolver::create(fuel_dims(impulses));
+  auto created = ConicSolver::create(visors::optim::test::minimum_fuel_dimensions(impulses));
   if (!created.ok()) {
     state.SkipWithError(created.error().describe().c_str());
     return;
@@ -154,7 +131,7 @@ void BM_CvxoptReference(benchmark::State& state) {
   const int impulses = static_cast<int>(state.range(0));
   const auto path = std::filesystem::temp_directory_path() /
                     ("visors_bench_conic_" + std::to_string(::getpid()) + "_" + std::to_string(impulses) + ".json");
-  write_instances(path, fuel_instances(impulses), fuel_dims(impulses));
+  write_instances(path, fuel_instances(impulses), visors::optim::test::minimum_fuel_dimensions(impulses));
   const std::string command =
       "/usr/bin/python3 '" + (source_dir() / "tests/optim/cvxopt_oracle.py").string() + "' --bench '" + path.string() + "'";
   double median = 0.0, worst = 0.0;

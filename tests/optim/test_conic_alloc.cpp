@@ -10,6 +10,7 @@
 #include <random>
 
 #include "optim/conic_solver.hpp"
+#include "optim/minimum_fuel_problem.hpp"
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -50,27 +51,6 @@ long allocations_during_solve(ConicSolver& solver, const ConicProblem& problem, 
   return g_allocations.load();
 }
 
-// Minimum-fuel shape: 30 impulses, 6 equality rows, cones (t_k, dv_k).
-ConicProblem fuel_problem(int impulses, std::mt19937& rng) {
-  std::normal_distribution<double> normal;
-  const int n = 4 * impulses;
-  ConicProblem pr;
-  pr.c = Eigen::VectorXd::Zero(n);
-  pr.c.tail(impulses).setOnes();
-  pr.G = Eigen::MatrixXd::Zero(n, n);
-  for (int k = 0; k < impulses; ++k) {
-    pr.G(4 * k, 3 * impulses + k) = -1.0;
-    for (int i = 0; i < 3; ++i) pr.G(4 * k + 1 + i, 3 * k + i) = -1.0;
-  }
-  pr.h = Eigen::VectorXd::Zero(n);
-  pr.A = Eigen::MatrixXd::Zero(6, n);
-  for (int r = 0; r < 6; ++r) {
-    for (int j = 0; j < 3 * impulses; ++j) pr.A(r, j) = normal(rng);
-  }
-  pr.b = Eigen::VectorXd::NullaryExpr(6, [&] { return normal(rng); });
-  return pr;
-}
-
 // The harness sees allocations: setting a solver up allocates its workspace.
 TEST(ConicAllocation, CounterSeesSetupAllocations) {
   ConicDimensions dims;
@@ -86,15 +66,11 @@ TEST(ConicAllocation, CounterSeesSetupAllocations) {
 
 TEST(ConicAllocation, SolveOfPlannerSocpAllocatesNothing) {
   std::mt19937 rng(7);
-  ConicDimensions dims;
-  dims.n = 120;
-  dims.p = 6;
-  dims.q.assign(30, 4);
-  auto created = ConicSolver::create(dims);
+  auto created = ConicSolver::create(visors::optim::test::minimum_fuel_dimensions(30));
   ASSERT_TRUE(created.ok());
   ConicSolver solver = std::move(created).value();
   for (int trial = 0; trial < 3; ++trial) {  // first solve and re-solves with new data
-    const ConicProblem pr = fuel_problem(30, rng);
+    const ConicProblem pr = visors::optim::test::minimum_fuel_problem(30, rng);
     ConicStatus status{};
     int fallbacks = 0;
     EXPECT_EQ(allocations_during_solve(solver, pr, &status, &fallbacks), 0) << "trial " << trial;

@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include "optim/conic_solver.hpp"
+#include "optim/minimum_fuel_problem.hpp"
 
 namespace {
 
@@ -235,30 +236,12 @@ TEST(ConicSolver, StatusNames) {
 // elimination about one iteration per solve fell back to it.
 TEST(ConicSolver, FuelShapeAvoidsDenseFallback) {
   constexpr int kImpulses = 20;
-  ConicDimensions dims;
-  dims.n = 4 * kImpulses;
-  dims.p = 6;
-  dims.q.assign(kImpulses, 4);
-  ConicSolver solver = make_solver(dims);
+  ConicSolver solver = make_solver(visors::optim::test::minimum_fuel_dimensions(kImpulses));
   std::mt19937 rng(7);
-  std::normal_distribution<double> normal;
   int fallbacks = 0;
   constexpr int kInstances = 20;
   for (int instance = 0; instance < kInstances; ++instance) {
-    ConicProblem pr;
-    pr.c = Eigen::VectorXd::Zero(dims.n);
-    pr.c.tail(kImpulses).setOnes();
-    pr.G = Eigen::MatrixXd::Zero(dims.n, dims.n);
-    for (int k = 0; k < kImpulses; ++k) {
-      pr.G(4 * k, 3 * kImpulses + k) = -1.0;
-      for (int i = 0; i < 3; ++i) pr.G(4 * k + 1 + i, 3 * k + i) = -1.0;
-    }
-    pr.h = Eigen::VectorXd::Zero(dims.n);
-    pr.A = Eigen::MatrixXd::Zero(6, dims.n);
-    for (int r = 0; r < 6; ++r) {
-      for (int j = 0; j < 3 * kImpulses; ++j) pr.A(r, j) = normal(rng);
-    }
-    pr.b = Eigen::VectorXd::NullaryExpr(6, [&] { return normal(rng); });
+    const ConicProblem pr = visors::optim::test::minimum_fuel_problem(kImpulses, rng);
     const auto info = solver.solve(pr);
     ASSERT_TRUE(info.ok()) << info.error().describe();
     ASSERT_EQ(info->status, ConicStatus::optimal);
