@@ -28,7 +28,7 @@ int run_tool(const std::string& name) {
   visors::tools::Json input;
   try {
     input = visors::tools::Json::parse(text);
-  } catch (const visors::tools::Json::parse_error& e) {
+  } catch (const visors::tools::Json::exception& e) {  // syntax, and numbers out of range (1e999)
     fmt::print(stderr, "visors tool {}: input: not valid JSON ({})\n", name, e.what());
     return kExitBadInput;
   }
@@ -42,6 +42,9 @@ int run_tool(const std::string& name) {
     return 0;
   } catch (const visors::tools::ToolInputError& e) {
     fmt::print(stderr, "visors tool {}: {}\n", name, e.what());
+    return kExitBadInput;
+  } catch (const visors::tools::Json::exception& e) {  // a value of an unexpected JSON type
+    fmt::print(stderr, "visors tool {}: input: {}\n", name, e.what());
     return kExitBadInput;
   }
 }

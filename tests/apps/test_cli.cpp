@@ -21,6 +21,13 @@ TEST(Cli, MalformedJsonIsRejectedWithExitCode2) {
   EXPECT_EQ(run.exit_code, 2);
 }
 
+// A number beyond double range is an out_of_range error of the JSON parser, not a syntax error:
+// it must still be a bad-input exit, not an abort.
+TEST(Cli, OutOfRangeNumberIsRejectedWithExitCode2) {
+  const auto run = visors::test::run_tool("elements", "{\"r\": [1e999, 0, 0]}");
+  EXPECT_EQ(run.exit_code, 2);
+}
+
 TEST(Cli, NonObjectJsonIsRejected) {
   const auto run = visors::test::run_tool("elements", "[1, 2, 3]");
   EXPECT_EQ(run.exit_code, 2);
