@@ -3,53 +3,21 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
-#include <sstream>
-
-#include <toml++/toml.h>
 
 #include "core/angles.hpp"
+#include "core/toml_fields.hpp"
 
 namespace visors::preview {
 namespace {
 
 using core::Error;
 
-// Reads a finite number at `table.key`; integers are accepted where a real is expected.
-core::Result<double> number_at(const toml::table& table, const std::string& section,
-                               const std::string& key, std::optional<double> fallback) {
-  const std::string field = section.empty() ? key : section + "." + key;
-  const toml::node* node = table.get(key);
-  if (node == nullptr) {
-    if (fallback) return *fallback;
-    return Error{field, "is required but missing"};
-  }
-  const auto value = node->value<double>();
-  if (!value) return Error{field, "must be a number"};
-  if (!std::isfinite(*value)) return Error{field, "must be finite"};
-  return *value;
-}
+using core::toml_fields::check_keys;
+using core::toml_fields::number_at;
 
 const toml::table* section_of(const toml::table& root, const std::string& name) {
   return root.get_as<toml::table>(name);
 }
-
-std::optional<Error> check_keys(const toml::table& table, const std::string& section,
-                                std::initializer_list<std::string_view> allowed) {
-  for (const auto& [key, node] : table) {
-    bool known = false;
-    for (const auto a : allowed) known = known || key.str() == a;
-    if (!known) {
-      return Error{section.empty() ? std::string(key.str()) : section + "." + std::string(key.str()),
-                   "is not a recognised key"};
-    }
-  }
-  return std::nullopt;
-}
-
-#define VISORS_TRY(var, expr)               \
-  auto var##_result = (expr);               \
-  if (!var##_result.ok()) return var##_result.error(); \
-  const auto var = var##_result.value()
 
 core::Result<astro::KeplerianElements> parse_chief(const toml::table& chief,
                                                    const core::EarthGravityConstants& earth) {
@@ -121,14 +89,7 @@ core::Result<std::vector<FormationSpec>> parse_formations(const toml::table& roo
 }  // namespace
 
 core::Result<PreviewScenario> parse_preview_scenario(const std::string& toml_text) {
-  toml::table root;
-  try {
-    root = toml::parse(toml_text);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream where;
-    where << "line " << e.source().begin.line;
-    return Error{where.str(), std::string("invalid TOML: ") + std::string(e.description())};
-  }
+  VISORS_TRY(root, core::toml_fields::parse(toml_text));
   if (auto e = check_keys(root, "", {"epoch", "chief", "earth", "run", "formation"})) return *e;
 
   PreviewScenario s;
