@@ -1,0 +1,108 @@
+// `visors tool density` through the real binary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "apps/run_tool.hpp"
+
+namespace {
+
+// Sun on the GCRF x axis: the bulge apex is at right ascension +30 deg (M&G lag), i.e. along
+// (cos 30, sin 30, 0). r_itrf on the ITRF x axis at a + 500 km (WGS-84 a = 6378137 m) gives a
+// geodetic height of exactly 500 km.
+constexpr char kSun[] = R"("sun_gcrf":[1.495978707e11,0,0],"f107":150,"r_itrf":[6878137,0,0])";
+
+std::string input(const std::string& model, const std::string& r_gcrf) {
+  std::string s = R"({"model":")";
+  s += model;
+  s += R"(","r_gcrf":)";
+  s += r_gcrf;
+  s += ",";
+  s += kSun;
+  s += "}";
+  return s;
+}
+
+constexpr char kApex[] = "[5956641.372709688, 3439068.5, 0]";  // 6878137 (cos 30, sin 30, 0)
+constexpr char kAntapex[] = "[-5956641.372709688, -3439068.5, 0]";
+
+TEST(ToolDensity, ApexAt500KmIsTheTableMaximum) {
+  const auto run = visors::test::run_tool("density", input("harris-priester", kApex));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // M&G Table 3.8, 500 km: rho_M = 2.042e-12 kg/m^3 (JSON text round trip: a few ulp).
+  EXPECT_NEAR(run.json()["density"].get<double>(), 2.042e-12, 1e-26);
+  EXPECT_NEAR(run.json()["height_m"].get<double>(), 500e3, 1e-9);
+}
+
+TEST(ToolDensity, AntapexAt500KmIsTheTableMinimum) {
+  const auto run = visors::test::run_tool("density", input("harris-priester", kAntapex));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NEAR(run.json()["density"].get<double>(), 3.916e-13, 1e-26);  // M&G Table 3.8, 500 km
+}
+
+TEST(ToolDensity, MaximumModelIsTheMaximumAtTheAntapex) {
+  const auto run = visors::test::run_tool("density", input("harris-priester-max", kAntapex));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NEAR(run.json()["density"].get<double>(), 2.042e-12, 1e-26);  // M&G Table 3.8, 500 km
+}
+
+TEST(ToolDensity, ItrfDerivedFromTimeWhenAbsent) {
+  // Over the GCRF north pole (|r| = b + 500 km): the CIP is ~2.4e-3 rad off the GCRF pole in
+  // 2024, so in ITRF the point is ~16 km off the axis and its height stays 500 km to < 1 m.
+  // 90 deg from the equatorial bulge apex, n = 6: rho_m + (rho_M - rho_m)/8 (M&G Table 3.8).
+  const auto run = visors::test::run_tool(
+      "density",
+      R"({"model":"harris-priester","r_gcrf":[0,0,6856752.314245],"sun_gcrf":[1.495978707e11,0,0],)"
+      R"("f107":150,"time":"2024-10-01T00:00:00"})");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NEAR(run.json()["height_m"].get<double>(), 500e3, 1.0);
+  EXPECT_NEAR(run.json()["density"].get<double>(), 3.916e-13 + (2.042e-12 - 3.916e-13) / 8.0, 1e-15);
+}
+
+TEST(ToolDensity, UnknownModelExitCode2NamesField) {
+  const auto run = visors::test::run_tool("density", input("jacchia", kApex));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("model"), std::string::npos) << run.err;
+}
+
+TEST(ToolDensity, MissingPositionExitCode2NamesField) {
+  const auto run = visors::test::run_tool(
+      "density", R"({"model":"harris-priester","sun_gcrf":[1.5e11,0,0],"f107":150})");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("r_gcrf"), std::string::npos) << run.err;
+}
+
+TEST(ToolDensity, NonFiniteExitCode2NamesField) {
+  // JSON has no non-finite numbers: the NaN literal some writers emit is rejected by the parser,
+  // whose message quotes the text read up to the error.
+  const auto nan = visors::test::run_tool("density", input("harris-priester", "[NaN, 0, 0]"));
+  EXPECT_EQ(nan.exit_code, 2);
+  EXPECT_NE(nan.err.find("r_gcrf"), std::string::npos) << nan.err;
+  // Finite components whose norm overflows.
+  const auto huge =
+      visors::test::run_tool("density", input("harris-priester", "[1e300, 1e300, 1e300]"));
+  EXPECT_EQ(huge.exit_code, 2);
+  EXPECT_NE(huge.err.find("r_gcrf"), std::string::npos) << huge.err;
+  // A non-number element.
+  const auto text = visors::test::run_tool("density", input("harris-priester", R"(["nan", 0, 0])"));
+  EXPECT_EQ(text.exit_code, 2);
+  EXPECT_NE(text.err.find("r_gcrf[0]"), std::string::npos) << text.err;
+}
+
+TEST(ToolDensity, ZeroPositionExitCode2NamesField) {
+  const auto run = visors::test::run_tool("density", input("harris-priester", "[0, 0, 0]"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("r_gcrf"), std::string::npos) << run.err;
+}
+
+TEST(ToolDensity, BadExponentExitCode2NamesField) {
+  const auto run = visors::test::run_tool(
+      "density",
+      R"({"model":"harris-priester","r_gcrf":[6878137,0,0],"sun_gcrf":[1.5e11,0,0],"f107":150,)"
+      R"("exponent":-1})");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("exponent"), std::string::npos) << run.err;
+}
+
+}  // namespace

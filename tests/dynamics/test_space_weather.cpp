@@ -1,0 +1,156 @@
+// CelesTrak space-weather CSV: NRLMSISE-00 convention at the mission epoch and the October 2024
+// storm (SOURCES.md sec. 2), range and format errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include "core/data_path.hpp"
+#include "core/gps_time.hpp"
+#include "dynamics/space_weather.hpp"
+
+namespace {
+
+using visors::core::GpsTime;
+using visors::core::TimeScale;
+using visors::dynamics::SpaceWeatherTable;
+
+constexpr char kFile[] = "space_weather/SW-Observed_2024-07-01_2025-01-31.csv";
+
+GpsTime utc(const char* iso) { return *GpsTime::parse(iso, TimeScale::kUtc); }
+
+class SpaceWeatherFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto path = visors::core::find_data_file(kFile);
+    if (!path) GTEST_SKIP() << kFile << " not found: set VISORS_DATA_PATH to the shared data folder";
+    auto table = SpaceWeatherTable::load(*path);
+    ASSERT_TRUE(table.ok()) << table.error().describe();
+    table_ = std::move(table).value();
+  }
+  std::optional<SpaceWeatherTable> table_;
+};
+
+TEST_F(SpaceWeatherFile, CoversThe215Days) {
+  EXPECT_EQ(table_->size(), 215u);        // SOURCES.md sec. 2: 215 days
+  EXPECT_EQ(table_->first_mjd(), 60492);  // 2024-07-01
+  EXPECT_EQ(table_->last_mjd(), 60706);   // 2025-01-31
+}
+
+TEST_F(SpaceWeatherFile, MissionEpochCentredMeanAndAp) {
+  // SOURCES.md sec. 2: 2024-10-01 centred-81 F10.7 215.3, Ap 5.
+  const auto a = table_->at(utc("2024-10-01T12:00:00"));
+  ASSERT_TRUE(a.ok()) << a.error().describe();
+  EXPECT_EQ(a->f107a, 215.3);
+  EXPECT_EQ(a->ap, 5.0);
+}
+
+TEST_F(SpaceWeatherFile, F107IsThePreviousDaysObservedValue) {
+  // SOURCES.md sec. 2: F10.7_obs 244.6 on 2024-10-01, so f107 = 244.6 during 2024-10-02 UTC.
+  EXPECT_EQ(table_->at(utc("2024-10-02T00:00:00"))->f107, 244.6);
+  EXPECT_EQ(table_->at(utc("2024-10-02T23:59:59.999"))->f107, 244.6);
+  // ... and on 2024-10-01 the 2024-09-30 value (file row 2024-09-30: F10.7_OBS 214.2).
+  EXPECT_EQ(table_->at(utc("2024-10-01T00:00:00"))->f107, 214.2);
+}
+
+TEST_F(SpaceWeatherFile, StormDaysDailyAp) {
+  // SOURCES.md sec. 2: daily Ap 97 on 2024-10-10 and 116 on 2024-10-11.
+  EXPECT_EQ(table_->at(utc("2024-10-10T06:00:00"))->ap, 97.0);
+  EXPECT_EQ(table_->at(utc("2024-10-11T18:00:00"))->ap, 116.0);
+}
+
+TEST_F(SpaceWeatherFile, ThreeHourlyApOfTheCurrentInterval) {
+  // File row 2024-10-10: AP1..AP8 = 7,12,5,12,22,179,236,300.
+  EXPECT_EQ(*table_->ap_3hourly(utc("2024-10-10T00:00:00")), 7.0);
+  EXPECT_EQ(*table_->ap_3hourly(utc("2024-10-10T17:59:59")), 179.0);
+  EXPECT_EQ(*table_->ap_3hourly(utc("2024-10-10T21:00:00")), 300.0);
+}
+
+TEST_F(SpaceWeatherFile, OutsideTheRangeIsAnErrorNamingTheRange) {
+  const auto before = table_->at(utc("2024-07-01T12:00:00"));  // no previous day for f107
+  ASSERT_FALSE(before.ok());
+  EXPECT_EQ(before.error().field, "t");
+  EXPECT_NE(before.error().message.find("2024-07-02T00:00:00 .. 2025-01-31T24:00:00"),
+            std::string::npos)
+      << before.error().message;
+  EXPECT_FALSE(table_->at(utc("2025-02-01T00:00:00")).ok());
+  EXPECT_TRUE(table_->at(utc("2025-01-31T23:59:59")).ok());
+  EXPECT_TRUE(table_->ap_3hourly(utc("2024-07-01T00:00:00")).ok());
+}
+
+class TempCsv {
+ public:
+  explicit TempCsv(const std::string& text)
+      : path_(std::filesystem::temp_directory_path() /
+              ("visors_sw_test_" + std::to_string(counter_++) + ".csv")) {
+    std::ofstream(path_) << text;
+  }
+  ~TempCsv() { std::filesystem::remove(path_); }
+  TempCsv(const TempCsv&) = delete;
+  TempCsv& operator=(const TempCsv&) = delete;
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+ private:
+  static inline int counter_ = 0;
+  std::filesystem::path path_;
+};
+
+// A reordered header (columns are found by name) and two rows.
+constexpr char kHeader[] = "AP_AVG,DATE,F10.7_OBS_CENTER81,AP1,AP2,AP3,AP4,AP5,AP6,AP7,AP8,F10.7_OBS\n";
+constexpr char kRow1[] = "5,2024-10-01,215.3,5,7,5,3,4,7,5,4,244.6\n";
+
+TEST(SpaceWeatherReader, ColumnsAreFoundByName) {
+  const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-02,214.7,7,6,6,5,7,3,5,4,274.4\n");
+  const auto t = SpaceWeatherTable::load(f.path());
+  ASSERT_TRUE(t.ok()) << t.error().describe();
+  const auto a = t->at(utc("2024-10-02T12:00:00"));
+  ASSERT_TRUE(a.ok()) << a.error().describe();
+  EXPECT_EQ(a->f107, 244.6);
+  EXPECT_EQ(a->f107a, 214.7);
+  EXPECT_EQ(*t->ap_3hourly(utc("2024-10-02T03:00:00")), 6.0);
+}
+
+TEST(SpaceWeatherReader, MalformedNumberNamesLineAndColumn) {
+  const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-02,214.7,7,6,6,5,7,3,5,4,27x4.4\n");
+  const auto t = SpaceWeatherTable::load(f.path());
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error().field, "line 3");
+  EXPECT_NE(t.error().message.find("F10.7_OBS"), std::string::npos) << t.error().message;
+}
+
+TEST(SpaceWeatherReader, BlankFieldIsRejected) {
+  const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-02,214.7,7,6,6,5,,3,5,4,274.4\n");
+  const auto t = SpaceWeatherTable::load(f.path());
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error().field, "line 3");
+  EXPECT_NE(t.error().message.find("AP5"), std::string::npos) << t.error().message;
+}
+
+TEST(SpaceWeatherReader, MissingDayIsRejected) {
+  const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-03,214.7,7,6,6,5,7,3,5,4,274.4\n");
+  const auto t = SpaceWeatherTable::load(f.path());
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error().field, "line 3");
+  EXPECT_NE(t.error().message.find("DATE"), std::string::npos) << t.error().message;
+}
+
+TEST(SpaceWeatherReader, BadDateIsRejected) {
+  const TempCsv f(std::string(kHeader) + "5,2024-13-01,215.3,5,7,5,3,4,7,5,4,244.6\n");
+  EXPECT_EQ(SpaceWeatherTable::load(f.path()).error().field, "line 2");
+}
+
+TEST(SpaceWeatherReader, MissingColumnIsNamed) {
+  const TempCsv f("DATE,F10.7_OBS\n2024-10-01,244.6\n");
+  const auto t = SpaceWeatherTable::load(f.path());
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error().field, "line 1");
+  EXPECT_NE(t.error().message.find("F10.7_OBS_CENTER81"), std::string::npos) << t.error().message;
+}
+
+TEST(SpaceWeatherReader, MissingFileIsAnError) {
+  EXPECT_FALSE(SpaceWeatherTable::load("/nonexistent/sw.csv").ok());
+}
+
+}  // namespace
