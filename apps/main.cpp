@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "preview/preview_command.hpp"
+#include "propagate/propagate_command.hpp"
 #include "tools/tool.hpp"
 
 namespace {
@@ -77,6 +78,15 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   preview->add_option("--out", out_dir, "output folder")->capture_default_str();
 
+  std::string propagate_scenario = "scenarios/propagate_chief.toml";
+  std::string propagate_out = "out/propagate";
+  auto* propagate = app.add_subcommand(
+      "propagate", "propagate one spacecraft with a force model; ephemeris as CSV and CCSDS OEM");
+  propagate->add_option("scenario", propagate_scenario,
+                        "scenario TOML (a path, or relative to VISORS_DATA_PATH and data/)")
+      ->capture_default_str();
+  propagate->add_option("--out", propagate_out, "output folder")->capture_default_str();
+
   app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors 0.1.0\n"); });
 
   try {
@@ -86,5 +96,8 @@ int main(int argc, char** argv) {
   }
   if (tool->parsed()) return run_tool(tool_name);
   if (preview->parsed()) return visors::preview::run_preview_command(scenario, out_dir);
+  if (propagate->parsed()) {
+    return visors::propagate::run_propagate_command(propagate_scenario, propagate_out);
+  }
   return 0;
 }

@@ -1,0 +1,141 @@
+#include "propagate/propagate_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "astro/keplerian_elements.hpp"
+#include "core/constants.hpp"
+#include "core/data_path.hpp"
+#include "dynamics/ephemeris_file.hpp"
+#include "dynamics/force_model.hpp"
+#include "dynamics/orbit_propagator.hpp"
+#include "propagate/propagate_scenario.hpp"
+
+namespace visors::propagate {
+namespace {
+
+constexpr int kExitBadInput = 2;
+
+std::vector<core::GpsTime> output_times(const PropagateScenario& s) {
+  std::vector<core::GpsTime> times;
+  const auto n = static_cast<std::int64_t>(std::floor(s.duration / s.output_step + 1e-9));
+  times.reserve(static_cast<std::size_t>(n) + 2);
+  for (std::int64_t k = 0; k <= n; ++k) times.push_back(s.epoch + static_cast<double>(k) * s.output_step);
+  const core::GpsTime end = s.epoch + s.duration;
+  if (times.back() < end) times.push_back(end);
+  return times;
+}
+
+core::GpsTime wall_clock_now() {
+  const auto since_unix = std::chrono::system_clock::now().time_since_epoch();
+  // Unix epoch 1970-01-01 is 315964800 s before the GPS epoch, plus the leap seconds since.
+  const double unix_s = std::chrono::duration<double>(since_unix).count();
+  const core::GpsTime approx = core::GpsTime::from_seconds(unix_s - 315964800.0);
+  return approx + static_cast<double>(approx.gps_minus_utc());
+}
+
+nlohmann::json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+int run_propagate_command(const std::string& scenario_path, const std::string& out_dir) {
+  const auto path = core::find_data_file(scenario_path);
+  if (!path) {
+    fmt::print(stderr, "visors propagate: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n",
+               scenario_path);
+    return kExitBadInput;
+  }
+  auto scenario = load_propagate_scenario(*path);
+  if (!scenario) {
+    fmt::print(stderr, "visors propagate: {}: {}\n", path->string(), scenario.error().describe());
+    return kExitBadInput;
+  }
+  const PropagateScenario& s = scenario.value();
+  auto forces = dynamics::ForceModel::create(s.forces, s.spacecraft);
+  if (!forces) {
+    fmt::print(stderr, "visors propagate: forces.{}\n", forces.error().describe());
+    return kExitBadInput;
+  }
+  dynamics::ForceModel model = std::move(forces).value();
+  for (const auto& w : model.warnings()) fmt::print(stderr, "visors propagate: warning: {}\n", w);
+  auto propagator = dynamics::OrbitPropagator::create(model, s.propagator);
+  if (!propagator) {
+    fmt::print(stderr, "visors propagate: propagation.{}\n", propagator.error().describe());
+    return kExitBadInput;
+  }
+  dynamics::OrbitPropagator orbit = std::move(propagator).value();
+  const std::vector<core::GpsTime> times = output_times(s);
+  std::vector<dynamics::EphemerisRecord> records;
+  records.reserve(times.size());
+  const auto start = std::chrono::steady_clock::now();
+  auto final_state = orbit.propagate(
+      s.epoch, s.initial_gcrf, times, s.maneuvers,
+      [&records](core::GpsTime t, const core::StateVector& x) { records.push_back({t, x}); });
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!final_state) {
+    fmt::print(stderr, "visors propagate: {}\n", final_state.error().describe());
+    return kExitBadInput;
+  }
+
+  std::filesystem::create_directories(out_dir);
+  const std::filesystem::path dir(out_dir);
+  const auto csv_path = dir / (s.name + ".csv");
+  const auto oem_path = dir / (s.name + ".oem");
+  {
+    std::ofstream csv(csv_path);
+    dynamics::write_ephemeris_csv(csv, records);
+    std::ofstream oem(oem_path);
+    dynamics::write_oem(oem, records, {s.name, "UNKNOWN", "visors_gnc", wall_clock_now()});
+    if (!csv || !oem) {
+      fmt::print(stderr, "visors propagate: --out: cannot write to {}\n", out_dir);
+      return kExitBadInput;
+    }
+  }
+  std::vector<std::string> warnings = model.warnings();
+  if (model.space_weather_misses() > 0) {
+    warnings.push_back(fmt::format("forces.drag.space_weather: {} evaluations outside the table's dates used the "
+                                   "configured f107/f107a/ap", model.space_weather_misses()));
+  }
+  if (model.eop_misses() > 0) {
+    warnings.push_back(fmt::format("forces.earth_frame.eop: {} lookups outside the table's dates kept the last values",
+                                   model.eop_misses()));
+  }
+  for (std::size_t k = model.warnings().size(); k < warnings.size(); ++k) {
+    fmt::print(stderr, "visors propagate: warning: {}\n", warnings[k]);
+  }
+  const core::StateVector& xf = final_state.value();
+  auto elements = astro::cartesian_to_keplerian(xf.r, xf.v, model.gm());
+  if (!elements) {
+    fmt::print(stderr, "visors propagate: final state is not a bound orbit ({})\n", elements.error().describe());
+    return kExitBadInput;
+  }
+  const astro::KeplerianElements& kf = elements.value();
+  const auto& stats = orbit.stats();
+  nlohmann::json summary = {
+      {"records", records.size()},
+      {"final_time_utc", (s.epoch + s.duration).format(core::TimeScale::kUtc, 6)},
+      {"final_r_gcrf", vector_json(xf.r)},
+      {"final_v_gcrf", vector_json(xf.v)},
+      {"final_osculating", {{"a_m", kf.a}, {"e", kf.e}, {"i_deg", kf.i / core::kDegToRad},
+                            {"raan_deg", kf.raan / core::kDegToRad}, {"argp_deg", kf.argp / core::kDegToRad},
+                            {"M_deg", kf.M / core::kDegToRad}}},
+      {"steps", stats.steps},
+      {"force_evaluations", stats.evaluations},
+      {"wall_time_s", wall_s},
+      {"warnings", warnings},
+      {"csv", csv_path.string()},
+      {"oem", oem_path.string()}};
+  std::ofstream(dir / "summary.json") << summary.dump(2) << '\n';
+  fmt::print("{}: {} records over {:.1f} s, {} steps, {} force evaluations, {:.1f} ms\n", s.name,
+             records.size(), s.duration, stats.steps, stats.evaluations, 1e3 * wall_s);
+  fmt::print("final osculating a {:.3f} m, e {:.6f}, i {:.4f} deg; written {} and {}\n", kf.a, kf.e,
+             kf.i / core::kDegToRad, csv_path.string(), oem_path.string());
+  return 0;
+}
+
+}  // namespace visors::propagate

@@ -1,0 +1,176 @@
+#include "dynamics/force_model.hpp"
+
+#include <cassert>
+#include <cmath>
+
+#include "astro/sun_moon.hpp"
+#include "core/data_path.hpp"
+#include "core/rtn_frame.hpp"
+#include "dynamics/drag.hpp"
+#include "dynamics/harris_priester.hpp"
+#include "dynamics/solar_radiation_pressure.hpp"
+#include "dynamics/third_body.hpp"
+
+namespace visors::dynamics {
+namespace {
+
+using core::Error;
+
+Error nested(const std::string& section, const Error& e) {
+  return {e.field.empty() ? section : section + "." + e.field, e.message};
+}
+
+core::Result<GravityField> gravity_field_for(const GravityConfig& config, std::vector<std::string>& warnings) {
+  auto field = load_gravity_field(config.model, config.degree);
+  if (field) return field;
+  if (!config.allow_embedded_fallback) return nested("gravity.model", field.error());
+  GravityField embedded = embedded_gravity_field();
+  warnings.push_back("gravity.model: " + field.error().describe() + "; using the embedded degree-" +
+                     std::to_string(embedded.max_degree) + " field");
+  return embedded;
+}
+
+core::Result<std::unique_ptr<AtmosphereModel>> atmosphere_for(const DragConfig& config) {
+  HarrisPriesterSettings settings;
+  settings.cosine_exponent = config.cosine_exponent;
+  settings.density_scale = config.density_scale;
+  settings.bulge = config.atmosphere == AtmosphereKind::kHarrisPriesterMaximum ? HarrisPriesterBulge::kApexMaximum
+                                                                               : HarrisPriesterBulge::kDiurnal;
+  auto hp = HarrisPriesterAtmosphere::create(settings);
+  if (!hp) return nested("drag", hp.error());
+  return std::unique_ptr<AtmosphereModel>(std::make_unique<HarrisPriesterAtmosphere>(std::move(hp).value()));
+}
+
+}  // namespace
+
+ForceModel::ForceModel(ForceModel&&) noexcept = default;
+ForceModel& ForceModel::operator=(ForceModel&&) noexcept = default;
+ForceModel::~ForceModel() = default;
+
+core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, const SpacecraftProperties& spacecraft) {
+  const std::pair<const char*, double> positive[] = {{"spacecraft.mass", spacecraft.mass},
+                                                     {"spacecraft.drag_area", spacecraft.drag_area},
+                                                     {"spacecraft.cd", spacecraft.cd},
+                                                     {"spacecraft.srp_area", spacecraft.srp_area},
+                                                     {"spacecraft.cr", spacecraft.cr}};
+  for (const auto& [field, value] : positive) {
+    if (!(value > 0.0) || !std::isfinite(value)) return Error{field, "must be a finite number > 0"};
+  }
+  if (!config.empirical_rtn.allFinite()) return Error{"empirical_rtn", "must be finite"};
+  ForceModel model;
+  model.config_ = config;
+  model.spacecraft_ = spacecraft;
+
+  auto field = gravity_field_for(config.gravity, model.warnings_);
+  if (!field) return field.error();
+  const int degree = std::min(config.gravity.degree, field.value().max_degree);
+  const int order = std::min(config.gravity.order, degree);
+  if (degree < config.gravity.degree) {
+    model.warnings_.push_back("gravity.degree: truncated to " + std::to_string(degree) +
+                              ", the maximum of the field in use");
+  }
+  auto gravity = SphericalHarmonicGravity::create(field.value(), degree, order);
+  if (!gravity) return nested("gravity", gravity.error());
+  model.gm_ = gravity.value().gm();
+  model.radius_ = gravity.value().radius();
+  model.gravity_.emplace(std::move(gravity).value());
+
+  if (config.drag.enabled) {
+    auto atmosphere = atmosphere_for(config.drag);
+    if (!atmosphere) return atmosphere.error();
+    model.atmosphere_ = std::move(atmosphere).value();
+    if (!config.drag.space_weather.empty()) {
+      const auto path = core::find_data_file(config.drag.space_weather);
+      if (!path) return Error{"drag.space_weather", "'" + config.drag.space_weather + "' not found"};
+      auto table = SpaceWeatherTable::load(*path);
+      if (!table) return nested("drag.space_weather", table.error());
+      model.space_weather_.emplace(std::move(table).value());
+    }
+  }
+  if (!config.earth_frame.eop.empty()) {
+    const auto path = core::find_data_file(config.earth_frame.eop);
+    if (path) {
+      auto table = core::EopTable::load(*path);
+      if (!table) return nested("earth_frame.eop", table.error());
+      model.eop_table_.emplace(std::move(table).value());
+    } else {
+      model.warnings_.push_back("earth_frame.eop: '" + config.earth_frame.eop +
+                                "' not found; zero polar motion and UT1-UTC");
+    }
+  }
+  model.earth_frame_ = core::OnboardEarthFrame({}, config.earth_frame.refresh_interval);
+  return model;
+}
+
+// EOP from the table once per frame refresh (they change by < 1 mas and 1 ms per day); outside
+// the table's range the last values are kept, with zero EOP before the first lookup.
+void ForceModel::refresh_earth_orientation(core::GpsTime t) {
+  if (!eop_table_) return;
+  if (eop_epoch_ && std::abs(t.seconds_since(*eop_epoch_)) < config_.earth_frame.refresh_interval) return;
+  eop_epoch_ = t;
+  auto eop = eop_table_->at(t);
+  if (eop) {
+    eop_ = eop.value();
+    earth_frame_.set_earth_orientation(eop_);
+  } else {
+    ++eop_misses_;
+  }
+}
+
+Eigen::Vector3d ForceModel::acceleration(core::GpsTime t, const core::StateVector& x_gcrf) {
+  return acceleration_terms(t, x_gcrf).total();
+}
+
+AccelerationTerms ForceModel::acceleration_terms(core::GpsTime t, const core::StateVector& x_gcrf) {
+  AccelerationTerms terms;
+  refresh_earth_orientation(t);
+  const Eigen::Matrix3d gcrf_to_itrf = earth_frame_.gcrf_to_itrf_matrix(t);
+  const Eigen::Vector3d r_itrf = gcrf_to_itrf * x_gcrf.r;
+  terms.gravity = gcrf_to_itrf.transpose() * gravity_->acceleration(r_itrf);
+
+  const bool need_sun = config_.sun || config_.srp.enabled || atmosphere_ != nullptr;
+  const Eigen::Vector3d sun_gcrf = need_sun ? astro::sun_position_gcrf(t) : Eigen::Vector3d::Zero();
+  if (atmosphere_ != nullptr) {
+    AtmosphereQuery query{t, x_gcrf.r, r_itrf, sun_gcrf, config_.drag.activity};
+    if (space_weather_) {
+      auto activity = space_weather_->at(t);
+      if (activity) {
+        query.activity = activity.value();
+      } else {
+        ++space_weather_misses_;
+      }
+    }
+    terms.density = atmosphere_->density(query);
+    const Eigen::Vector3d omega_gcrf =
+        gcrf_to_itrf.transpose() * Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop_));
+    terms.drag = drag_acceleration(x_gcrf, terms.density, spacecraft_.cd, spacecraft_.drag_area,
+                                   spacecraft_.mass, omega_gcrf);
+  }
+  if (config_.srp.enabled) {
+    switch (config_.srp.shadow) {
+      case ShadowModel::kNone: terms.shadow = 1.0; break;
+      case ShadowModel::kCylindrical: terms.shadow = cylindrical_shadow(x_gcrf.r, sun_gcrf, radius_); break;
+      case ShadowModel::kConical: terms.shadow = conical_shadow(x_gcrf.r, sun_gcrf, radius_); break;
+    }
+    terms.srp = srp_acceleration(x_gcrf.r, sun_gcrf, terms.shadow, config_.srp.pressure_1au, spacecraft_.cr,
+                                 spacecraft_.srp_area, spacecraft_.mass);
+  }
+  if (config_.sun) terms.sun = third_body_acceleration(x_gcrf.r, sun_gcrf, kGmSun);
+  if (config_.moon) terms.moon = third_body_acceleration(x_gcrf.r, astro::moon_position_gcrf(t), kGmMoon);
+  if (!config_.empirical_rtn.isZero()) {
+    terms.empirical = core::gcrf_to_rtn_matrix(x_gcrf).transpose() * config_.empirical_rtn;
+  }
+  return terms;
+}
+
+void ForceModel::set_drag_area(double area_m2) {
+  assert(area_m2 > 0.0);
+  spacecraft_.drag_area = area_m2;
+}
+
+void ForceModel::set_empirical_acceleration_rtn(const Eigen::Vector3d& a_rtn) {
+  assert(a_rtn.allFinite());
+  config_.empirical_rtn = a_rtn;
+}
+
+}  // namespace visors::dynamics

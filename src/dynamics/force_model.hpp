@@ -1,0 +1,92 @@
+#pragma once
+// The orbit force model of one spacecraft: spherical-harmonic gravity in the Earth-fixed frame,
+// drag in a co-rotating atmosphere, solar radiation pressure with shadow, Sun and Moon as point
+// masses and an empirical RTN acceleration, summed in GCRF. Built once from a ForceModelConfig
+// (files are read in create()); evaluation allocates nothing.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/earth_frames.hpp"
+#include "core/eop.hpp"
+#include "core/gps_time.hpp"
+#include "core/state_vector.hpp"
+#include "core/status.hpp"
+#include "dynamics/atmosphere.hpp"
+#include "dynamics/force_model_config.hpp"
+#include "dynamics/space_weather.hpp"
+#include "dynamics/spherical_harmonic_gravity.hpp"
+
+namespace visors::dynamics {
+
+/// Each term of the acceleration, GCRF [m/s^2]; `gravity` includes the central term.
+struct AccelerationTerms {
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d drag = Eigen::Vector3d::Zero();
+  Eigen::Vector3d srp = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sun = Eigen::Vector3d::Zero();
+  Eigen::Vector3d moon = Eigen::Vector3d::Zero();
+  Eigen::Vector3d empirical = Eigen::Vector3d::Zero();
+  double density = 0.0;  // [kg/m^3]
+  double shadow = 1.0;   // illumination factor nu [-]
+
+  [[nodiscard]] Eigen::Vector3d total() const { return gravity + drag + srp + sun + moon + empirical; }
+};
+
+class ForceModel {
+ public:
+  /// Loads the gravity field, atmosphere tables, space weather and EOP named by `config`; an
+  /// error names the configuration field. Warnings (e.g. embedded gravity fallback) are kept.
+  static core::Result<ForceModel> create(const ForceModelConfig& config,
+                                         const SpacecraftProperties& spacecraft);
+
+  ForceModel(ForceModel&&) noexcept;
+  ForceModel& operator=(ForceModel&&) noexcept;
+  ~ForceModel();
+
+  /// Total acceleration, GCRF [m/s^2]. Not const: caches (frame, gravity workspace).
+  Eigen::Vector3d acceleration(core::GpsTime t, const core::StateVector& x_gcrf);
+  /// The same split by term (for reports and the differential-acceleration analysis).
+  AccelerationTerms acceleration_terms(core::GpsTime t, const core::StateVector& x_gcrf);
+
+  /// Attitude-dependent cross-section [m^2]; must be > 0 (asserted, validated by callers).
+  void set_drag_area(double area_m2);
+  void set_empirical_acceleration_rtn(const Eigen::Vector3d& a_rtn);
+
+  [[nodiscard]] const ForceModelConfig& config() const { return config_; }
+  [[nodiscard]] const SpacecraftProperties& spacecraft() const { return spacecraft_; }
+  /// GM and reference radius of the loaded gravity field.
+  [[nodiscard]] double gm() const { return gm_; }
+  [[nodiscard]] double earth_radius() const { return radius_; }
+  [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
+  /// Evaluations at times outside the space-weather table (the configured constant activity was
+  /// used) and EOP lookups outside the EOP table (the last values were kept).
+  [[nodiscard]] std::int64_t space_weather_misses() const { return space_weather_misses_; }
+  [[nodiscard]] std::int64_t eop_misses() const { return eop_misses_; }
+
+ private:
+  ForceModel() = default;
+  void refresh_earth_orientation(core::GpsTime t);
+
+  ForceModelConfig config_;
+  SpacecraftProperties spacecraft_;
+  double gm_ = 0.0;
+  double radius_ = 0.0;
+  std::optional<SphericalHarmonicGravity> gravity_;
+  std::unique_ptr<AtmosphereModel> atmosphere_;
+  std::optional<SpaceWeatherTable> space_weather_;
+  std::optional<core::EopTable> eop_table_;
+  std::optional<core::GpsTime> eop_epoch_;
+  core::EarthOrientation eop_;
+  core::OnboardEarthFrame earth_frame_;
+  std::vector<std::string> warnings_;
+  std::int64_t space_weather_misses_ = 0;
+  std::int64_t eop_misses_ = 0;
+};
+
+}  // namespace visors::dynamics

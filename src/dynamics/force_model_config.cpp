@@ -1,0 +1,24 @@
+#include "dynamics/force_model_config.hpp"
+
+namespace visors::dynamics {
+
+ForceModelConfig ForceModelConfig::truth() {
+  ForceModelConfig c;
+  c.gravity = {"gravity/GGM05S_d90.gfc", 60, 60, true};
+  c.drag.atmosphere = AtmosphereKind::kHarrisPriesterMaximum;
+  c.drag.space_weather = "space_weather/SW-Observed_2024-07-01_2025-01-31.csv";
+  c.srp.shadow = ShadowModel::kConical;
+  c.earth_frame = {"eop/finals2000A_2024-07-01_2025-01-31.txt", 60.0};
+  return c;
+}
+
+ForceModelConfig ForceModelConfig::onboard() {
+  ForceModelConfig c;
+  c.gravity = {"gravity/GGM01S.gfc", 20, 20, true};
+  c.drag.atmosphere = AtmosphereKind::kHarrisPriester;
+  c.drag.activity = {150.0, 150.0, 15.0};  // mean solar activity: the Harris-Priester table's level
+  c.earth_frame = {"", 600.0};
+  return c;
+}
+
+}  // namespace visors::dynamics
