@@ -1,37 +1,14 @@
 // solve() allocates nothing (issue 4, CONTRIBUTING "Memory"): this file replaces the global
-// operator new of the test_optim executable with a counting one and checks that no allocation
-// happens between the start and the end of solve(), on an SOCP of the planner's shape, a QP, and
-// an LP that exercises the dense-LU fallback of the KKT solve.
+// operator new of the test_optim executable with a counting one (support/counting_new.hpp) and
+// checks that no allocation happens between the start and the end of solve(), on an SOCP of the
+// planner's shape, a QP, and an LP that exercises the dense-LU fallback of the KKT solve.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <random>
 
 #include "optim/conic_solver.hpp"
 #include "optim/minimum_fuel_problem.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-std::atomic<bool> g_counting{false};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (g_counting.load()) ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return ::operator new(size); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  if (g_counting.load()) ++g_allocations;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return ::operator new(size, tag); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#include "support/counting_new.hpp"
 
 namespace {
 
@@ -42,13 +19,11 @@ using visors::optim::ConicSolver;
 using visors::optim::ConicStatus;
 
 long allocations_during_solve(ConicSolver& solver, const ConicProblem& problem, ConicStatus* status, int* fallbacks) {
-  g_allocations = 0;
-  g_counting = true;
-  const auto info = solver.solve(problem);
-  g_counting = false;
-  *status = info.ok() ? info->status : ConicStatus::numerical_error;
-  *fallbacks = info.ok() ? info->dense_fallbacks : 0;
-  return g_allocations.load();
+  return visors::test::count_allocations([&] {
+    const auto info = solver.solve(problem);
+    *status = info.ok() ? info->status : ConicStatus::numerical_error;
+    *fallbacks = info.ok() ? info->dense_fallbacks : 0;
+  });
 }
 
 // The harness sees allocations: setting a solver up allocates its workspace.
@@ -56,12 +31,10 @@ TEST(ConicAllocation, CounterSeesSetupAllocations) {
   ConicDimensions dims;
   dims.n = 4;
   dims.l = 4;
-  g_allocations = 0;
-  g_counting = true;
-  const auto created = ConicSolver::create(dims);
-  g_counting = false;
-  ASSERT_TRUE(created.ok());
-  EXPECT_GT(g_allocations.load(), 0);
+  bool ok = false;
+  const long allocations = visors::test::count_allocations([&] { ok = ConicSolver::create(dims).ok(); });
+  ASSERT_TRUE(ok);
+  EXPECT_GT(allocations, 0);
 }
 
 TEST(ConicAllocation, SolveOfPlannerSocpAllocatesNothing) {
