@@ -54,7 +54,9 @@ std::vector<Eigen::Vector3d> leo_positions() {
   return points;
 }
 
-void BM_OursAcceleration(benchmark::State& state) {
+// Our evaluation `call(gravity, r)` at degree = order = the benchmark argument.
+template <typename Call>
+void bench_ours(benchmark::State& state, Call call) {
   if (!ggm05s()) {
     state.SkipWithError(kMissing);
     return;
@@ -64,38 +66,24 @@ void BM_OursAcceleration(benchmark::State& state) {
   const std::vector<Eigen::Vector3d> points = leo_positions();
   std::size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(g.acceleration(points[i++ & 63]));
+    benchmark::DoNotOptimize(call(g, points[i++ & 63]));
   }
+}
+
+void BM_OursAcceleration(benchmark::State& state) {
+  bench_ours(state, [](SphericalHarmonicGravity& g, const Eigen::Vector3d& r) { return g.acceleration(r); });
 }
 BENCHMARK(BM_OursAcceleration)->Arg(20)->Arg(60)->Arg(90)->ComputeStatistics("min", minimum);
 
 void BM_OursAccelerationAndPotential(benchmark::State& state) {
-  if (!ggm05s()) {
-    state.SkipWithError(kMissing);
-    return;
-  }
-  const int n = static_cast<int>(state.range(0));
-  SphericalHarmonicGravity g = SphericalHarmonicGravity::create(*ggm05s(), n, n).value();
-  const std::vector<Eigen::Vector3d> points = leo_positions();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(g.acceleration_and_potential(points[i++ & 63]));
-  }
+  bench_ours(state, [](SphericalHarmonicGravity& g, const Eigen::Vector3d& r) {
+    return g.acceleration_and_potential(r);
+  });
 }
 BENCHMARK(BM_OursAccelerationAndPotential)->Arg(20)->Arg(60)->Arg(90)->ComputeStatistics("min", minimum);
 
 void BM_OursGradient(benchmark::State& state) {
-  if (!ggm05s()) {
-    state.SkipWithError(kMissing);
-    return;
-  }
-  const int n = static_cast<int>(state.range(0));
-  SphericalHarmonicGravity g = SphericalHarmonicGravity::create(*ggm05s(), n, n).value();
-  const std::vector<Eigen::Vector3d> points = leo_positions();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(g.gradient(points[i++ & 63]));
-  }
+  bench_ours(state, [](SphericalHarmonicGravity& g, const Eigen::Vector3d& r) { return g.gradient(r); });
 }
 BENCHMARK(BM_OursGradient)->Arg(20)->Arg(60)->Arg(90)->ComputeStatistics("min", minimum);
 

@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 
 #include "core/constants.hpp"
+#include "core/csv_file.hpp"
 #include "core/geodetic.hpp"
 
 namespace visors::dynamics {
@@ -78,38 +77,6 @@ constexpr std::array<Node, 50> kMontenbruckGillTable{{
     {1000.0, 1.150e-15, 1.810e-14},
 }};
 
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> split_csv(std::string_view line) {
-  std::vector<std::string_view> fields;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trimmed(line.substr(start, comma == std::string_view::npos ? std::string_view::npos
-                                                                                : comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return fields;
-}
-
-std::optional<double> parse_number(std::string_view text) {
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-    return std::nullopt;
-  }
-  return value;
-}
-
-core::Error line_error(std::size_t line_number, std::string message) {
-  return core::Error{"line " + std::to_string(line_number), std::move(message)};
-}
-
 std::string number_text(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", x);
@@ -172,56 +139,29 @@ core::Result<HarrisPriesterTable> read_harris_priester_table(const std::filesyst
                                                              double f107) {
   const auto level = check_f107(f107);
   if (!level.ok()) return level.error();
-  std::ifstream in(path);
-  if (!in) return core::Error{"", "cannot open Harris-Priester table '" + path.string() + "'"};
-
   constexpr std::array<std::string_view, 3> kColumns{"altitude_km", "rho_min_kg_per_m3",
                                                      "rho_max_kg_per_m3"};
-  std::array<std::size_t, 3> column{};
+  const auto rows = core::read_csv_columns(path, kColumns, "Harris-Priester table");
+  if (!rows.ok()) return rows.error();
   HarrisPriesterTable table;
   table.f107 = f107;
-  bool header_seen = false;
-  std::size_t field_count = 0;
-  std::string line;
-  std::size_t line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (trimmed(line).empty()) continue;
-    const std::vector<std::string_view> fields = split_csv(line);
-    if (!header_seen) {
-      for (std::size_t c = 0; c < kColumns.size(); ++c) {
-        const auto it = std::find(fields.begin(), fields.end(), kColumns[c]);
-        if (it == fields.end()) {
-          return line_error(line_number, "header lacks column '" + std::string(kColumns[c]) + "'");
-        }
-        column[c] = static_cast<std::size_t>(it - fields.begin());
-      }
-      field_count = fields.size();
-      header_seen = true;
-      continue;
-    }
-    if (fields.size() != field_count) {
-      return line_error(line_number, "has " + std::to_string(fields.size()) + " fields, the header " +
-                                         std::to_string(field_count));
-    }
+  for (const core::CsvRow& row : rows.value()) {
     std::array<double, 3> value{};
     for (std::size_t c = 0; c < kColumns.size(); ++c) {
-      const auto x = parse_number(fields[column[c]]);
+      const auto x = core::parse_finite_number(row.fields[c]);
       if (!x) {
-        return line_error(line_number, std::string(kColumns[c]) + ": '" +
-                                           std::string(fields[column[c]]) + "' is not a number");
+        return core::line_error(row.line, std::string(kColumns[c]) + ": '" + row.fields[c] + "' is not a number");
       }
       value[c] = *x;
     }
     const double height = value[0] * 1e3;  // [km] -> [m]
     const auto problem = node_problem(height, value[1], value[2],
                                       table.height_m.empty() ? nullptr : &table.height_m.back());
-    if (problem) return line_error(line_number, *problem);
+    if (problem) return core::line_error(row.line, *problem);
     table.height_m.push_back(height);
     table.rho_min.push_back(value[1]);
     table.rho_max.push_back(value[2]);
   }
-  if (!header_seen) return core::Error{"", "'" + path.string() + "' is empty"};
   if (table.height_m.size() < 2) {
     return core::Error{"", "'" + path.string() + "' needs at least 2 data rows"};
   }

@@ -10,6 +10,7 @@
 #include "core/constants.hpp"
 #include "core/data_path.hpp"
 #include "core/eop.hpp"
+#include "support/temp_file.hpp"
 
 namespace {
 
@@ -45,22 +46,17 @@ std::string finals_line(int yy, int mm, int dd, double mjd, double xp_as, double
   return buf;
 }
 
-class TempFile {
+// A temporary finals2000A file with the given lines.
+class TempFile : public visors::test::TempFile {
  public:
-  explicit TempFile(const std::vector<std::string>& lines)
-      : path_(std::filesystem::temp_directory_path() /
-              ("visors_eop_test_" + std::to_string(counter_++) + ".txt")) {
-    std::ofstream out(path_);
-    for (const auto& l : lines) out << l << '\n';
-  }
-  ~TempFile() { std::filesystem::remove(path_); }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  explicit TempFile(const std::vector<std::string>& lines) : visors::test::TempFile(joined(lines), ".txt") {}
 
  private:
-  static inline int counter_ = 0;
-  std::filesystem::path path_;
+  static std::string joined(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const auto& l : lines) text += l + '\n';
+    return text;
+  }
 };
 
 class EopFile : public ::testing::Test {

@@ -11,6 +11,7 @@
 #include "core/constants.hpp"
 #include "core/data_path.hpp"
 #include "dynamics/harris_priester.hpp"
+#include "support/temp_file.hpp"
 
 namespace {
 
@@ -241,21 +242,10 @@ TEST(HarrisPriester, CreateRejectsBadTables) {
 }
 
 // Reader errors, on temporary files.
-class TempCsv {
+// A temporary CSV file with the given text.
+class TempCsv : public visors::test::TempFile {
  public:
-  explicit TempCsv(const std::string& text)
-      : path_(std::filesystem::temp_directory_path() /
-              ("visors_hp_test_" + std::to_string(counter_++) + ".csv")) {
-    std::ofstream(path_) << text;
-  }
-  ~TempCsv() { std::filesystem::remove(path_); }
-  TempCsv(const TempCsv&) = delete;
-  TempCsv& operator=(const TempCsv&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  static inline int counter_ = 0;
-  std::filesystem::path path_;
+  explicit TempCsv(const std::string& text) : TempFile(text, ".csv") {}
 };
 
 constexpr char kHeader[] =

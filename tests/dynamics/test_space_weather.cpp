@@ -10,6 +10,7 @@
 #include "core/data_path.hpp"
 #include "core/gps_time.hpp"
 #include "dynamics/space_weather.hpp"
+#include "support/temp_file.hpp"
 
 namespace {
 
@@ -80,21 +81,10 @@ TEST_F(SpaceWeatherFile, OutsideTheRangeIsAnErrorNamingTheRange) {
   EXPECT_TRUE(table_->ap_3hourly(utc("2024-07-01T00:00:00")).ok());
 }
 
-class TempCsv {
+// A temporary CSV file with the given text.
+class TempCsv : public visors::test::TempFile {
  public:
-  explicit TempCsv(const std::string& text)
-      : path_(std::filesystem::temp_directory_path() /
-              ("visors_sw_test_" + std::to_string(counter_++) + ".csv")) {
-    std::ofstream(path_) << text;
-  }
-  ~TempCsv() { std::filesystem::remove(path_); }
-  TempCsv(const TempCsv&) = delete;
-  TempCsv& operator=(const TempCsv&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  static inline int counter_ = 0;
-  std::filesystem::path path_;
+  explicit TempCsv(const std::string& text) : TempFile(text, ".csv") {}
 };
 
 // A reordered header (columns are found by name) and two rows.

@@ -1,0 +1,38 @@
+#pragma once
+// Reading small reference tables in CSV with a header line (Harris-Priester densities, CelesTrak
+// space weather): the wanted columns are found by header name, so column order and extra columns
+// do not matter; blank lines are skipped; fields are trimmed of blanks. Ground-side file I/O:
+// models are built from the returned rows once, at start-up.
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/status.hpp"
+
+namespace visors::core {
+
+struct CsvRow {
+  std::size_t line = 0;             // 1-based line number in the file
+  std::vector<std::string> fields;  // the wanted columns, in the order they were asked for
+};
+
+/// All data rows of `path`, keeping the `columns` named in the header. `what` names the file's
+/// content in messages ("space-weather file"). Errors: the file cannot be opened or is empty, a
+/// column is missing ("line 1"), a row has a different number of fields than the header
+/// ("line N").
+Result<std::vector<CsvRow>> read_csv_columns(const std::filesystem::path& path,
+                                             std::span<const std::string_view> columns,
+                                             const std::string& what);
+
+/// A finite decimal number filling the whole field; nullopt otherwise (empty, trailing text, inf).
+std::optional<double> parse_finite_number(std::string_view text);
+
+/// The error for line `line` of a file: field "line N".
+Error line_error(std::size_t line, std::string message);
+
+}  // namespace visors::core
