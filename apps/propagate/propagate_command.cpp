@@ -98,7 +98,7 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
   }
   std::vector<std::string> warnings = model.warnings();
   if (model.space_weather_misses() > 0) {
-    warnings.push_back(fmt::format("forces.drag.space_weather: {} evaluations outside the table's dates used the "
+    warnings.push_back(fmt::format("forces.drag.space_weather: {} UTC days outside the table's dates used the "
                                    "configured f107/f107a/ap", model.space_weather_misses()));
   }
   if (model.eop_misses() > 0) {

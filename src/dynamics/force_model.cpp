@@ -81,10 +81,14 @@ core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, cons
     model.atmosphere_ = std::move(atmosphere).value();
     if (!config.drag.space_weather.empty()) {
       const auto path = core::find_data_file(config.drag.space_weather);
-      if (!path) return Error{"drag.space_weather", "'" + config.drag.space_weather + "' not found"};
-      auto table = SpaceWeatherTable::load(*path);
-      if (!table) return nested("drag.space_weather", table.error());
-      model.space_weather_.emplace(std::move(table).value());
+      if (path) {
+        auto table = SpaceWeatherTable::load(*path);
+        if (!table) return nested("drag.space_weather", table.error());
+        model.space_weather_.emplace(std::move(table).value());
+      } else {
+        model.warnings_.push_back("drag.space_weather: '" + config.drag.space_weather +
+                                  "' not found; constant f107/f107a/ap of the configuration");
+      }
     }
   }
   if (!config.earth_frame.eop.empty()) {
@@ -117,6 +121,24 @@ void ForceModel::refresh_earth_orientation(core::GpsTime t) {
   }
 }
 
+// Space weather is daily: it is looked up again only when t leaves the cached UTC day (a day
+// ending in a leap second is treated as 86400 s long, which moves one second to the next day).
+void ForceModel::refresh_solar_activity(core::GpsTime t) {
+  if (!space_weather_) return;
+  if (activity_day_start_ && t >= *activity_day_start_ && t.seconds_since(*activity_day_start_) < 86400.0) return;
+  core::CalendarTime midnight = t.calendar(core::TimeScale::kUtc);
+  midnight.hour = midnight.minute = midnight.second = 0;
+  midnight.nanosecond = 0;
+  activity_day_start_ = core::GpsTime::from_calendar(midnight, core::TimeScale::kUtc).value();
+  auto activity = space_weather_->at(t);
+  if (activity) {
+    activity_ = activity.value();
+  } else {
+    activity_ = config_.drag.activity;
+    ++space_weather_misses_;
+  }
+}
+
 Eigen::Vector3d ForceModel::acceleration(core::GpsTime t, const core::StateVector& x_gcrf) {
   return acceleration_terms(t, x_gcrf).total();
 }
@@ -131,15 +153,8 @@ AccelerationTerms ForceModel::acceleration_terms(core::GpsTime t, const core::St
   const bool need_sun = config_.sun || config_.srp.enabled || atmosphere_ != nullptr;
   const Eigen::Vector3d sun_gcrf = need_sun ? astro::sun_position_gcrf(t) : Eigen::Vector3d::Zero();
   if (atmosphere_ != nullptr) {
-    AtmosphereQuery query{t, x_gcrf.r, r_itrf, sun_gcrf, config_.drag.activity};
-    if (space_weather_) {
-      auto activity = space_weather_->at(t);
-      if (activity) {
-        query.activity = activity.value();
-      } else {
-        ++space_weather_misses_;
-      }
-    }
+    refresh_solar_activity(t);
+    const AtmosphereQuery query{t, x_gcrf.r, r_itrf, sun_gcrf, space_weather_ ? activity_ : config_.drag.activity};
     terms.density = atmosphere_->density(query);
     const Eigen::Vector3d omega_gcrf =
         gcrf_to_itrf.transpose() * Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop_));

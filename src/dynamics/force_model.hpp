@@ -64,14 +64,15 @@ class ForceModel {
   [[nodiscard]] double gm() const { return gm_; }
   [[nodiscard]] double earth_radius() const { return radius_; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
-  /// Evaluations at times outside the space-weather table (the configured constant activity was
-  /// used) and EOP lookups outside the EOP table (the last values were kept).
+  /// UTC days outside the space-weather table (the configured constant activity was used) and
+  /// EOP lookups outside the EOP table (the last values were kept).
   [[nodiscard]] std::int64_t space_weather_misses() const { return space_weather_misses_; }
   [[nodiscard]] std::int64_t eop_misses() const { return eop_misses_; }
 
  private:
   ForceModel() = default;
   void refresh_earth_orientation(core::GpsTime t);
+  void refresh_solar_activity(core::GpsTime t);
 
   ForceModelConfig config_;
   SpacecraftProperties spacecraft_;
@@ -80,6 +81,8 @@ class ForceModel {
   std::optional<SphericalHarmonicGravity> gravity_;
   std::unique_ptr<AtmosphereModel> atmosphere_;
   std::optional<SpaceWeatherTable> space_weather_;
+  SolarActivity activity_;                   // of the UTC day [activity_day_start_, +1 day)
+  std::optional<core::GpsTime> activity_day_start_;
   std::optional<core::EopTable> eop_table_;
   std::optional<core::GpsTime> eop_epoch_;
   core::EarthOrientation eop_;

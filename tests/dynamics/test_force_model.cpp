@@ -1,6 +1,7 @@
 // The assembled force model: configuration checks, term magnitudes, the truth/on-board model
 // mismatch and the differential accelerations between the two spacecraft (issue 3 acceptance).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -55,10 +56,25 @@ TEST(ForceModel, MissingGravityFileFallsBackToTheEmbeddedFieldWithAWarning) {
   EXPECT_NE(forces.warnings().front().find("embedded"), std::string::npos);
 }
 
-TEST(ForceModel, MissingSpaceWeatherFileIsAnError) {
+// Like the gravity and EOP files: a missing space-weather file is a recorded warning (the
+// configured constant activity is used), so the truth preset runs on a machine without data.
+TEST(ForceModel, MissingSpaceWeatherFileFallsBackWithAWarning) {
   ForceModelConfig c = ForceModelConfig::onboard();
   c.drag.space_weather = "space_weather/none.csv";
-  EXPECT_EQ(ForceModel::create(c, {}).error().field, "drag.space_weather");
+  const ForceModel forces = make(c);
+  const auto& w = forces.warnings();
+  EXPECT_TRUE(std::any_of(w.begin(), w.end(), [](const std::string& m) { return m.rfind("drag.space_weather", 0) == 0; }));
+}
+
+// Outside the space-weather file's dates (2024-07-01..2025-01-31) the configured activity is used
+// and each such UTC day is counted once, so the caller can warn.
+TEST(ForceModel, CountsDaysOutsideTheSpaceWeatherTable) {
+  ForceModel forces = make(ForceModelConfig::truth());
+  const GpsTime outside = GpsTime::parse("2025-03-01T00:00:00", core::TimeScale::kUtc).value();
+  const core::StateVector x = mission_chief(forces.gm());
+  for (double dt : {0.0, 3600.0, 86400.0 + 10.0}) (void)forces.acceleration(outside + dt, x);
+  if (forces.space_weather_misses() == 0 && !forces.warnings().empty()) GTEST_SKIP() << "no space-weather file";
+  EXPECT_EQ(forces.space_weather_misses(), 2);
 }
 
 // Orders of magnitude at 500 km (Montenbruck & Gill 2000, Fig. 3.1, scaled to A/m = 0.031 m^2/kg):
@@ -129,6 +145,7 @@ TEST(ForceModel, TruthAndOnboardModelsDifferByTheDragMismatchOverOneOrbit) {
 TEST(ForceModel, TruthAndOnboardModelsWithoutDragDifferByMetres) {
   ForceModelConfig truth = ForceModelConfig::truth();
   ForceModelConfig onboard = ForceModelConfig::onboard();
+  if (!make(truth).warnings().empty()) GTEST_SKIP() << "the GGM05S/GGM01S files are needed (VISORS_DATA_PATH)";
   truth.drag.enabled = false;
   onboard.drag.enabled = false;
   const Eigen::Vector3d d_rtn = mismatch_after_one_orbit(truth, onboard);
