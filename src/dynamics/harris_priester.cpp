@@ -163,7 +163,7 @@ core::Result<HarrisPriesterTable> read_harris_priester_table(const std::filesyst
     table.rho_max.push_back(value[2]);
   }
   if (table.height_m.size() < 2) {
-    return core::Error{"", "'" + path.string() + "' needs at least 2 data rows"};
+    return core::Error{"", "Harris-Priester table '" + path.string() + "' needs at least 2 data rows"};
   }
   return table;
 }

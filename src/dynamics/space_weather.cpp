@@ -83,7 +83,7 @@ core::Result<SpaceWeatherTable> SpaceWeatherTable::load(const std::filesystem::p
     std::copy(value.begin() + 4, value.end(), day.ap.begin());
     days.push_back(std::move(day));
   }
-  if (days.size() < 2) return core::Error{"", "'" + path.string() + "' needs at least 2 days"};
+  if (days.size() < 2) return core::Error{"", "space-weather file '" + path.string() + "' needs at least 2 days"};
   return SpaceWeatherTable(first_mjd, std::move(days));
 }
 
