@@ -3,7 +3,6 @@
 // same coefficients, closed forms and the gradient's own identities.
 #include <gtest/gtest.h>
 
-#include <GeographicLib/SphericalHarmonic.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -17,6 +16,7 @@
 #include "core/data_path.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
+#include "support/geographiclib_gravity.hpp"
 
 namespace {
 using visors::dynamics::GravityField;
@@ -43,38 +43,6 @@ SphericalHarmonicGravity make(const GravityField& field, int degree, int order) 
   EXPECT_TRUE(g.ok()) << g.error().describe();
   return std::move(g).value();
 }
-
-// GeographicLib's SphericalHarmonic holds pointers to C and S: keep them with it.
-struct GeographicLibOracle {
-  std::vector<double> c, s;
-  GeographicLib::SphericalHarmonic harmonic;
-  double gm_over_a;
-
-  // Degree n_max, order m_max, FULL normalisation (geodesy convention, no Condon-Shortley
-  // phase), a = model radius. Layout: column-major by order, (n, m) at m*N - m(m-1)/2 + n; S
-  // omits the m = 0 column (GeographicLib SphericalHarmonic.hpp, constructor documentation).
-  GeographicLibOracle(const GravityField& field, int n_max, int m_max) : gm_over_a(field.gm / field.radius) {
-    const int big_n = n_max;
-    c.assign(static_cast<std::size_t>((big_n + 1) * (big_n + 2) / 2), 0.0);
-    s.assign(static_cast<std::size_t>(big_n * (big_n + 1) / 2), 0.0);
-    for (int m = 0; m <= big_n; ++m) {
-      for (int n = m; n <= big_n; ++n) {
-        const int k = m * big_n - m * (m - 1) / 2 + n;
-        c[static_cast<std::size_t>(k)] = field.c(n, m);
-        if (m > 0) s[static_cast<std::size_t>(k - (big_n + 1))] = field.s(n, m);
-      }
-    }
-    harmonic = GeographicLib::SphericalHarmonic(c, s, big_n, n_max, m_max, field.radius,
-                                                GeographicLib::SphericalHarmonic::FULL);
-  }
-  // V is Σ q^(n+1) ...: the potential is (GM/a) V and the acceleration (GM/a) grad V.
-  void evaluate(const Eigen::Vector3d& r, Eigen::Vector3d* a, double* u) const {
-    double gx = 0.0, gy = 0.0, gz = 0.0;
-    const double v = harmonic(r.x(), r.y(), r.z(), gx, gy, gz);
-    *a = gm_over_a * Eigen::Vector3d(gx, gy, gz);
-    *u = gm_over_a * v;
-  }
-};
 
 // Random points, altitude log-uniform in 300 km .. 40,000 km above R, direction uniform.
 std::vector<Eigen::Vector3d> random_points(int count, double radius, std::uint64_t seed) {
@@ -143,7 +111,7 @@ TEST(SphericalHarmonicGravity, MatchesGeographicLibAcceleration) {
   for (const auto& [degree, order] : {std::pair{2, 2}, {4, 4}, {8, 8}, {20, 20}, {45, 45}, {60, 60}, {60, 30},
                                      {90, 90}, {90, 0}}) {
     SphericalHarmonicGravity g = make(*field, degree, order);
-    const GeographicLibOracle oracle(*field, degree, order);
+    const visors::test::GeographicLibGravity oracle(*field, degree, order);
     for (const Eigen::Vector3d& r : random_points(250, field->radius, 20241001 + static_cast<unsigned>(degree))) {
       Eigen::Vector3d a_ref;
       double u_ref = 0.0;
@@ -166,7 +134,7 @@ TEST(SphericalHarmonicGravity, MatchesGeographicLibAcceleration) {
 TEST(SphericalHarmonicGravity, MatchesGeographicLibNonCentralPart) {
   REQUIRE_FIELD(field, "gravity/GGM05S_d90.gfc", 90);
   SphericalHarmonicGravity g = make(*field, 90, 90);
-  const GeographicLibOracle oracle(*field, 90, 90);
+  const visors::test::GeographicLibGravity oracle(*field, 90, 90);
   double worst = 0.0;
   for (const Eigen::Vector3d& r : random_points(200, field->radius, 7)) {
     Eigen::Vector3d a_ref;
