@@ -1,0 +1,24 @@
+#pragma once
+// Configuration of the passive-safety check and the escape decision (mission paper: checked every
+// 10 s over a 1.5-orbit horizon at 3 sigma, epsilon 5 m, RN plane). Every value is a parameter
+// with this documented default.
+
+#include "core/status.hpp"
+
+namespace visors::safety {
+
+enum class SafetyPlane { kRadialNormal, kThreeDimensional };
+
+struct PassiveSafetySettings {
+  double epsilon = 5.0;            // minimum separation that is still safe [m]
+  double horizon_orbits = 1.5;     // T: look-ahead of the check [chief orbits]
+  double q_sigma = 3.0;            // the separation is reduced by q standard deviations [-]
+  SafetyPlane plane = SafetyPlane::kRadialNormal;
+  double check_period = 10.0;      // how often the flight component runs the check [s]
+  int samples_per_orbit = 360;     // for the 3D (sampled) check [-]
+};
+
+/// Each value checked; the error names the field ("epsilon", "horizon_orbits", ...).
+core::Result<PassiveSafetySettings> validate(const PassiveSafetySettings& settings);
+
+}  // namespace visors::safety

@@ -1,0 +1,26 @@
+// Passive-safety configuration: mission defaults and validation.
+#include <gtest/gtest.h>
+
+#include "safety/passive_safety_settings.hpp"
+
+namespace visors::safety {
+namespace {
+
+// Mission paper (Guffanti et al. 2023), science mode: 1.5 orbits, 3 sigma, 5 m, RN plane, 10 s.
+TEST(PassiveSafetySettings, DefaultsAreTheMissionValues) {
+  const PassiveSafetySettings s;
+  EXPECT_EQ(s.epsilon, 5.0);
+  EXPECT_EQ(s.horizon_orbits, 1.5);
+  EXPECT_EQ(s.q_sigma, 3.0);
+  EXPECT_EQ(s.plane, SafetyPlane::kRadialNormal);
+  EXPECT_EQ(s.check_period, 10.0);
+}
+
+TEST(PassiveSafetySettings, RejectsANegativeEpsilon) {
+  PassiveSafetySettings s;
+  s.epsilon = -1.0;
+  EXPECT_EQ(validate(s).error().field, "epsilon");
+}
+
+}  // namespace
+}  // namespace visors::safety
