@@ -1,0 +1,135 @@
+#include "control/maneuver_buffer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/QR>
+
+#include "astro/control_input_matrix.hpp"
+#include "astro/j2_secular.hpp"
+#include "astro/roe_stm.hpp"
+
+namespace visors::control {
+namespace {
+
+using Matrix6x3 = Eigen::Matrix<double, 6, 3>;
+
+// Phi(t_ref, t) Gamma(t): the mean-ROE change at t_ref per unit dv_rtn at t [s/m].
+Matrix6x3 effect_matrix(const astro::KeplerianElements& chief_mean_t0, double t, double t_ref,
+                        const core::EarthGravityConstants& gravity) {
+  const astro::KeplerianElements chief_t = astro::propagate_mean_j2(chief_mean_t0, t, gravity);
+  return astro::j2_roe_stm(chief_t, t_ref - t, gravity) * astro::control_input_matrix(chief_t, gravity.mu);
+}
+
+core::Result<bool> check_inputs(const astro::KeplerianElements& chief, const Impulse& impulse, double mass,
+                                const BufferSettings& s) {
+  if (!astro::validate_keplerian(chief).ok()) return core::Error{"chief", "invalid mean elements"};
+  if (!std::isfinite(impulse.t)) return core::Error{"maneuver.t", "must be finite"};
+  if (!impulse.dv_rtn.allFinite()) return core::Error{"maneuver.dv_rtn", "must be finite"};
+  if (!(mass > 0.0) || !std::isfinite(mass)) return core::Error{"mass", "must be a finite number > 0 kg"};
+  const ActuatorLimits& l = s.limits;
+  if (!(l.max_impulse > 0.0) || !(l.min_impulse >= 0.0) || l.min_impulse > l.max_impulse) {
+    return core::Error{"limits", "need 0 <= min_impulse <= max_impulse, max_impulse > 0"};
+  }
+  if (!(l.quantum >= 0.0) || l.quantum > l.max_impulse) return core::Error{"limits.quantum", "must be in [0, max_impulse]"};
+  if (!(l.spacing > 0.0)) return core::Error{"limits.spacing", "must be > 0 s"};
+  if (s.max_pieces < 1) return core::Error{"max_pieces", "must be >= 1"};
+  if (!(s.cap_margin > 0.0 && s.cap_margin <= 1.0)) return core::Error{"cap_margin", "must be in (0, 1]"};
+  return true;
+}
+
+// Piece times centred on the planned time.
+std::vector<double> piece_times(double t, int pieces, double spacing) {
+  std::vector<double> times(static_cast<std::size_t>(pieces));
+  for (int j = 0; j < pieces; ++j) times[static_cast<std::size_t>(j)] = t + (j - 0.5 * (pieces - 1)) * spacing;
+  return times;
+}
+
+// Columns of the effect matrices of `times` at t_ref, side by side (6 x 3K).
+Eigen::MatrixXd stacked_effects(const astro::KeplerianElements& chief, const std::vector<double>& times,
+                                double t_ref, const core::EarthGravityConstants& gravity) {
+  Eigen::MatrixXd b(6, 3 * static_cast<Eigen::Index>(times.size()));
+  for (std::size_t j = 0; j < times.size(); ++j) {
+    b.middleCols<3>(3 * static_cast<Eigen::Index>(j)) = effect_matrix(chief, times[j], t_ref, gravity);
+  }
+  return b;
+}
+
+}  // namespace
+
+astro::RelativeOrbitalElements net_roe_effect(const astro::KeplerianElements& chief_mean_t0,
+                                              const std::vector<Impulse>& impulses, double t_ref,
+                                              const core::EarthGravityConstants& gravity) {
+  astro::RelativeOrbitalElements sum = astro::RelativeOrbitalElements::Zero();
+  for (const Impulse& i : impulses) sum += effect_matrix(chief_mean_t0, i.t, t_ref, gravity) * i.dv_rtn;
+  return sum;
+}
+
+core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+                                                 double mass, const BufferSettings& settings) {
+  if (auto ok = check_inputs(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
+  const double cap = settings.cap_margin * settings.limits.max_impulse / mass;  // [m/s]
+  const double dv = impulse.dv_rtn.norm();
+  if (dv <= cap) return std::vector<Impulse>{impulse};
+  for (int pieces = std::max(2, static_cast<int>(std::ceil(dv / cap))); pieces <= settings.max_pieces; ++pieces) {
+    const std::vector<double> times = piece_times(impulse.t, pieces, settings.limits.spacing);
+    const double t_ref = times.back();
+    const Eigen::MatrixXd b = stacked_effects(chief_mean_t0, times, t_ref, settings.gravity);
+    const astro::RelativeOrbitalElements target =
+        effect_matrix(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn;
+    // Minimum-norm solution of b x = target (b has full row rank for >= 2 distinct times).
+    const Eigen::VectorXd x = b.completeOrthogonalDecomposition().solve(target);
+    std::vector<Impulse> out(times.size());
+    bool within_cap = true;
+    for (std::size_t j = 0; j < times.size(); ++j) {
+      out[j] = {times[j], x.segment<3>(3 * static_cast<Eigen::Index>(j))};
+      within_cap = within_cap && out[j].dv_rtn.norm() <= cap;
+    }
+    if (within_cap) return out;
+  }
+  return core::Error{"maneuver.dv_rtn", "needs more than max_pieces = " + std::to_string(settings.max_pieces) +
+                                            " pieces of at most " + std::to_string(settings.limits.max_impulse) +
+                                            " N s"};
+}
+
+core::Result<BufferedManeuver> buffer_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+                                              double mass, const BufferSettings& settings) {
+  auto split = split_impulse(chief_mean_t0, impulse, mass, settings);
+  if (!split) return split.error();
+  std::vector<Impulse> pieces = std::move(split).value();
+  const double t_ref = std::max(pieces.back().t, impulse.t);
+  const core::EarthGravityConstants& gravity = settings.gravity;
+  const ActuatorLimits& limits = settings.limits;
+  std::vector<double> times(pieces.size());
+  for (std::size_t j = 0; j < pieces.size(); ++j) times[j] = pieces[j].t;
+  const Eigen::MatrixXd b = stacked_effects(chief_mean_t0, times, t_ref, gravity);
+  const astro::RelativeOrbitalElements target = effect_matrix(chief_mean_t0, impulse.t, t_ref, gravity) * impulse.dv_rtn;
+
+  // Quantise piece j, then give what its rounding left to the pieces after it.
+  astro::RelativeOrbitalElements remaining = target;
+  const auto n = static_cast<Eigen::Index>(pieces.size());
+  for (Eigen::Index j = 0; j < n; ++j) {
+    Impulse& piece = pieces[static_cast<std::size_t>(j)];
+    const double impulse_ns = mass * piece.dv_rtn.norm();
+    double quantised = limits.quantum > 0.0 ? std::round(impulse_ns / limits.quantum) * limits.quantum : impulse_ns;
+    if (quantised > limits.max_impulse) quantised -= limits.quantum;
+    if (quantised < limits.min_impulse) quantised = 0.0;
+    piece.dv_rtn = impulse_ns > 0.0 ? Eigen::Vector3d(piece.dv_rtn * (quantised / impulse_ns)) : Eigen::Vector3d::Zero();
+    remaining -= b.middleCols<3>(3 * j) * piece.dv_rtn;
+    if (j + 1 < n) {
+      const Eigen::MatrixXd rest = b.rightCols(3 * (n - j - 1));
+      const Eigen::VectorXd x = rest.completeOrthogonalDecomposition().solve(remaining);
+      for (Eigen::Index k = j + 1; k < n; ++k) pieces[static_cast<std::size_t>(k)].dv_rtn = x.segment<3>(3 * (k - j - 1));
+    }
+  }
+  BufferedManeuver out;
+  for (const Impulse& p : pieces) {
+    if (p.dv_rtn.squaredNorm() > 0.0) out.pieces.push_back(p);
+  }
+  out.residual_roe_m = chief_mean_t0.a * remaining;
+  out.dv_total = total_delta_v(out.pieces);
+  return out;
+}
+
+}  // namespace visors::control
