@@ -6,21 +6,10 @@
 
 #include <Eigen/QR>
 
-#include "astro/control_input_matrix.hpp"
-#include "astro/j2_secular.hpp"
-#include "astro/roe_stm.hpp"
+#include "control/impulse_effect.hpp"
 
 namespace visors::control {
 namespace {
-
-using Matrix6x3 = Eigen::Matrix<double, 6, 3>;
-
-// Phi(t_ref, t) Gamma(t): the mean-ROE change at t_ref per unit dv_rtn at t [s/m].
-Matrix6x3 effect_matrix(const astro::KeplerianElements& chief_mean_t0, double t, double t_ref,
-                        const core::EarthGravityConstants& gravity) {
-  const astro::KeplerianElements chief_t = astro::propagate_mean_j2(chief_mean_t0, t, gravity);
-  return astro::j2_roe_stm(chief_t, t_ref - t, gravity) * astro::control_input_matrix(chief_t, gravity.mu);
-}
 
 core::Result<bool> check_inputs(const astro::KeplerianElements& chief, const Impulse& impulse, double mass,
                                 const BufferSettings& s) {
@@ -51,20 +40,12 @@ Eigen::MatrixXd stacked_effects(const astro::KeplerianElements& chief, const std
                                 double t_ref, const core::EarthGravityConstants& gravity) {
   Eigen::MatrixXd b(6, 3 * static_cast<Eigen::Index>(times.size()));
   for (std::size_t j = 0; j < times.size(); ++j) {
-    b.middleCols<3>(3 * static_cast<Eigen::Index>(j)) = effect_matrix(chief, times[j], t_ref, gravity);
+    b.middleCols<3>(3 * static_cast<Eigen::Index>(j)) = impulse_effect(chief, times[j], t_ref, gravity);
   }
   return b;
 }
 
 }  // namespace
-
-astro::RelativeOrbitalElements net_roe_effect(const astro::KeplerianElements& chief_mean_t0,
-                                              const std::vector<Impulse>& impulses, double t_ref,
-                                              const core::EarthGravityConstants& gravity) {
-  astro::RelativeOrbitalElements sum = astro::RelativeOrbitalElements::Zero();
-  for (const Impulse& i : impulses) sum += effect_matrix(chief_mean_t0, i.t, t_ref, gravity) * i.dv_rtn;
-  return sum;
-}
 
 core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
                                                  double mass, const BufferSettings& settings) {
@@ -77,7 +58,7 @@ core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements&
     const double t_ref = times.back();
     const Eigen::MatrixXd b = stacked_effects(chief_mean_t0, times, t_ref, settings.gravity);
     const astro::RelativeOrbitalElements target =
-        effect_matrix(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn;
+        impulse_effect(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn;
     // Minimum-norm solution of b x = target (b has full row rank for >= 2 distinct times).
     const Eigen::VectorXd x = b.completeOrthogonalDecomposition().solve(target);
     std::vector<Impulse> out(times.size());
@@ -104,7 +85,7 @@ core::Result<BufferedManeuver> buffer_impulse(const astro::KeplerianElements& ch
   std::vector<double> times(pieces.size());
   for (std::size_t j = 0; j < pieces.size(); ++j) times[j] = pieces[j].t;
   const Eigen::MatrixXd b = stacked_effects(chief_mean_t0, times, t_ref, gravity);
-  const astro::RelativeOrbitalElements target = effect_matrix(chief_mean_t0, impulse.t, t_ref, gravity) * impulse.dv_rtn;
+  const astro::RelativeOrbitalElements target = impulse_effect(chief_mean_t0, impulse.t, t_ref, gravity) * impulse.dv_rtn;
 
   // Quantise piece j, then give what its rounding left to the pieces after it.
   astro::RelativeOrbitalElements remaining = target;

@@ -69,10 +69,4 @@ core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements&
                                                  const Impulse& impulse, double mass,
                                                  const BufferSettings& settings = {});
 
-/// Net first-order effect of impulses on the mean ROE, referred to time `t_ref` (after the last
-/// impulse): sum_k Phi(t_ref, t_k) Gamma(t_k) dv_k [-].
-astro::RelativeOrbitalElements net_roe_effect(const astro::KeplerianElements& chief_mean_t0,
-                                              const std::vector<Impulse>& impulses, double t_ref,
-                                              const core::EarthGravityConstants& gravity = {});
-
 }  // namespace visors::control

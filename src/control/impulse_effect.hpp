@@ -1,0 +1,31 @@
+#pragma once
+// The linear model every planner, the buffer and the MPC share: mean ROE under the secular-J2
+// STM with impulses entering through the eccentric control input matrix,
+//     roe(t_ref) = Phi(t_ref, t0) roe(t0) + sum_k Phi(t_ref, t_k) Gamma(t_k) dv_k,
+// with Phi(t_ref, t_k) = j2_roe_stm(chief(t_k), t_ref - t_k) (Koenig, Guffanti & D'Amico 2017, A6)
+// and Gamma(t_k) = control_input_matrix(chief(t_k)) (GVE, eccentric, with the Lambda terms), the
+// chief's mean elements at t_k from secular J2 (astro::propagate_mean_j2).
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "astro/keplerian_elements.hpp"
+#include "astro/relative_orbital_elements.hpp"
+#include "control/impulse.hpp"
+#include "core/constants.hpp"
+
+namespace visors::control {
+
+/// Phi(t_ref, t) Gamma(t): mean-ROE change at t_ref per unit dv_rtn at t [s/m]. Times in s since
+/// the epoch of `chief_mean_t0`; t_ref >= t is not required (the STM runs backwards too).
+Eigen::Matrix<double, 6, 3> impulse_effect(const astro::KeplerianElements& chief_mean_t0, double t, double t_ref,
+                                           const core::EarthGravityConstants& gravity = {});
+
+/// roe(t_ref) from roe(0) and the impulses (any order) [-].
+astro::RelativeOrbitalElements predict_roe(const astro::KeplerianElements& chief_mean_t0,
+                                           const astro::RelativeOrbitalElements& roe0,
+                                           const std::vector<Impulse>& impulses, double t_ref,
+                                           const core::EarthGravityConstants& gravity = {});
+
+}  // namespace visors::control
