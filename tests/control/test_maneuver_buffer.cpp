@@ -8,12 +8,10 @@
 
 #include "astro/keplerian_elements.hpp"
 #include "control/impulse_effect.hpp"
+#include "control/j2_numerical_propagation.hpp"
 #include "control/maneuver_buffer.hpp"
-#include "astro/mean_osculating.hpp"
 #include "astro/relative_orbital_elements.hpp"
 #include "core/constants.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/orbit_propagator.hpp"
 
 namespace visors::control {
 namespace {
@@ -96,38 +94,14 @@ TEST(ManeuverBuffer, QuantisationResidualIsMillimetres) {
 // Independent of the linear model: propagate the deputy numerically (J2 only, DP8(7)) with the
 // buffered pieces and with the single planned impulse; the mean ROE after the last piece differ
 // only by what the first-order model leaves out (short-period and second-order terms).
-astro::RelativeOrbitalElements mean_roe_after(const std::vector<Impulse>& impulses, double t_end) {
-  dynamics::ForceModelConfig config = dynamics::ForceModelConfig::onboard();
-  config.gravity.degree = 2;
-  config.gravity.order = 0;
-  config.drag.enabled = false;
-  config.srp.enabled = false;
-  config.sun = false;
-  config.moon = false;
-  dynamics::ForceModel forces = dynamics::ForceModel::create(config, {}).value();
-  dynamics::PropagatorSettings settings;
-  settings.integrator = dynamics::IntegratorKind::kDormandPrince87;
-  dynamics::OrbitPropagator propagator = dynamics::OrbitPropagator::create(forces, settings).value();
-  const core::EarthGravityConstants earth{forces.gm(), forces.earth_radius(), 1.0826e-3};
-  const core::GpsTime t0 = core::GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kUtc).value();
-  const astro::KeplerianElements chief_osc = astro::osculating_from_mean(kChief, earth).value();
-  const core::StateVector chief0 = astro::cartesian_from_keplerian(chief_osc, earth.mu);
-  std::vector<dynamics::ImpulsiveManeuver> burns;
-  for (const Impulse& i : impulses) burns.push_back({t0 + i.t, i.dv_rtn, dynamics::ManeuverFrame::kRtn});
-  const core::StateVector chief1 = propagator.propagate_to(t0, chief0, t0 + t_end).value();
-  const core::StateVector deputy1 = propagator.propagate_to(t0, chief0, t0 + t_end, burns).value();
-  const auto mean = [&](const core::StateVector& x) {
-    return astro::mean_from_osculating(astro::cartesian_to_keplerian(x.r, x.v, earth.mu).value(), earth).value();
-  };
-  return astro::roe_from_keplerian(mean(chief1), mean(deputy1)).value();
-}
-
 TEST(ManeuverBuffer, PiecesMatchThePlannedImpulseInANumericalPropagation) {
   const auto buffered = buffer_impulse(kChief, kLargeImpulse, kMass);
   ASSERT_TRUE(buffered.ok());
   const double t_end = buffered->pieces.back().t + 60.0;
-  const astro::RelativeOrbitalElements pieces = mean_roe_after(buffered->pieces, t_end);
-  const astro::RelativeOrbitalElements planned = mean_roe_after({kLargeImpulse}, t_end);
+  const astro::RelativeOrbitalElements pieces =
+      test::propagate_j2_numerically(kChief, astro::RelativeOrbitalElements::Zero(), buffered->pieces, t_end);
+  const astro::RelativeOrbitalElements planned =
+      test::propagate_j2_numerically(kChief, astro::RelativeOrbitalElements::Zero(), {kLargeImpulse}, t_end);
   const double difference = kChief.a * (pieces - planned).cwiseAbs().maxCoeff();
   std::printf("numerical J2 propagation: buffered vs planned impulse, max |a dROE| difference %.2f mm\n",
               1e3 * difference);

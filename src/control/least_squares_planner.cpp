@@ -1,0 +1,86 @@
+#include "control/least_squares_planner.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include "astro/roe_stm.hpp"
+#include "control/closed_form_planner.hpp"
+
+namespace visors::control {
+
+core::Result<LeastSquaresPlan> plan_least_squares(const astro::KeplerianElements& chief_mean_t0,
+                                                  const astro::RelativeOrbitalElements& roe0,
+                                                  const astro::RelativeOrbitalElements& roe_target, double tf,
+                                                  std::span<const double> burn_times,
+                                                  const LeastSquaresSettings& settings,
+                                                  const core::EarthGravityConstants& gravity) {
+  const auto valid = astro::validate_keplerian(chief_mean_t0);
+  if (!valid.ok()) return core::Error{"chief_mean_t0." + valid.error().field, valid.error().message};
+  if (chief_mean_t0.e >= 0.1) return core::Error{"chief_mean_t0.e", "must be below 0.1 (near-circular)"};
+  if (std::sin(chief_mean_t0.i) < 1e-6) return core::Error{"chief_mean_t0.i", "must not be equatorial"};
+  if (!(gravity.mu > 0.0) || !(gravity.re > 0.0) || !std::isfinite(gravity.mu) || !std::isfinite(gravity.re) ||
+      !std::isfinite(gravity.j2)) {
+    return core::Error{"gravity", "mu and re must be finite and positive, j2 finite"};
+  }
+  if (!roe0.allFinite()) return core::Error{"roe0", "must be finite"};
+  if (!roe_target.allFinite()) return core::Error{"roe_target", "must be finite"};
+  if (!std::isfinite(tf) || tf <= 0.0) return core::Error{"tf", "must be finite and positive"};
+  if (burn_times.empty() || burn_times.size() > static_cast<std::size_t>(kMaxLeastSquaresBurns)) {
+    return core::Error{"burn_times", "must hold 1 to 6 times"};
+  }
+  for (std::size_t k = 0; k < burn_times.size(); ++k) {
+    const double t = burn_times[k];
+    if (!std::isfinite(t) || t < 0.0 || t > tf || (k > 0 && t < burn_times[k - 1])) {
+      return core::Error{"burn_times", "time " + std::to_string(k) + " must be finite, non-decreasing, in [0, tf]"};
+    }
+  }
+  if (!std::isfinite(settings.relative_regularisation) || settings.relative_regularisation < 0.0) {
+    return core::Error{"settings.relative_regularisation", "must be finite and >= 0"};
+  }
+  if (!std::isfinite(settings.min_reciprocal_condition) || settings.min_reciprocal_condition <= 0.0) {
+    return core::Error{"settings.min_reciprocal_condition", "must be finite and positive"};
+  }
+
+  const double a = chief_mean_t0.a;
+  const int m = static_cast<int>(burn_times.size());
+  using Stack = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3 * kMaxLeastSquaresBurns>;
+  Stack big_m(6, 3 * m);
+  for (int k = 0; k < m; ++k) {
+    big_m.middleCols<3>(3 * k) = a * impulse_effect(chief_mean_t0, burn_times[static_cast<std::size_t>(k)], tf, gravity);
+  }
+  const Eigen::Matrix<double, 6, 1> w = a * (roe_target - astro::j2_roe_stm(chief_mean_t0, tf, gravity) * roe0);
+
+  Eigen::Matrix<double, 6, 6> mmt = big_m * big_m.transpose();
+  const double nu = settings.relative_regularisation * mmt.trace() / 6.0;
+  if (nu == 0.0) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(mmt, Eigen::EigenvaluesOnly);
+    const double lmax = eig.eigenvalues().maxCoeff();
+    if (!(lmax > 0.0) || eig.eigenvalues().minCoeff() < settings.min_reciprocal_condition * lmax) {
+      return core::Error{"burn_times", "singular geometry: the impulses at these times do not span the six ROE "
+                                       "(use nu > 0 or spread the times, not all a multiple of pi apart in u)"};
+    }
+  }
+  mmt.diagonal().array() += nu;
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(mmt);
+  const Eigen::Matrix<double, 6, 1> y = ldlt.solve(w);
+  if (ldlt.info() != Eigen::Success || !y.allFinite()) {
+    return core::Error{"burn_times", "singular geometry: M M' + nu I could not be factorised"};
+  }
+  const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3 * kMaxLeastSquaresBurns, 1> v = big_m.transpose() * y;
+
+  LeastSquaresPlan out;
+  out.nu = nu;
+  out.plan.impulses.reserve(burn_times.size());
+  for (int k = 0; k < m; ++k) {
+    out.plan.impulses.push_back(Impulse{burn_times[static_cast<std::size_t>(k)], v.segment<3>(3 * k)});
+  }
+  out.plan.dv_total = total_delta_v(out.plan.impulses);
+  out.plan.roe_final_predicted = predict_roe(chief_mean_t0, roe0, out.plan.impulses, tf, gravity);
+  out.terminal_error = roe_target - out.plan.roe_final_predicted;
+  return out;
+}
+
+}  // namespace visors::control
