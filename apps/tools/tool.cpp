@@ -56,6 +56,54 @@ Eigen::Vector3d require_vector3(const Json& object, const std::string& key,
   return v;
 }
 
+std::vector<double> require_numbers(const Json& object, const std::string& key, const std::string& path, int size) {
+  const std::string field = join(path, key);
+  const Json& value = require_member(object, key, path);
+  if (!value.is_array() || (size >= 0 && value.size() != static_cast<std::size_t>(size))) {
+    throw ToolInputError(field, size >= 0 ? "must be an array of " + std::to_string(size) + " numbers"
+                                          : "must be an array of numbers");
+  }
+  std::vector<double> out;
+  out.reserve(value.size());
+  for (std::size_t k = 0; k < value.size(); ++k) out.push_back(finite_number(value[k], field + "[" + std::to_string(k) + "]"));
+  return out;
+}
+
+Eigen::MatrixXd require_matrix(const Json& object, const std::string& key, int rows, int cols, const std::string& path) {
+  const std::string field = join(path, key);
+  const Json& value = require_member(object, key, path);
+  const std::string shape = "must be " + std::to_string(rows) + " rows of " + std::to_string(cols) + " numbers";
+  if (!value.is_array() || value.size() != static_cast<std::size_t>(rows)) throw ToolInputError(field, shape);
+  Eigen::MatrixXd m(rows, cols);
+  for (int r = 0; r < rows; ++r) {
+    const Json& row = value[static_cast<std::size_t>(r)];
+    if (!row.is_array() || row.size() != static_cast<std::size_t>(cols)) throw ToolInputError(field, shape);
+    for (int c = 0; c < cols; ++c) {
+      m(r, c) = finite_number(row[static_cast<std::size_t>(c)],
+                              field + "[" + std::to_string(r) + "][" + std::to_string(c) + "]");
+    }
+  }
+  return m;
+}
+
+astro::RelativeOrbitalElements require_roe_m(const Json& object, const std::string& key, double a) {
+  const std::vector<double> v = require_numbers(object, key, "", 6);
+  astro::RelativeOrbitalElements roe;
+  for (int k = 0; k < 6; ++k) roe[k] = v[static_cast<std::size_t>(k)] / a;
+  return roe;
+}
+
+Eigen::Matrix<double, 6, 6> optional_roe_covariance_m2(const Json& object, const std::string& key, double a) {
+  if (!object.contains(key)) return Eigen::Matrix<double, 6, 6>::Zero();
+  return require_matrix(object, key, 6, 6) / (a * a);
+}
+
+Json roe_to_json_m(const astro::RelativeOrbitalElements& roe, double a) {
+  Json out = Json::array();
+  for (int k = 0; k < 6; ++k) out.push_back(a * roe[k]);
+  return out;
+}
+
 const Json& require_object(const Json& object, const std::string& key, const std::string& path) {
   const Json& value = require_member(object, key, path);
   if (!value.is_object()) throw ToolInputError(join(path, key), "must be a JSON object");

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "astro/keplerian_elements.hpp"
+#include "astro/relative_orbital_elements.hpp"
 #include "core/status.hpp"
 
 namespace visors::tools {
@@ -51,6 +52,18 @@ std::optional<double> optional_number(const Json& object, const std::string& key
 std::string require_string(const Json& object, const std::string& key, const std::string& path = "");
 Eigen::Vector3d require_vector3(const Json& object, const std::string& key,
                                 const std::string& path = "");
+/// An array of finite numbers; `size` >= 0 requires exactly that many.
+std::vector<double> require_numbers(const Json& object, const std::string& key, const std::string& path = "",
+                                    int size = -1);
+/// A rows x cols matrix given as an array of rows.
+Eigen::MatrixXd require_matrix(const Json& object, const std::string& key, int rows, int cols,
+                               const std::string& path = "");
+/// a*dROE [m] at `key` (6 numbers) -> dimensionless ROE of a chief with semi-major axis `a`.
+astro::RelativeOrbitalElements require_roe_m(const Json& object, const std::string& key, double a);
+/// Covariance of a*dROE [m^2] at `key` (6 rows of 6) -> dimensionless; zero when absent.
+Eigen::Matrix<double, 6, 6> optional_roe_covariance_m2(const Json& object, const std::string& key, double a);
+/// Dimensionless ROE -> a*dROE [m] as a JSON array.
+Json roe_to_json_m(const astro::RelativeOrbitalElements& roe, double a);
 const Json& require_object(const Json& object, const std::string& key, const std::string& path = "");
 /// Rejects any key of `object` not in `allowed` (a typo must not be silently ignored).
 void reject_unknown_keys(const Json& object, const std::vector<std::string_view>& allowed,

@@ -1,0 +1,153 @@
+#include "safety/escape_maneuver.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "astro/control_input_matrix.hpp"
+#include "astro/j2_secular.hpp"
+#include "astro/roe_stm.hpp"
+
+namespace visors::safety {
+namespace {
+
+using astro::RelativeOrbitalElements;
+namespace idx = astro::roe;
+
+constexpr int kMaxPsiSamples = 720;
+constexpr int kMaxCandidates = kMaxPsiSamples + 2;
+// A direction for which the 3x3 system is (near) singular yields an enormous dv; anything above
+// this is discarded outright [m/s].
+constexpr double kDvDiscard = 10.0;
+
+struct Candidate {
+  Eigen::Vector3d dv = Eigen::Vector3d::Zero();
+  double norm = 0.0;
+};
+
+// 2-D cross product z-component.
+double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+
+// Solves conditions (i)-(ii) of the header for the common direction psi. False if singular.
+bool solve_for_direction(const astro::ControlInputMatrix& gamma, const RelativeOrbitalElements& roe_b,
+                         double da_after, double psi, Candidate& out) {
+  const double dx = std::cos(psi);
+  const double dy = std::sin(psi);
+  Eigen::Matrix3d m;
+  Eigen::Vector3d rhs;
+  m.row(0) = gamma.row(idx::kDa);
+  rhs[0] = da_after - roe_b[idx::kDa];
+  // cross(de_b + Gamma_e dv, d) = 0
+  m.row(1) = dy * gamma.row(idx::kDex) - dx * gamma.row(idx::kDey);
+  rhs[1] = -cross(roe_b[idx::kDex], roe_b[idx::kDey], dx, dy);
+  m.row(2) = dy * gamma.row(idx::kDix) - dx * gamma.row(idx::kDiy);
+  rhs[2] = -cross(roe_b[idx::kDix], roe_b[idx::kDiy], dx, dy);
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(m);
+  if (!lu.isInvertible()) return false;
+  out.dv = lu.solve(rhs);
+  out.norm = out.dv.norm();
+  return std::isfinite(out.norm) && out.norm < kDvDiscard;
+}
+
+}  // namespace
+
+core::Result<EscapeSettings> validate(const EscapeSettings& s) {
+  if (!(s.epsilon >= 0.0) || !std::isfinite(s.epsilon)) return core::Error{"epsilon", "must be a finite number >= 0 m"};
+  if (!(s.da_target > 0.0) || !std::isfinite(s.da_target)) return core::Error{"da_target", "must be a finite number > 0 m"};
+  if (!(s.q_sigma >= 0.0) || s.q_sigma > 10.0) return core::Error{"q_sigma", "must be in [0, 10]"};
+  if (!(s.horizon_orbits > 0.0) || s.horizon_orbits > 100.0) return core::Error{"horizon_orbits", "must be in (0, 100] orbits"};
+  if (s.samples_per_orbit < 8 || s.samples_per_orbit > 100000) return core::Error{"samples_per_orbit", "must be in [8, 100000]"};
+  if (s.psi_samples < 4 || s.psi_samples > kMaxPsiSamples) return core::Error{"psi_samples", "must be in [4, 720]"};
+  if (!(s.time_step >= 0.1) || !std::isfinite(s.time_step)) return core::Error{"time_step", "must be a finite number >= 0.1 s"};
+  if (!(s.search_window_orbits >= 0.0) || s.search_window_orbits > 10.0) {
+    return core::Error{"search_window_orbits", "must be in [0, 10] orbits"};
+  }
+  if (!(s.dv_sigma >= 0.0) || !std::isfinite(s.dv_sigma)) return core::Error{"dv_sigma", "must be a finite number >= 0 m/s"};
+  return s;
+}
+
+core::Result<EscapeManeuver> plan_escape(const astro::KeplerianElements& chief_mean_t0,
+                                         const RelativeOrbitalElements& roe, const RoeCovariance& covariance,
+                                         double t_earliest, const EscapeSettings& settings,
+                                         const core::EarthGravityConstants& gravity) {
+  const auto checked = validate(settings);
+  if (!checked) return checked.error();
+  const auto inputs = validate_safety_inputs(chief_mean_t0, roe, covariance, gravity);
+  if (!inputs) return inputs.error();
+  if (!(t_earliest >= 0.0) || !std::isfinite(t_earliest)) return core::Error{"t_earliest", "must be a finite number >= 0 s"};
+
+  PassiveSafetySettings safety;
+  safety.epsilon = settings.epsilon;
+  safety.horizon_orbits = settings.horizon_orbits;
+  safety.q_sigma = settings.q_sigma;
+  safety.plane = settings.plane;
+  safety.samples_per_orbit = settings.samples_per_orbit;
+
+  const double a = chief_mean_t0.a;
+  const double period = orbital_period(chief_mean_t0, gravity.mu);
+  const double t_last = t_earliest + settings.search_window_orbits * period;
+  const Eigen::Matrix3d q_dv = Eigen::Matrix3d::Identity() * (settings.dv_sigma * settings.dv_sigma);
+
+  std::array<Candidate, kMaxCandidates> candidates;
+  std::array<int, kMaxCandidates> order{};
+  for (long k = 0;; ++k) {
+    const double t = t_earliest + settings.time_step * static_cast<double>(k);
+    if (t > t_last + 1e-9) break;
+    const astro::KeplerianElements chief_b = astro::propagate_mean_j2(chief_mean_t0, t, gravity);
+    const astro::RoeStm phi = astro::j2_roe_stm(chief_mean_t0, t, gravity);
+    const RelativeOrbitalElements roe_b = phi * roe;
+    const astro::ControlInputMatrix gamma = astro::control_input_matrix(chief_b, gravity.mu);
+    RoeCovariance p_after = phi * covariance * phi.transpose() + gamma * q_dv * gamma.transpose();
+    p_after = 0.5 * (p_after + p_after.transpose()).eval();
+
+    // (i): drift away from the chief, |a da| = da_target + q sigma(a da).
+    const double sign = roe_b[idx::kDlambda] > 0.0 ? -1.0 : 1.0;
+    const double sigma_ada = a * std::sqrt(std::max(0.0, p_after(idx::kDa, idx::kDa)));
+    const double da_after = sign * (settings.da_target + settings.q_sigma * sigma_ada) / a;
+
+    // (ii): candidate directions, the grid plus the current phases of de and di (whose solution
+    // needs no rotation of that vector).
+    int count = 0;
+    const auto add = [&](double psi) {
+      if (solve_for_direction(gamma, roe_b, da_after, psi, candidates[static_cast<std::size_t>(count)])) ++count;
+    };
+    for (int j = 0; j < settings.psi_samples; ++j) add(core::kPi * j / settings.psi_samples);
+    add(std::atan2(roe_b[idx::kDey], roe_b[idx::kDex]));
+    add(std::atan2(roe_b[idx::kDiy], roe_b[idx::kDix]));
+    for (int j = 0; j < count; ++j) order[static_cast<std::size_t>(j)] = j;
+    std::sort(order.begin(), order.begin() + count, [&](int x, int y) {
+      return candidates[static_cast<std::size_t>(x)].norm < candidates[static_cast<std::size_t>(y)].norm;
+    });
+
+    // (iii): the cheapest candidate that is passively safe at q sigma.
+    for (int j = 0; j < count; ++j) {
+      const Candidate& c = candidates[static_cast<std::size_t>(order[static_cast<std::size_t>(j)])];
+      const RelativeOrbitalElements roe_after = roe_b + gamma * c.dv;
+      // Quick rejection: with parallel vectors the RN separation cannot exceed
+      // a min(|de|, |di|) + |a da| (+ O(e) map terms, 1 m allowance).
+      const double de = std::hypot(roe_after[idx::kDex], roe_after[idx::kDey]);
+      const double di = std::hypot(roe_after[idx::kDix], roe_after[idx::kDiy]);
+      if (safety.plane == SafetyPlane::kRadialNormal &&
+          a * (std::min(de, di) + std::abs(roe_after[idx::kDa])) + 1.0 < settings.epsilon) {
+        continue;
+      }
+      const auto assessment = evaluate_passive_safety(chief_b, roe_after, p_after, safety, gravity);
+      if (!assessment) return assessment.error();
+      if (!assessment->safe) continue;
+      EscapeManeuver out;
+      out.impulse = control::Impulse{t, c.dv};
+      out.roe_before = roe_b;
+      out.roe_after = roe_after;
+      out.covariance_after = p_after;
+      out.safety_after = assessment.value();
+      const RelativeOrbitalElements one_orbit = astro::j2_roe_stm(chief_b, period, gravity) * roe_after;
+      out.drift_per_orbit = a * (one_orbit[idx::kDlambda] - roe_after[idx::kDlambda]);
+      return out;
+    }
+  }
+  return core::Error{"escape", "no single impulse in the search window meets the safety margin"};
+}
+
+}  // namespace visors::safety

@@ -1,0 +1,55 @@
+// `visors tool escape` through the real binary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "apps/run_tool.hpp"
+
+namespace {
+
+std::string chief_json() {
+  return R"("chief":{"a":6878136.3,"e":0.004,"i":1.7069320084504542,"raan":2.748893571891069,)"
+         R"("argp":1.5707963267948966,"M":0.0})";
+}
+
+std::string input(const std::string& rest) {
+  std::string s = "{";
+  s += chief_json();
+  s += rest;
+  return s;
+}
+
+// Escape from the mission science orbit a*[-2.62, 45.21, -34.51, 4.78, -18.72, 2.72] m with a
+// 0.1 m^2 covariance per a*ROE: the deputy is ahead (dlambda > 0), so a*da after the burn is
+// -(5 m + 3 sigma) = -(5 + 3 sqrt(0.1)) m (drift away, ~3 pi 5.95 = 56 m per orbit); burn at
+// t_earliest; RN margin after >= epsilon.
+TEST(ToolEscape, ScienceOrbitEscape) {
+  const auto run = visors::test::run_tool(
+      "escape", input(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":120,"epsilon":5,"da_target":5,)"
+                      R"("cov":[[0.1,0,0,0,0,0],[0,0.1,0,0,0,0],[0,0,0.1,0,0,0],[0,0,0,0.1,0,0],[0,0,0,0,0.1,0],[0,0,0,0,0,0.1]]})"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto out = run.json();
+  EXPECT_EQ(out["maneuver"]["t"].get<double>(), 120.0);
+  EXPECT_EQ(out["maneuver"]["dv_rtn"].size(), 3u);
+  EXPECT_NEAR(out["roe_after"][0].get<double>(), -(5.0 + 3.0 * std::sqrt(0.1)), 1e-6);
+  EXPECT_GT(out["drift_per_orbit"].get<double>(), 50.0);
+  EXPECT_GE(out["min_separation_margin_after"].get<double>(), 5.0);
+}
+
+TEST(ToolEscape, MissingCovExitCode2Named) {
+  const auto run = visors::test::run_tool(
+      "escape", input(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":0,"epsilon":5,"da_target":5})"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("cov"), std::string::npos) << run.err;
+}
+
+TEST(ToolEscape, NegativeDaTargetExitCode2Named) {
+  const auto run = visors::test::run_tool(
+      "escape", input(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":0,"epsilon":5,"da_target":-5,)"
+                      R"("cov":[[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0]]})"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("da_target"), std::string::npos) << run.err;
+}
+
+}  // namespace

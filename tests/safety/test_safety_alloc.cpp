@@ -1,0 +1,32 @@
+// Flight-code memory rule (CONTRIBUTING "Memory"): evaluate_passive_safety allocates nothing.
+// This file replaces the global operator new of test_safety with a counting one
+// (support/counting_new.hpp, to be included in exactly one file of the executable).
+#include <gtest/gtest.h>
+
+#include "core/constants.hpp"
+#include "safety/passive_safety.hpp"
+#include "support/counting_new.hpp"
+
+namespace visors::safety {
+namespace {
+
+TEST(PassiveSafetyAlloc, EvaluationAllocatesNothing) {
+  const astro::KeplerianElements chief{6378136.3 + 500e3, 0.004, 97.8 * core::kDegToRad,
+                                       157.5 * core::kDegToRad, 90.0 * core::kDegToRad, 0.0};
+  astro::RelativeOrbitalElements roe;
+  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;
+  roe /= chief.a;
+  const RoeCovariance p = RoeCovariance::Identity() / (chief.a * chief.a);
+  for (const SafetyPlane plane : {SafetyPlane::kRadialNormal, SafetyPlane::kThreeDimensional}) {
+    PassiveSafetySettings s;
+    s.plane = plane;
+    bool ok = false;
+    const long allocations =
+        test::count_allocations([&] { ok = evaluate_passive_safety(chief, roe, p, s).ok(); });
+    EXPECT_TRUE(ok);
+    EXPECT_EQ(allocations, 0);
+  }
+}
+
+}  // namespace
+}  // namespace visors::safety
