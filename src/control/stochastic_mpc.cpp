@@ -1,0 +1,126 @@
+#include "control/stochastic_mpc.hpp"
+#include "control/impulse_effect.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "astro/roe_stm.hpp"
+
+namespace visors::control {
+namespace {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+core::Error invalid(std::string field, std::string message) {
+  return core::Error{std::move(field), std::move(message)};
+}
+
+bool symmetric_psd(const Matrix6d& m, bool strictly) {
+  if (!m.allFinite()) return false;
+  const double scale = std::max(m.cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
+  if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) return false;
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(0.5 * (m + m.transpose()), Eigen::EigenvaluesOnly);
+  const double min_eig = eig.eigenvalues().minCoeff();
+  return strictly ? min_eig > 0.0 : min_eig >= -1e-12 * scale;
+}
+
+}  // namespace
+
+StochasticMpc::StochasticMpc(const StochasticMpcSettings& settings, ReachableSetPlanner planner)
+    : settings_(settings), planner_(std::move(planner)) {}
+
+core::Result<StochasticMpc> StochasticMpc::create(const StochasticMpcSettings& s) {
+  if (!(s.mahalanobis_threshold > 0.0) || !std::isfinite(s.mahalanobis_threshold)) {
+    return invalid("mahalanobis_threshold", "must be finite and > 0");
+  }
+  if (!(s.execution_sigma_fraction >= 0.0) || !std::isfinite(s.execution_sigma_fraction)) {
+    return invalid("execution_sigma_fraction", "must be finite and >= 0");
+  }
+  if (!(s.execution_sigma_floor_mps >= 0.0) || !std::isfinite(s.execution_sigma_floor_mps)) {
+    return invalid("execution_sigma_floor_mps", "must be finite and >= 0");
+  }
+  if (!symmetric_psd(s.terminal_process_noise, false)) {
+    return invalid("terminal_process_noise", "must be finite, symmetric and positive semidefinite");
+  }
+  if (!(s.freeze_time_s >= 0.0) || !std::isfinite(s.freeze_time_s)) return invalid("freeze_time_s", "must be finite and >= 0");
+  if (!(s.burn_latency_s >= 0.0) || !std::isfinite(s.burn_latency_s)) return invalid("burn_latency_s", "must be finite and >= 0");
+  auto planner = ReachableSetPlanner::create(s.planner);
+  if (!planner.ok()) return invalid("planner." + planner.error().field, planner.error().message);
+  return StochasticMpc(s, std::move(planner).value());
+}
+
+core::Result<bool> StochasticMpc::set_target(const astro::RelativeOrbitalElements& roe_target, double tf) {
+  if (!roe_target.allFinite()) return invalid("roe_target", "must be finite");
+  if (!std::isfinite(tf)) return invalid("tf", "must be finite");
+  target_ = roe_target;
+  tf_ = tf;
+  has_target_ = true;
+  has_plan_ = false;
+  plan_ = ManeuverPlan{};
+  return true;
+}
+
+core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElements& chief_mean_t,
+                                          const astro::RelativeOrbitalElements& roe_estimate,
+                                          const Matrix6d& covariance) {
+  if (!has_target_) return invalid("target", "set_target() was not called");
+  if (!std::isfinite(t) || t < last_t_ || t > tf_) return invalid("t", "must be finite, non-decreasing and <= tf");
+  const auto chief_ok = astro::validate_keplerian(chief_mean_t);
+  if (!chief_ok.ok()) return invalid("chief_mean_t." + chief_ok.error().field, chief_ok.error().message);
+  if (!roe_estimate.allFinite()) return invalid("roe_estimate", "must be finite");
+  if (!symmetric_psd(covariance, true)) return invalid("covariance", "must be finite, symmetric and positive definite");
+  last_t_ = t;
+
+  const core::EarthGravityConstants& gravity = settings_.planner.gravity;
+  const double tau = tf_ - t;
+
+  // Executed impulses (t_j < t) leave the plan.
+  std::erase_if(plan_.impulses, [t](const Impulse& imp) { return imp.t < t; });
+
+  // Predicted terminal state and covariance with the remaining impulses.
+  auto predict = [&](Eigen::Matrix<double, 6, 1>& mean, Matrix6d& cov) {
+    const astro::RoeStm phi = astro::j2_roe_stm(chief_mean_t, tau, gravity);
+    mean = phi * roe_estimate;
+    cov = phi * covariance * phi.transpose() + settings_.terminal_process_noise;
+    for (const Impulse& imp : plan_.impulses) {
+      const Eigen::Matrix<double, 6, 3> b = impulse_effect(chief_mean_t, imp.t - t, tau, gravity);
+      mean += b * imp.dv_rtn;
+      const double sigma = settings_.execution_sigma_fraction * imp.dv_rtn.norm() + settings_.execution_sigma_floor_mps;
+      cov += (sigma * sigma) * (b * b.transpose());
+    }
+  };
+
+  MpcStep out;
+  Eigen::Matrix<double, 6, 1> mean;
+  Matrix6d cov;
+  predict(mean, cov);
+  if (has_plan_) {
+    const Eigen::LLT<Matrix6d> llt(cov);
+    if (llt.info() != Eigen::Success) return invalid("covariance", "predicted terminal covariance is not positive definite");
+    const Eigen::Matrix<double, 6, 1> err = mean - target_;
+    out.mahalanobis = std::sqrt(err.dot(llt.solve(err)));
+  } else {
+    out.mahalanobis = std::numeric_limits<double>::infinity();
+  }
+
+  const bool frozen = tau < settings_.freeze_time_s;
+  if ((!has_plan_ || out.mahalanobis > settings_.mahalanobis_threshold) && !frozen) {
+    const double t_earliest = std::min(settings_.burn_latency_s, tau);
+    auto fresh = planner_.plan(chief_mean_t, roe_estimate, target_, t_earliest, tau);
+    if (!fresh.ok()) return fresh.error();
+    plan_ = std::move(fresh).value();
+    for (Impulse& imp : plan_.impulses) imp.t += t;
+    has_plan_ = true;
+    ++replans_;
+    out.replanned = true;
+    predict(mean, cov);
+  }
+  out.remaining = plan_.impulses;
+  out.roe_final_predicted = mean;
+  return out;
+}
+
+}  // namespace visors::control
