@@ -1,8 +1,10 @@
-// Per-call time of the reachable-set planner (control/reachable_set_planner.hpp, default settings:
-// 241 grid times, 28-constraint restricted dual) on the VISORS science reconfigurations, for
-// horizons of 0.5 and 1 orbit of the mission chief. Cases cycle through standby -> science,
-// science -> standby and a small science-orbit trim, each at 8 chief phases (M0 = 0, 45, ...,
-// 315 deg). Counters: median_us, worst_us (per call), median_exchange_iterations, failures.
+// Per-call time of the planners, the buffer and the safety checks (issue 5 benchmarks) on the
+// VISORS reconfigurations: standby -> science, science -> standby and a small science-orbit trim,
+// each at 8 chief phases (M0 = 0, 45, ..., 315 deg). Reachable set (default settings: 241 grid
+// times, 28-constraint restricted dual) for horizons of 0.5 and 1 orbit; closed form over 2
+// orbits; least squares at 3 fixed times over 0.6 orbit; one passive-safety check over 1.5 orbits
+// (RN plane, 3 sigma, 360 samples per orbit); the escape; the buffer of a 55 mm/s impulse.
+// Counters: median_us, worst_us (per call), failures.
 // Run: ninja -C build visors_bench_planners && build/bench/visors_bench_planners
 
 #include <benchmark/benchmark.h>
@@ -13,7 +15,12 @@
 #include <numbers>
 #include <vector>
 
+#include "control/closed_form_planner.hpp"
+#include "control/least_squares_planner.hpp"
+#include "control/maneuver_buffer.hpp"
 #include "control/reachable_set_planner.hpp"
+#include "safety/escape_maneuver.hpp"
+#include "safety/passive_safety.hpp"
 
 namespace {
 
@@ -84,5 +91,83 @@ void BM_ReachableSetPlan(benchmark::State& state) {
 }
 // Argument: horizon in hundredths of an orbit.
 BENCHMARK(BM_ReachableSetPlan)->Arg(50)->Arg(100)->Iterations(5 * 24)->Unit(benchmark::kMicrosecond);
+
+// Times `call(case)` over the cases, cyclically; per-call median and worst.
+template <typename Call>
+void time_cases(benchmark::State& state, Call call) {
+  const std::vector<Case> all = cases();
+  std::vector<double> times;
+  int failures = 0;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool ok = call(all[next]);
+    const auto t1 = std::chrono::steady_clock::now();
+    times.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
+    if (!ok) ++failures;
+    next = (next + 1) % all.size();
+  }
+  std::sort(times.begin(), times.end());
+  state.counters["median_us"] = times[times.size() / 2];
+  state.counters["worst_us"] = times.back();
+  state.counters["failures"] = failures;
+}
+
+double orbit_period(const KeplerianElements& chief) {
+  return 2.0 * std::numbers::pi * std::sqrt(chief.a * chief.a * chief.a / 3.986004415e14);
+}
+
+void BM_ClosedFormPlan(benchmark::State& state) {
+  time_cases(state, [](const Case& c) {
+    const auto plan = visors::control::plan_closed_form(c.chief, c.roe0, c.target, 2.0 * orbit_period(c.chief));
+    benchmark::DoNotOptimize(plan);
+    return plan.ok();
+  });
+}
+BENCHMARK(BM_ClosedFormPlan)->Iterations(5 * 24)->Unit(benchmark::kMicrosecond);
+
+void BM_LeastSquaresPlan(benchmark::State& state) {
+  time_cases(state, [](const Case& c) {
+    const double period = orbit_period(c.chief);
+    const double times[] = {0.05 * period, 0.3 * period, 0.55 * period};
+    const auto plan = visors::control::plan_least_squares(c.chief, c.roe0, c.target, 0.6 * period, times);
+    benchmark::DoNotOptimize(plan);
+    return plan.ok();
+  });
+}
+BENCHMARK(BM_LeastSquaresPlan)->Iterations(5 * 24)->Unit(benchmark::kMicrosecond);
+
+// Navigation-level covariance: (5 cm)^2 per a*dROE component.
+Eigen::Matrix<double, 6, 6> nav_covariance(double a) {
+  return Eigen::Matrix<double, 6, 6>::Identity() * (0.05 * 0.05) / (a * a);
+}
+
+void BM_PassiveSafetyCheck(benchmark::State& state) {
+  const visors::safety::PassiveSafetySettings settings;
+  time_cases(state, [&](const Case& c) {
+    const auto r = visors::safety::evaluate_passive_safety(c.chief, c.target, nav_covariance(c.chief.a), settings);
+    benchmark::DoNotOptimize(r);
+    return r.ok();
+  });
+}
+BENCHMARK(BM_PassiveSafetyCheck)->Iterations(5 * 24)->Unit(benchmark::kMicrosecond);
+
+void BM_EscapePlan(benchmark::State& state) {
+  time_cases(state, [](const Case& c) {
+    const auto r = visors::safety::plan_escape(c.chief, c.target, nav_covariance(c.chief.a), 0.0, {});
+    benchmark::DoNotOptimize(r);
+    return r.ok();
+  });
+}
+BENCHMARK(BM_EscapePlan)->Iterations(5 * 24)->Unit(benchmark::kMicrosecond);
+
+void BM_BufferImpulse(benchmark::State& state) {
+  time_cases(state, [](const Case& c) {
+    const auto r = visors::control::buffer_impulse(c.chief, {2000.0, {0.010, 0.050, 0.020}}, 10.62);
+    benchmark::DoNotOptimize(r);
+    return r.ok();
+  });
+}
+BENCHMARK(BM_BufferImpulse)->Iterations(5 * 24)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
