@@ -21,7 +21,6 @@ using Matrix63 = Eigen::Matrix<double, 6, 3>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Vector4d = Eigen::Vector4d;
 
-constexpr double kMaxEccentricity = 0.1;
 constexpr int kMaxCandidates = 12;
 constexpr int kMaxImpulses = kMaxCandidates + 2;
 
@@ -66,16 +65,7 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
                                             const core::EarthGravityConstants& gravity) {
   using namespace astro::roe;
   // ---- validation --------------------------------------------------------------------------
-  const auto valid = astro::validate_keplerian(chief_mean_t0);
-  if (!valid.ok()) return core::Error{"chief_mean_t0." + valid.error().field, valid.error().message};
-  if (chief_mean_t0.e >= kMaxEccentricity) {
-    return core::Error{"chief_mean_t0.e", "must be below 0.1 (near-circular closed form)"};
-  }
-  if (std::sin(chief_mean_t0.i) < 1e-6) return core::Error{"chief_mean_t0.i", "must not be equatorial"};
-  if (!(gravity.mu > 0.0) || !(gravity.re > 0.0) || !std::isfinite(gravity.mu) || !std::isfinite(gravity.re) ||
-      !std::isfinite(gravity.j2)) {
-    return core::Error{"gravity", "mu and re must be finite and positive, j2 finite"};
-  }
+  if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok.error();
   if (!roe0.allFinite()) return core::Error{"roe0", "must be finite"};
   if (!roe_target.allFinite()) return core::Error{"roe_target", "must be finite"};
   if (!std::isfinite(tf)) return core::Error{"tf", "must be finite"};

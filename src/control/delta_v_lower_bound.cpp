@@ -1,4 +1,5 @@
 #include "control/delta_v_lower_bound.hpp"
+#include "control/impulse_effect.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +8,6 @@
 
 namespace visors::control {
 namespace {
-
-// Near-circular theory: the closed forms are first order in e (see the header).
-constexpr double kMaxEccentricity = 0.1;
 
 // Support function of the (a da, a dlambda) effects of unit impulses (radial and tangential
 // components, lever arm c in [0, lever]) in the direction (l1, l2): the impulse u maps to
@@ -76,16 +74,7 @@ core::Result<DeltaVLowerBound> delta_v_lower_bound(const astro::KeplerianElement
                                                    double window,
                                                    const core::EarthGravityConstants& gravity) {
   using namespace astro::roe;
-  const auto valid = astro::validate_keplerian(chief_mean);
-  if (!valid.ok()) return core::Error{"chief_mean." + valid.error().field, valid.error().message};
-  if (chief_mean.e >= kMaxEccentricity) {
-    return core::Error{"chief_mean.e", "must be below 0.1 (near-circular closed forms)"};
-  }
-  if (std::sin(chief_mean.i) < 1e-6) return core::Error{"chief_mean.i", "must not be equatorial"};
-  if (!(gravity.mu > 0.0) || !(gravity.re > 0.0) || !std::isfinite(gravity.mu) || !std::isfinite(gravity.re) ||
-      !std::isfinite(gravity.j2)) {
-    return core::Error{"gravity", "mu and re must be finite and positive, j2 finite"};
-  }
+  if (auto ok = validate_planner_chief(chief_mean, "chief_mean", gravity); !ok) return ok.error();
   if (!delta_roe.allFinite()) return core::Error{"delta_roe", "must be finite"};
   if (!std::isfinite(window) || window <= 0.0) return core::Error{"window", "must be finite and positive"};
 

@@ -1,5 +1,7 @@
 #include "control/impulse_effect.hpp"
 
+#include <cmath>
+
 #include "astro/control_input_matrix.hpp"
 #include "astro/j2_secular.hpp"
 #include "astro/roe_stm.hpp"
@@ -19,6 +21,19 @@ astro::RelativeOrbitalElements predict_roe(const astro::KeplerianElements& chief
   astro::RelativeOrbitalElements roe = astro::j2_roe_stm(chief_mean_t0, t_ref, gravity) * roe0;
   for (const Impulse& i : impulses) roe += impulse_effect(chief_mean_t0, i.t, t_ref, gravity) * i.dv_rtn;
   return roe;
+}
+
+core::Result<bool> validate_planner_chief(const astro::KeplerianElements& chief, const std::string& chief_name,
+                                          const core::EarthGravityConstants& gravity) {
+  const auto valid = astro::validate_keplerian(chief);
+  if (!valid.ok()) return core::Error{chief_name + "." + valid.error().field, valid.error().message};
+  if (chief.e >= 0.1) return core::Error{chief_name + ".e", "must be below 0.1 (near-circular planners)"};
+  if (std::sin(chief.i) < 1e-6) return core::Error{chief_name + ".i", "must not be equatorial"};
+  if (!(gravity.mu > 0.0) || !(gravity.re > 0.0) || !std::isfinite(gravity.mu) || !std::isfinite(gravity.re) ||
+      !std::isfinite(gravity.j2)) {
+    return core::Error{"gravity", "mu and re must be finite and positive, j2 finite"};
+  }
+  return true;
 }
 
 }  // namespace visors::control

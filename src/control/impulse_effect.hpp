@@ -6,6 +6,7 @@
 // and Gamma(t_k) = control_input_matrix(chief(t_k)) (GVE, eccentric, with the Lambda terms), the
 // chief's mean elements at t_k from secular J2 (astro::propagate_mean_j2).
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -14,6 +15,7 @@
 #include "astro/relative_orbital_elements.hpp"
 #include "control/impulse.hpp"
 #include "core/constants.hpp"
+#include "core/status.hpp"
 
 namespace visors::control {
 
@@ -27,5 +29,10 @@ astro::RelativeOrbitalElements predict_roe(const astro::KeplerianElements& chief
                                            const astro::RelativeOrbitalElements& roe0,
                                            const std::vector<Impulse>& impulses, double t_ref,
                                            const core::EarthGravityConstants& gravity = {});
+
+/// Checks a chief for the near-circular planners (valid elements, e < 0.1, not equatorial) and the
+/// gravity constants; the error names `chief_name`.<field> or "gravity".
+core::Result<bool> validate_planner_chief(const astro::KeplerianElements& chief, const std::string& chief_name,
+                                          const core::EarthGravityConstants& gravity);
 
 }  // namespace visors::control

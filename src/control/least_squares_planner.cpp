@@ -8,6 +8,7 @@
 
 #include "astro/roe_stm.hpp"
 #include "control/closed_form_planner.hpp"
+#include "control/impulse_effect.hpp"
 
 namespace visors::control {
 
@@ -17,14 +18,7 @@ core::Result<LeastSquaresPlan> plan_least_squares(const astro::KeplerianElements
                                                   std::span<const double> burn_times,
                                                   const LeastSquaresSettings& settings,
                                                   const core::EarthGravityConstants& gravity) {
-  const auto valid = astro::validate_keplerian(chief_mean_t0);
-  if (!valid.ok()) return core::Error{"chief_mean_t0." + valid.error().field, valid.error().message};
-  if (chief_mean_t0.e >= 0.1) return core::Error{"chief_mean_t0.e", "must be below 0.1 (near-circular)"};
-  if (std::sin(chief_mean_t0.i) < 1e-6) return core::Error{"chief_mean_t0.i", "must not be equatorial"};
-  if (!(gravity.mu > 0.0) || !(gravity.re > 0.0) || !std::isfinite(gravity.mu) || !std::isfinite(gravity.re) ||
-      !std::isfinite(gravity.j2)) {
-    return core::Error{"gravity", "mu and re must be finite and positive, j2 finite"};
-  }
+  if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok.error();
   if (!roe0.allFinite()) return core::Error{"roe0", "must be finite"};
   if (!roe_target.allFinite()) return core::Error{"roe_target", "must be finite"};
   if (!std::isfinite(tf) || tf <= 0.0) return core::Error{"tf", "must be finite and positive"};

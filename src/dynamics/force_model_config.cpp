@@ -21,4 +21,15 @@ ForceModelConfig ForceModelConfig::onboard() {
   return c;
 }
 
+ForceModelConfig ForceModelConfig::gravity_only(int degree, int order) {
+  ForceModelConfig c = onboard();
+  c.gravity.degree = degree;
+  c.gravity.order = order;
+  c.drag.enabled = false;
+  c.srp.enabled = false;
+  c.sun = false;
+  c.moon = false;
+  return c;
+}
+
 }  // namespace visors::dynamics

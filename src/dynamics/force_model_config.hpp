@@ -83,6 +83,9 @@ struct ForceModelConfig {
   /// cylindrical shadow, Sun, Moon,
   /// no EOP file (uplinked constants), frame refresh 600 s.
   static ForceModelConfig onboard();
+  /// The on-board gravity field truncated to (degree, order) and nothing else: degree 0 is
+  /// two-body motion, (2, 0) the J2 problem (test references and analyses).
+  static ForceModelConfig gravity_only(int degree, int order);
 };
 
 }  // namespace visors::dynamics

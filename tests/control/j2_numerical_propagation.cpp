@@ -14,13 +14,7 @@ astro::RelativeOrbitalElements propagate_j2_numerically(const astro::KeplerianEl
                                                         const astro::RelativeOrbitalElements& roe0,
                                                         const std::vector<Impulse>& impulses, double tf) {
   const core::EarthGravityConstants g;
-  dynamics::ForceModelConfig c = dynamics::ForceModelConfig::onboard();
-  c.gravity.degree = 2;
-  c.gravity.order = 0;
-  c.drag.enabled = false;
-  c.srp.enabled = false;
-  c.sun = false;
-  c.moon = false;
+  dynamics::ForceModelConfig c = dynamics::ForceModelConfig::gravity_only(2, 0);
   auto forces = dynamics::ForceModel::create(c, {});
   EXPECT_TRUE(forces.ok()) << forces.error().describe();
   dynamics::ForceModel fm = std::move(forces).value();

@@ -228,13 +228,7 @@ core::Result<astro::KeplerianElements> mean_elements(const core::StateVector& x,
 ClosedLoopResult run_closed_loop(const astro::RelativeOrbitalElements& roe0, const astro::RelativeOrbitalElements& target,
                                  double tf, double nav_sigma_m) {
   ClosedLoopResult out;
-  dynamics::ForceModelConfig c = dynamics::ForceModelConfig::onboard();
-  c.gravity.degree = 2;
-  c.gravity.order = 0;
-  c.drag.enabled = false;
-  c.srp.enabled = false;
-  c.sun = false;
-  c.moon = false;
+  dynamics::ForceModelConfig c = dynamics::ForceModelConfig::gravity_only(2, 0);
   auto forces_r = dynamics::ForceModel::create(c, {});
   EXPECT_TRUE(forces_r.ok()) << forces_r.error().describe();
   if (!forces_r.ok()) return out;

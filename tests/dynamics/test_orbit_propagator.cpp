@@ -29,18 +29,6 @@ astro::KeplerianElements mission_chief() {
   return {6378136.3 + 500e3, 0.004, 97.8 * core::kDegToRad, 157.5 * core::kDegToRad, 90.0 * core::kDegToRad, 0.0};
 }
 
-// Only the terms asked for: gravity to (degree, order), nothing else.
-ForceModelConfig gravity_only(int degree, int order) {
-  ForceModelConfig c = ForceModelConfig::onboard();
-  c.gravity.degree = degree;
-  c.gravity.order = order;
-  c.drag.enabled = false;
-  c.srp.enabled = false;
-  c.sun = false;
-  c.moon = false;
-  return c;
-}
-
 ForceModel make_forces(const ForceModelConfig& config) {
   auto forces = ForceModel::create(config, SpacecraftProperties{});
   EXPECT_TRUE(forces.ok()) << forces.error().describe();
@@ -72,7 +60,7 @@ double energy(const core::StateVector& x, double gm) { return 0.5 * x.v.squaredN
 // Issue 3 acceptance: two-body energy and angular momentum conserved to 1e-10 (relative) over
 // 10 days with the reference integrator.
 TEST(OrbitPropagator, TwoBodyConservesEnergyAndAngularMomentumOverTenDays) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   OrbitPropagator propagator = make_propagator(forces, reference_settings());
   const core::StateVector x0 = astro::cartesian_from_keplerian(mission_chief(), forces.gm());
   const auto x1 = propagator.propagate_to(kEpoch, x0, kEpoch + 10.0 * 86400.0);
@@ -88,7 +76,7 @@ TEST(OrbitPropagator, TwoBodyConservesEnergyAndAngularMomentumOverTenDays) {
 
 // Two-body motion against Kepler's equation (astro::propagate_kepler), one day.
 TEST(OrbitPropagator, TwoBodyMatchesKeplerOverOneDay) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   OrbitPropagator propagator = make_propagator(forces, reference_settings());
   const astro::KeplerianElements k0 = mission_chief();
   const auto x1 = propagator.propagate_to(kEpoch, astro::cartesian_from_keplerian(k0, forces.gm()), kEpoch + 86400.0);
@@ -105,7 +93,7 @@ TEST(OrbitPropagator, TwoBodyMatchesKeplerOverOneDay) {
 // the GCRF pole in 2024): for a near-polar orbit the J2 rates scale with cos i = -0.136, so
 // measuring i from the GCRF equator instead would shift them by up to 2 %.
 TEST(OrbitPropagator, J2OnlySecularRatesMatchFirstOrderTheory) {
-  ForceModel forces = make_forces(gravity_only(2, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(2, 0));
   OrbitPropagator propagator = make_propagator(forces, reference_settings());
   // J2 = -sqrt(5) C20 of the field the force model loaded (the file, or the embedded fallback).
   const auto file = load_gravity_field(forces.config().gravity.model, 2);
@@ -189,7 +177,7 @@ TEST(OrbitPropagator, Rk4AtTheTruthStepMatchesTheReferenceOverOneDay) {
 
 // A maneuver at t equals stopping at t, adding dv (RTN of the pre-burn state) and restarting.
 TEST(OrbitPropagator, ImpulsiveManeuverEqualsStopAddRestart) {
-  ForceModel forces = make_forces(gravity_only(4, 4));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(4, 4));
   OrbitPropagator propagator = make_propagator(forces, rk4_settings(10.0));
   const core::StateVector x0 = astro::cartesian_from_keplerian(mission_chief(), forces.gm());
   const GpsTime t_burn = kEpoch + 1234.567;
@@ -210,7 +198,7 @@ TEST(OrbitPropagator, ImpulsiveManeuverEqualsStopAddRestart) {
 // Outputs land exactly on requested times, including ones off the step grid, and the state at a
 // maneuver time is the post-burn state.
 TEST(OrbitPropagator, OutputsLandExactlyOnRequestedTimes) {
-  ForceModel forces = make_forces(gravity_only(2, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(2, 0));
   for (const IntegratorKind kind : {IntegratorKind::kRk4Fixed, IntegratorKind::kRk4Dynamic,
                                     IntegratorKind::kDormandPrince87}) {
     PropagatorSettings settings = rk4_settings(10.0, kind);
@@ -235,7 +223,7 @@ TEST(OrbitPropagator, OutputsLandExactlyOnRequestedTimes) {
 // The dynamic step never takes a step shorter than min_step between distant events: 25 s with
 // a 10 s step and 1 s minimum is 10 + 7.5 + 7.5 (the last 15 s split in two), not 10 + 10 + 5.
 TEST(OrbitPropagator, DynamicStepSplitsTheRemainderEvenly) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   PropagatorSettings settings = rk4_settings(10.0);
   settings.min_step = 6.0;
   OrbitPropagator propagator = make_propagator(forces, settings);
@@ -245,7 +233,7 @@ TEST(OrbitPropagator, DynamicStepSplitsTheRemainderEvenly) {
 }
 
 TEST(OrbitPropagator, RejectsUnsortedOutputs) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   OrbitPropagator propagator = make_propagator(forces, rk4_settings(10.0));
   const std::vector<GpsTime> outputs = {kEpoch + 20.0, kEpoch + 10.0};
   const auto r = propagator.propagate(kEpoch, astro::cartesian_from_keplerian(mission_chief(), forces.gm()),
@@ -255,7 +243,7 @@ TEST(OrbitPropagator, RejectsUnsortedOutputs) {
 }
 
 TEST(OrbitPropagator, RejectsAPositionInsideTheEarth) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   OrbitPropagator propagator = make_propagator(forces, rk4_settings(10.0));
   const auto r = propagator.propagate_to(kEpoch, {{1e6, 0, 0}, {0, 7e3, 0}}, kEpoch + 10.0);
   ASSERT_FALSE(r.ok());
@@ -263,7 +251,7 @@ TEST(OrbitPropagator, RejectsAPositionInsideTheEarth) {
 }
 
 TEST(OrbitPropagator, ReportsReentryInsteadOfIntegratingThroughTheEarth) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   OrbitPropagator propagator = make_propagator(forces, rk4_settings(10.0));
   // Falling straight down from 200 km altitude.
   const auto r = propagator.propagate_to(kEpoch, {{6.578e6, 0, 0}, {-2e3, 100.0, 0}}, kEpoch + 3600.0);
@@ -272,7 +260,7 @@ TEST(OrbitPropagator, ReportsReentryInsteadOfIntegratingThroughTheEarth) {
 }
 
 TEST(OrbitPropagator, RejectsANonFiniteState) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   OrbitPropagator propagator = make_propagator(forces, rk4_settings(10.0));
   const auto r = propagator.propagate_to(kEpoch, {{7e6, 0, NAN}, {0, 7e3, 0}}, kEpoch + 10.0);
   ASSERT_FALSE(r.ok());
@@ -280,7 +268,7 @@ TEST(OrbitPropagator, RejectsANonFiniteState) {
 }
 
 TEST(OrbitPropagator, RejectsANonPositiveStep) {
-  ForceModel forces = make_forces(gravity_only(0, 0));
+  ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   EXPECT_EQ(OrbitPropagator::create(forces, rk4_settings(0.0)).error().field, "step");
 }
 

@@ -165,13 +165,7 @@ TEST(EscapeManeuver, ImpulseVerifiedByExactElementDifferencing) {
 TEST(EscapeManeuver, DriftConfirmedByNumericalJ2Propagation) {
   using core::GpsTime;
   const GpsTime epoch = GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kUtc).value();
-  dynamics::ForceModelConfig c = dynamics::ForceModelConfig::onboard();
-  c.gravity.degree = 2;
-  c.gravity.order = 0;
-  c.drag.enabled = false;
-  c.srp.enabled = false;
-  c.sun = false;
-  c.moon = false;
+  dynamics::ForceModelConfig c = dynamics::ForceModelConfig::gravity_only(2, 0);
   auto forces_or = dynamics::ForceModel::create(c, dynamics::SpacecraftProperties{});
   ASSERT_TRUE(forces_or.ok()) << forces_or.error().describe();
   dynamics::ForceModel forces = std::move(forces_or).value();
