@@ -4,11 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "apps/mission_input.hpp"
 #include "apps/run_tool.hpp"
 
 namespace {
 
-const std::string kChief = R"("chief":{"a":6878136.3,"e":0.004,"i":1.7069,"raan":2.7489,"argp":1.5708,"M":0})";
+const std::string kChief = visors::test::mission_chief_json();
 
 // (10, 50, 20) mm/s at 10.62 kg = 0.58 N s: more than 26 pieces of <= 0.022 N s, 46.5 s apart.
 TEST(ToolBuffer, SplitsALargeImpulseIntoFeasiblePieces) {

@@ -4,21 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "apps/mission_input.hpp"
 #include "apps/run_tool.hpp"
 
 namespace {
 
-std::string chief_json() {
-  return R"("chief":{"a":6878136.3,"e":0.004,"i":1.7069320084504542,"raan":2.748893571891069,)"
-         R"("argp":1.5707963267948966,"M":0.0})";
-}
-
-std::string input(const std::string& rest) {
-  std::string s = "{";
-  s += chief_json();
-  s += rest;
-  return s;
-}
+using visors::test::with_mission_chief;
 
 // Escape from the mission science orbit a*[-2.62, 45.21, -34.51, 4.78, -18.72, 2.72] m with a
 // 0.1 m^2 covariance per a*ROE: the deputy is ahead (dlambda > 0), so a*da after the burn is
@@ -26,7 +17,7 @@ std::string input(const std::string& rest) {
 // t_earliest; RN margin after >= epsilon.
 TEST(ToolEscape, ScienceOrbitEscape) {
   const auto run = visors::test::run_tool(
-      "escape", input(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":120,"epsilon":5,"da_target":5,)"
+      "escape", with_mission_chief(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":120,"epsilon":5,"da_target":5,)"
                       R"("cov":[[0.1,0,0,0,0,0],[0,0.1,0,0,0,0],[0,0,0.1,0,0,0],[0,0,0,0.1,0,0],[0,0,0,0,0.1,0],[0,0,0,0,0,0.1]]})"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = run.json();
@@ -39,14 +30,14 @@ TEST(ToolEscape, ScienceOrbitEscape) {
 
 TEST(ToolEscape, MissingCovExitCode2Named) {
   const auto run = visors::test::run_tool(
-      "escape", input(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":0,"epsilon":5,"da_target":5})"));
+      "escape", with_mission_chief(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":0,"epsilon":5,"da_target":5})"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("cov"), std::string::npos) << run.err;
 }
 
 TEST(ToolEscape, NegativeDaTargetExitCode2Named) {
   const auto run = visors::test::run_tool(
-      "escape", input(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":0,"epsilon":5,"da_target":-5,)"
+      "escape", with_mission_chief(R"(,"roe":[-2.62,45.21,-34.51,4.78,-18.72,2.72],"t_earliest":0,"epsilon":5,"da_target":-5,)"
                       R"("cov":[[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0],[0,0,0,0,0,0]]})"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("da_target"), std::string::npos) << run.err;

@@ -6,13 +6,14 @@
 #include <cmath>
 #include <string>
 
+#include "apps/mission_input.hpp"
 #include "apps/run_tool.hpp"
 
 namespace {
 
 // Mission chief (mean) and the standby -> science reconfiguration (a*dROE, m): the paper's
 // science ROE as the target.
-const std::string kChief = R"("chief":{"a":6878136.3,"e":0.004,"i":1.7069,"raan":2.7489,"argp":1.5708,"M":0})";
+const std::string kChief = visors::test::mission_chief_json();
 const std::string kStandby = R"("roe_start":[0,0,0,200,0,200])";
 const std::string kScience = R"("roe_target":[-2.62,45.21,-34.51,4.78,-18.72,2.72])";
 

@@ -3,28 +3,18 @@
 
 #include <string>
 
+#include "apps/mission_input.hpp"
 #include "apps/run_tool.hpp"
 
 namespace {
 
-// Mission chief (a = 6378136.3 + 500 km, e = 0.004, i = 97.8 deg, RAAN 157.5 deg, argp 90 deg).
-std::string chief_json() {
-  return R"("chief":{"a":6878136.3,"e":0.004,"i":1.7069320084504542,"raan":2.748893571891069,)"
-         R"("argp":1.5707963267948966,"M":0.0})";
-}
-
-std::string input(const std::string& rest) {
-  std::string s = "{";
-  s += chief_json();
-  s += rest;
-  return s;
-}
+using visors::test::with_mission_chief;
 
 // Mission standby orbit a*[0,0,0,200,0,200] m: parallel e/i vectors, RN minimum ~200 m
 // (199.2 m with the eccentric map and J2, tests/safety/test_passive_safety.cpp), safe.
 TEST(ToolSafety, StandbyOrbitIsSafe) {
   const auto run = visors::test::run_tool(
-      "safety", input(R"(,"roe":[0,0,0,200,0,200],"horizon":8515.5,"plane":"rn","q":3})"));
+      "safety", with_mission_chief(R"(,"roe":[0,0,0,200,0,200],"horizon":8515.5,"plane":"rn","q":3})"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = run.json();
   EXPECT_NEAR(out["min_separation"].get<double>(), 200.0, 1.5);
@@ -38,7 +28,7 @@ TEST(ToolSafety, StandbyOrbitIsSafe) {
 // keeps it safe over the horizon.
 TEST(ToolSafety, PerpendicularEiWithCovarianceIsUnsafe) {
   const auto run = visors::test::run_tool(
-      "safety", input(R"(,"roe":[0,50,0,100,100,0],"horizon":8515.5,"plane":"rn","q":3,"epsilon":5,)"
+      "safety", with_mission_chief(R"(,"roe":[0,50,0,100,100,0],"horizon":8515.5,"plane":"rn","q":3,"epsilon":5,)"
                       R"("cov":[[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,1,0,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]})"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = run.json();
@@ -48,20 +38,20 @@ TEST(ToolSafety, PerpendicularEiWithCovarianceIsUnsafe) {
 
 TEST(ToolSafety, NonPsdCovarianceExitCode2NamesCov) {
   const auto run = visors::test::run_tool(
-      "safety", input(R"(,"roe":[0,0,0,200,0,200],"horizon":8515.5,"plane":"rn","q":3,)"
+      "safety", with_mission_chief(R"(,"roe":[0,0,0,200,0,200],"horizon":8515.5,"plane":"rn","q":3,)"
                       R"("cov":[[-1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,1,0,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]})"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("cov"), std::string::npos) << run.err;
 }
 
 TEST(ToolSafety, BadPlaneAndShortRoeNamed) {
-  auto run = visors::test::run_tool("safety", input(R"(,"roe":[0,0,0,200,0,200],"horizon":100,"plane":"xy","q":3})"));
+  auto run = visors::test::run_tool("safety", with_mission_chief(R"(,"roe":[0,0,0,200,0,200],"horizon":100,"plane":"xy","q":3})"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("plane"), std::string::npos) << run.err;
-  run = visors::test::run_tool("safety", input(R"(,"roe":[0,0,0,200,0],"horizon":100,"plane":"rn","q":3})"));
+  run = visors::test::run_tool("safety", with_mission_chief(R"(,"roe":[0,0,0,200,0],"horizon":100,"plane":"rn","q":3})"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("roe"), std::string::npos) << run.err;
-  run = visors::test::run_tool("safety", input(R"(,"roe":[0,0,0,200,0,200],"horizon":-1,"plane":"rn","q":3})"));
+  run = visors::test::run_tool("safety", with_mission_chief(R"(,"roe":[0,0,0,200,0,200],"horizon":-1,"plane":"rn","q":3})"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("horizon"), std::string::npos) << run.err;
 }

@@ -19,6 +19,7 @@
 
 #include "astro/j2_secular.hpp"
 #include "astro/roe_stm.hpp"
+#include "control/mission.hpp"
 #include "control/impulse_effect.hpp"
 #include "control/reachable_set_planner.hpp"
 #include "optim/conic_solver.hpp"
@@ -30,22 +31,11 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 const core::EarthGravityConstants kGravity{};
 
-// Mission chief (task brief; digest "VISORS chief numbers"), mean elements at t0.
-astro::KeplerianElements mission_chief() {
-  return {.a = 6378136.3 + 500e3, .e = 0.004, .i = 97.8 * kDeg, .raan = 157.5 * kDeg, .argp = 90.0 * kDeg, .M = 0.0};
-}
-double period_s() {
-  const double a = mission_chief().a;
-  return 2.0 * std::numbers::pi * std::sqrt(a * a * a / kGravity.mu);
-}
-astro::RelativeOrbitalElements roe_m(double da, double dl, double dex, double dey, double dix, double diy) {
-  astro::RelativeOrbitalElements r;
-  r << da, dl, dex, dey, dix, diy;
-  return r / mission_chief().a;
-}
-// Science and standby ROE of the task brief, a*droe in metres.
-astro::RelativeOrbitalElements science() { return roe_m(-2.62, 45.21, -34.51, 4.78, -18.72, 2.72); }
-astro::RelativeOrbitalElements standby() { return roe_m(0, 0, 0, 200, 0, 200); }
+using test::mission_chief;
+using test::period_s;
+using test::roe_m;
+using test::science;
+using test::standby;
 
 struct Reference {
   double dv = 0.0;          // dense-grid optimum [m/s] (dual objective)
@@ -212,8 +202,8 @@ double cvxopt_dense_optimum(const astro::RelativeOrbitalElements& roe0, const as
       for (int i = 0; i < 6; ++i) data << bt(r, i) << (i < 5 ? " " : "\n");
     }
   }
-  const test::TempFile script(kCvxoptDual, ".py");
-  const test::TempFile input(data.str(), ".txt");
+  const ::visors::test::TempFile script(kCvxoptDual, ".py");
+  const ::visors::test::TempFile input(data.str(), ".txt");
   const std::string command = "/usr/bin/python3 '" + script.path().string() + "' '" + input.path().string() + "'";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return -1.0;

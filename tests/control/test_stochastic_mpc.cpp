@@ -13,6 +13,7 @@
 #include "astro/keplerian_elements.hpp"
 #include "astro/mean_osculating.hpp"
 #include "astro/roe_stm.hpp"
+#include "control/mission.hpp"
 #include "control/impulse_effect.hpp"
 #include "control/stochastic_mpc.hpp"
 #include "core/gps_time.hpp"
@@ -26,20 +27,11 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 constexpr double kDeg = std::numbers::pi / 180.0;
 const core::EarthGravityConstants kGravity{};
 
-astro::KeplerianElements mission_chief() {
-  return {.a = 6378136.3 + 500e3, .e = 0.004, .i = 97.8 * kDeg, .raan = 157.5 * kDeg, .argp = 90.0 * kDeg, .M = 0.0};
-}
-double period_s() {
-  const double a = mission_chief().a;
-  return 2.0 * std::numbers::pi * std::sqrt(a * a * a / kGravity.mu);
-}
-astro::RelativeOrbitalElements roe_m(double da, double dl, double dex, double dey, double dix, double diy) {
-  astro::RelativeOrbitalElements r;
-  r << da, dl, dex, dey, dix, diy;
-  return r / mission_chief().a;
-}
-astro::RelativeOrbitalElements science() { return roe_m(-2.62, 45.21, -34.51, 4.78, -18.72, 2.72); }
-astro::RelativeOrbitalElements standby() { return roe_m(0, 0, 0, 200, 0, 200); }
+using test::mission_chief;
+using test::period_s;
+using test::roe_m;
+using test::science;
+using test::standby;
 
 // Navigation covariance: sigma_m metres on every a*droe component.
 Matrix6d nav_covariance(double sigma_m) {
