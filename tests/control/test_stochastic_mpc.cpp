@@ -83,19 +83,23 @@ StochasticMpcSettings navigation_limited() {
   return settings;
 }
 
+// Plans standby -> science over one orbit at t = 0 (1 cm navigation sigma), then steps at
+// t = 1500 s with the linear-model state plus `disturbance`.
+core::Result<MpcStep> step_after_disturbance(StochasticMpc& mpc, const astro::RelativeOrbitalElements& disturbance) {
+  EXPECT_TRUE(mpc.set_target(science(), period_s()).ok());
+  const auto first = mpc.step(0.0, mission_chief(), standby(), nav_covariance(0.01));
+  if (!first.ok()) return first.error();
+  const double t = 1500.0;
+  const astro::KeplerianElements chief_t = astro::propagate_mean_j2(mission_chief(), t, kGravity);
+  return mpc.step(t, chief_t, linear_state(standby(), first->remaining, t) + disturbance, nav_covariance(0.01));
+}
+
 // Acceptance (c): a disturbance that pushes d over the threshold triggers a replanning, and the
 // new plan reaches the target from the disturbed state in the linear model.
 TEST(StochasticMpc, ReplansWhenADisturbancePushesTheDistanceOverTheThreshold) {
   StochasticMpc mpc = make_mpc(navigation_limited());
-  const double tf = period_s();
-  ASSERT_TRUE(mpc.set_target(science(), tf).ok());
-  const auto first = mpc.step(0.0, mission_chief(), standby(), nav_covariance(0.01));
-  ASSERT_TRUE(first.ok()) << first.error().describe();
-  const double t = 1500.0;
-  const astro::KeplerianElements chief_t = astro::propagate_mean_j2(mission_chief(), t, kGravity);
   // 0.5 m along-track error against a 1 cm navigation sigma: far beyond 4.1 sigma.
-  const astro::RelativeOrbitalElements disturbed = linear_state(standby(), first->remaining, t) + roe_m(0, 0.5, 0, 0, 0, 0);
-  const auto next = mpc.step(t, chief_t, disturbed, nav_covariance(0.01));
+  const auto next = step_after_disturbance(mpc, roe_m(0, 0.5, 0, 0, 0, 0));
   ASSERT_TRUE(next.ok()) << next.error().describe();
   EXPECT_GT(next->mahalanobis, mpc.settings().mahalanobis_threshold);
   EXPECT_TRUE(next->replanned);
@@ -107,14 +111,7 @@ TEST(StochasticMpc, ReplansWhenADisturbancePushesTheDistanceOverTheThreshold) {
 // covariance, not the raw error, decides.
 TEST(StochasticMpc, ExecutionUncertaintyRaisesTheReplanningBar) {
   StochasticMpc mpc = make_mpc();
-  const double tf = period_s();
-  ASSERT_TRUE(mpc.set_target(science(), tf).ok());
-  const auto first = mpc.step(0.0, mission_chief(), standby(), nav_covariance(0.01));
-  ASSERT_TRUE(first.ok()) << first.error().describe();
-  const double t = 1500.0;
-  const astro::KeplerianElements chief_t = astro::propagate_mean_j2(mission_chief(), t, kGravity);
-  const astro::RelativeOrbitalElements disturbed = linear_state(standby(), first->remaining, t) + roe_m(0, 0.5, 0, 0, 0, 0);
-  const auto next = mpc.step(t, chief_t, disturbed, nav_covariance(0.01));
+  const auto next = step_after_disturbance(mpc, roe_m(0, 0.5, 0, 0, 0, 0));
   ASSERT_TRUE(next.ok()) << next.error().describe();
   EXPECT_FALSE(next->replanned) << "d = " << next->mahalanobis;
 }
@@ -122,14 +119,7 @@ TEST(StochasticMpc, ExecutionUncertaintyRaisesTheReplanningBar) {
 // Below the threshold (a 1-sigma disturbance) the plan is kept.
 TEST(StochasticMpc, KeepsThePlanForADisturbanceWithinTheThreshold) {
   StochasticMpc mpc = make_mpc();
-  const double tf = period_s();
-  ASSERT_TRUE(mpc.set_target(science(), tf).ok());
-  const auto first = mpc.step(0.0, mission_chief(), standby(), nav_covariance(0.01));
-  ASSERT_TRUE(first.ok()) << first.error().describe();
-  const double t = 1500.0;
-  const astro::KeplerianElements chief_t = astro::propagate_mean_j2(mission_chief(), t, kGravity);
-  const astro::RelativeOrbitalElements disturbed = linear_state(standby(), first->remaining, t) + roe_m(0.0, 0.0, 0.01, 0, 0, 0);
-  const auto next = mpc.step(t, chief_t, disturbed, nav_covariance(0.01));
+  const auto next = step_after_disturbance(mpc, roe_m(0.0, 0.0, 0.01, 0, 0, 0));
   ASSERT_TRUE(next.ok()) << next.error().describe();
   EXPECT_FALSE(next->replanned) << "d = " << next->mahalanobis;
 }
