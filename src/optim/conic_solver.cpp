@@ -213,6 +213,9 @@ core::Result<ConicSolver> ConicSolver::create(const ConicDimensions& dims, const
   if (!(settings.dynamic_delta > 0.0)) return core::Error{"settings.dynamic_delta", "must be > 0"};
   if (!(settings.dynamic_epsilon >= 0.0)) return core::Error{"settings.dynamic_epsilon", "must be >= 0"};
   if (settings.refinement_steps < 0) return core::Error{"settings.refinement_steps", "must be >= 0"};
+  if (!(settings.refinement_tolerance > 0.0) || settings.refinement_tolerance >= 1e-3) {
+    return core::Error{"settings.refinement_tolerance", "must be in (0, 1e-3)"};
+  }
   if (settings.equilibration_passes < 0) return core::Error{"settings.equilibration_passes", "must be >= 0"};
   if (!(settings.psd_tolerance >= 0.0)) return core::Error{"settings.psd_tolerance", "must be >= 0"};
   return ConicSolver(dims, settings);
@@ -664,7 +667,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       const double previous = err;
       err = std::max({norm_inf(w.ex.data(), n), norm_inf(w.ey.data(), p), norm_inf(w.ez.data(), m)}) / scale;
       // Stop at working accuracy, at the step cap, or once a step no longer halves the residual.
-      if (!(err > 1e-13) || step == st.refinement_steps || (step > 0 && err > 0.5 * previous)) break;
+      if (!(err > st.refinement_tolerance) || step == st.refinement_steps || (step > 0 && err > 0.5 * previous)) break;
       reduced_solve(w.ex.data(), w.ey.data(), w.ez.data(), w.kx.data(), w.ky.data(), w.kz.data());
       for (int j = 0; j < n; ++j) ox[j] += w.kx[j];
       for (int i = 0; i < p; ++i) oy[i] += w.ky[i];

@@ -183,6 +183,14 @@ TEST(ConicSolver, RejectsBadDimensions) {
   EXPECT_EQ(solver.error().field, "dims.q[1]");
 }
 
+TEST(ConicSolver, RejectsANonPositiveRefinementTolerance) {
+  ConicSettings settings;
+  settings.refinement_tolerance = 0.0;
+  const auto solver = ConicSolver::create(lp_dims(2, 1), settings);
+  ASSERT_FALSE(solver.ok());
+  EXPECT_EQ(solver.error().field, "settings.refinement_tolerance");
+}
+
 TEST(ConicSolver, RejectsGWithWrongRowCount) {
   ConicSolver solver = make_solver(lp_dims(2, 3));  // cone rows 3, G has 2
   const auto info = solver.solve(bounds_lp(1.0, 2.0));
