@@ -66,8 +66,8 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
   using namespace astro::roe;
   // ---- validation --------------------------------------------------------------------------
   if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok.error();
-  if (!roe0.allFinite()) return core::Error{"roe0", "must be finite"};
-  if (!roe_target.allFinite()) return core::Error{"roe_target", "must be finite"};
+  if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
+  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
   if (!std::isfinite(tf)) return core::Error{"tf", "must be finite"};
   if (!std::isfinite(settings.earliest_burn) || settings.earliest_burn < 0.0) {
     return core::Error{"settings.earliest_burn", "must be finite and >= 0"};

@@ -36,4 +36,12 @@ core::Result<bool> validate_planner_chief(const astro::KeplerianElements& chief,
   return true;
 }
 
+core::Result<bool> validate_roe(const astro::RelativeOrbitalElements& roe, const std::string& name) {
+  if (!roe.allFinite()) return core::Error{name, "must be finite"};
+  if (roe.cwiseAbs().maxCoeff() > kMaxLinearRoe) {
+    return core::Error{name, "|dROE| above 1e-2 (a*dROE of tens of km) is outside the linear relative-motion model"};
+  }
+  return true;
+}
+
 }  // namespace visors::control

@@ -35,4 +35,11 @@ astro::RelativeOrbitalElements predict_roe(const astro::KeplerianElements& chief
 core::Result<bool> validate_planner_chief(const astro::KeplerianElements& chief, const std::string& chief_name,
                                           const core::EarthGravityConstants& gravity);
 
+/// Largest |dROE| component the first-order model is used for (a*dROE ~ 69 km at 500 km; the
+/// model's errors grow as |dROE|^2 a, i.e. metres at 1e-3).
+inline constexpr double kMaxLinearRoe = 1e-2;
+
+/// Finite and within kMaxLinearRoe; the error names `name`.
+core::Result<bool> validate_roe(const astro::RelativeOrbitalElements& roe, const std::string& name);
+
 }  // namespace visors::control

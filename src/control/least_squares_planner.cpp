@@ -19,8 +19,8 @@ core::Result<LeastSquaresPlan> plan_least_squares(const astro::KeplerianElements
                                                   const LeastSquaresSettings& settings,
                                                   const core::EarthGravityConstants& gravity) {
   if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok.error();
-  if (!roe0.allFinite()) return core::Error{"roe0", "must be finite"};
-  if (!roe_target.allFinite()) return core::Error{"roe_target", "must be finite"};
+  if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
+  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
   if (!std::isfinite(tf) || tf <= 0.0) return core::Error{"tf", "must be finite and positive"};
   if (burn_times.empty() || burn_times.size() > static_cast<std::size_t>(kMaxLeastSquaresBurns)) {
     return core::Error{"burn_times", "must hold 1 to 6 times"};

@@ -171,8 +171,8 @@ core::Result<ManeuverPlan> ReachableSetPlanner::plan(const astro::KeplerianEleme
   if (!chief_ok.ok()) return invalid("chief_mean_t0." + chief_ok.error().field, chief_ok.error().message);
   const double sin_i = std::sin(chief_mean_t0.i);
   if (!(std::abs(sin_i) > 1e-6)) return invalid("chief_mean_t0.i", "equatorial chief: QNS ROE undefined");
-  if (!roe0.allFinite()) return invalid("roe0", "must be finite");
-  if (!roe_target.allFinite()) return invalid("roe_target", "must be finite");
+  if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
+  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
   if (!std::isfinite(t_earliest) || t_earliest < 0.0) return invalid("t_earliest", "must be finite and >= 0");
   if (!std::isfinite(tf) || !(tf > t_earliest)) return invalid("tf", "must be finite and > t_earliest");
   const double a = chief_mean_t0.a;

@@ -53,7 +53,7 @@ core::Result<StochasticMpc> StochasticMpc::create(const StochasticMpcSettings& s
 }
 
 core::Result<bool> StochasticMpc::set_target(const astro::RelativeOrbitalElements& roe_target, double tf) {
-  if (!roe_target.allFinite()) return invalid("roe_target", "must be finite");
+  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
   if (!std::isfinite(tf)) return invalid("tf", "must be finite");
   target_ = roe_target;
   tf_ = tf;
@@ -70,7 +70,7 @@ core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElemen
   if (!std::isfinite(t) || t < last_t_ || t > tf_) return invalid("t", "must be finite, non-decreasing and <= tf");
   const auto chief_ok = astro::validate_keplerian(chief_mean_t);
   if (!chief_ok.ok()) return invalid("chief_mean_t." + chief_ok.error().field, chief_ok.error().message);
-  if (!roe_estimate.allFinite()) return invalid("roe_estimate", "must be finite");
+  if (auto ok = validate_roe(roe_estimate, "roe_estimate"); !ok) return ok.error();
   if (!symmetric_psd(covariance, true)) return invalid("covariance", "must be finite, symmetric and positive definite");
   last_t_ = t;
 

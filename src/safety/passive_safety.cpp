@@ -8,6 +8,7 @@
 #include "astro/j2_secular.hpp"
 #include "astro/roe_rtn_map.hpp"
 #include "astro/roe_stm.hpp"
+#include "control/impulse_effect.hpp"
 
 namespace visors::safety {
 namespace {
@@ -178,7 +179,7 @@ core::Result<bool> validate_safety_inputs(const astro::KeplerianElements& chief_
   if (std::abs(std::sin(chief_mean.i)) < 1e-6) {
     return core::Error{"chief.i", "must not be equatorial (diy is undefined)"};
   }
-  if (!roe.allFinite()) return core::Error{"roe", "must be finite"};
+  if (auto ok = control::validate_roe(roe, "roe"); !ok) return ok.error();
   if (!(roe[astro::roe::kDa] > -1.0)) return core::Error{"roe", "da must be > -1"};
   if (!finite_matrix(covariance)) return core::Error{"covariance", "must be finite"};
   const double scale = covariance.cwiseAbs().maxCoeff();

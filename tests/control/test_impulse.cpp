@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "control/impulse.hpp"
+#include "control/impulse_effect.hpp"
 
 namespace visors::control {
 namespace {
@@ -23,6 +24,21 @@ TEST(Impulse, RejectsNonFiniteDeltaV) {
   const auto r = validate_impulses({{1.0, {NAN, 0, 0}}}, 0.0, 100.0);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().field, "impulses[0].dv_rtn");
+}
+
+// ROE beyond 1e-2 (tens of km) are outside the first-order model every planner uses.
+TEST(Impulse, RoeOutsideTheLinearModelIsRejected) {
+  astro::RelativeOrbitalElements roe = astro::RelativeOrbitalElements::Zero();
+  roe[astro::roe::kDa] = 0.1;
+  const auto r = validate_roe(roe, "roe_target");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().field, "roe_target");
+}
+
+TEST(Impulse, MissionScaleRoeIsAccepted) {
+  astro::RelativeOrbitalElements roe = astro::RelativeOrbitalElements::Zero();
+  roe[astro::roe::kDey] = 200.0 / 6878136.3;  // standby orbit
+  EXPECT_TRUE(validate_roe(roe, "roe").ok());
 }
 
 }  // namespace
