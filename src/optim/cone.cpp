@@ -217,4 +217,40 @@ void NtScaling::apply_inverse_block(int block, const double* in, double* out, in
   out[0] = head;
 }
 
+void NtScaling::apply_square_block(int block, const double* in, double* out) const {
+  if (block < cone_.orthant()) {
+    out[0] = w_[block] * w_[block] * in[0];
+    return;
+  }
+  const int k = block - cone_.orthant();
+  const int q = cone_.soc_dim(k);
+  const double* w = w_.data() + cone_.soc_start(k);
+  const double e2 = eta_[k] * eta_[k];
+  const double twice_wu = 2.0 * dot(w, in, q);
+  out[0] = e2 * (twice_wu * w[0] - in[0]);
+  for (int i = 1; i < q; ++i) out[i] = e2 * (twice_wu * w[i] + in[i]);
+}
+
+void NtScaling::apply_inverse_square_block(int block, const double* in, double* out) const {
+  if (block < cone_.orthant()) {
+    out[0] = in[0] * w_inv_[block] * w_inv_[block];
+    return;
+  }
+  const int k = block - cone_.orthant();
+  const int q = cone_.soc_dim(k);
+  const double* w = w_.data() + cone_.soc_start(k);
+  const double e2 = eta_inv_[k] * eta_inv_[k];
+  // Jw = (w0, -w1): (Jw)'u = w0 u0 - w1'u1.
+  const double twice_jwu = 2.0 * (w[0] * in[0] - dot(w + 1, in + 1, q - 1));
+  out[0] = e2 * (twice_jwu * w[0] - in[0]);
+  for (int i = 1; i < q; ++i) out[i] = e2 * (in[i] - twice_jwu * w[i]);
+}
+
+void NtScaling::apply_square(const double* in, double* out) const {
+  for (int b = 0; b < blocks(); ++b) {
+    const int r0 = block_start(b);
+    apply_square_block(b, in + r0, out + r0);
+  }
+}
+
 }  // namespace visors::optim

@@ -65,6 +65,13 @@ class NtScaling {
   /// out = W^{-1} in on the rows [start, start + dim) of one block; `in` and `out` point at the
   /// block's first row and step by `stride` (to scale matrix columns in place of vectors).
   void apply_inverse_block(int block, const double* in, double* out, int stride) const;
+  /// out = W^2 in / out = W^-2 in on one block (stride 1, in != out). For a SOC, from w'Jw = 1:
+  /// W^2 = eta^2 (2 w w' - J) and W^-2 = eta^-2 (2 (Jw)(Jw)' - J): one dot product and one
+  /// update instead of two applications of W.
+  void apply_square_block(int block, const double* in, double* out) const;
+  void apply_inverse_square_block(int block, const double* in, double* out) const;
+  /// out = W^2 in over the whole cone (in != out).
+  void apply_square(const double* in, double* out) const;
   /// Blocks: the l orthant rows one by one, then the second-order cones.
   [[nodiscard]] int blocks() const { return cone_.orthant() + cone_.soc_count(); }
   [[nodiscard]] int block_start(int block) const {

@@ -119,7 +119,7 @@ struct ConicSolver::Workspace {
   std::vector<unsigned char> sep_block, sep_col;
   std::vector<int> col_uses, sep_gcol;
   bool any_separable = false;
-  Vec sep_ginv, sep_ak, ubuf, sep_in, sep_mid, sep_out;
+  Vec sep_ginv, sep_ak, ubuf, sep_in, sep_out;
   Vec pwork, rfac;  // PSD check of P: work copy and pivoted Cholesky factor R (P = R'R)
   std::vector<unsigned char> pdone;
   // Iterate and directions.
@@ -177,7 +177,7 @@ ConicSolver::ConicSolver(const ConicDimensions& dims, const ConicSettings& setti
   w.sep_ginv = sized(w.m);
   w.sep_ak = sized(w.m * w.p);
   w.ubuf = sized(max_block * w.p);
-  for (Vec* v : {&w.sep_in, &w.sep_mid, &w.sep_out}) *v = sized(max_block);
+  for (Vec* v : {&w.sep_in, &w.sep_out}) *v = sized(max_block);
   if (dims.quadratic) {
     w.pwork = sized(w.n * w.n);
     w.rfac = sized(w.n * w.n);
@@ -560,8 +560,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
         std::fill(out + r0, out + r0 + dim, 0.0);
         continue;
       }
-      w.nt.apply_inverse_block(k, in + r0, w.tmp_z.data() + r0, 1);
-      w.nt.apply_inverse_block(k, w.tmp_z.data() + r0, out + r0, 1);
+      w.nt.apply_inverse_square_block(k, in + r0, out + r0);
     }
   };
   // Separable block k of the unreduced system (its columns C, A_C the columns of A, g = G_k^-T bx_C
@@ -572,15 +571,13 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   // before the LDL' solve. No W^-2 appears, so nothing of W's condition is squared.
   const auto separable_forward = [&](const double* bz, double* red) {
     double* g = w.sep_in.data();
-    double* mid = w.sep_mid.data();
     double* out = w.sep_out.data();
     for (int k = 0; k < blocks; ++k) {
       if (w.sep_block[k] == 0) continue;
       const int r0 = w.nt.block_start(k);
       const int dim = w.nt.block_dim(k);
       for (int r = 0; r < dim; ++r) g[r] = red[w.sep_gcol[r0 + r]] * w.sep_ginv[r0 + r];
-      w.nt.apply_block(k, g, mid, 1);
-      w.nt.apply_block(k, mid, out, 1);
+      w.nt.apply_square_block(k, g, out);
       for (int r = 0; r < dim; ++r) {
         const double* ak = w.sep_ak.data() + static_cast<std::size_t>((r0 + r) * p);
         const double v = bz[r0 + r] + out[r];
@@ -591,7 +588,6 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   // After the LDL' solve (red[C] still holds bx_C: unit pivots, no coupling): x_C into red, z_k
   // into oz.
   const auto separable_backward = [&](const double* bz, double* red, double* oz) {
-    double* mid = w.sep_mid.data();
     double* out = w.sep_out.data();
     for (int k = 0; k < blocks; ++k) {
       if (w.sep_block[k] == 0) continue;
@@ -601,8 +597,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
         const double* ak = w.sep_ak.data() + static_cast<std::size_t>((r0 + r) * p);
         oz[r0 + r] = red[w.sep_gcol[r0 + r]] * w.sep_ginv[r0 + r] - dot(ak, red + n, p);
       }
-      w.nt.apply_block(k, oz + r0, mid, 1);
-      w.nt.apply_block(k, mid, out, 1);
+      w.nt.apply_square_block(k, oz + r0, out);
       for (int r = 0; r < dim; ++r) red[w.sep_gcol[r0 + r]] = (bz[r0 + r] + out[r]) * w.sep_ginv[r0 + r];
     }
   };
@@ -640,8 +635,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
         for (int e = w.G.ptr[r]; e < w.G.ptr[r + 1]; ++e) v += w.G.val[e] * ox[w.G.col[e]];
         w.tmp_s[r] = v;
       }
-      w.nt.apply_inverse_block(k, w.tmp_s.data() + r0, w.tmp_z.data() + r0, 1);
-      w.nt.apply_inverse_block(k, w.tmp_z.data() + r0, oz + r0, 1);
+      w.nt.apply_inverse_square_block(k, w.tmp_s.data() + r0, oz + r0);
     }
   };
 
@@ -660,8 +654,7 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       for (int j = 0; j < n; ++j) w.ex[j] = bx[j] - w.ex[j];
       w.A.multiply(ox, w.ey.data());
       for (int i = 0; i < p; ++i) w.ey[i] = by[i] - w.ey[i];
-      w.nt.apply(oz, w.tmp_z.data());
-      w.nt.apply(w.tmp_z.data(), w.tmp_s.data());
+      w.nt.apply_square(oz, w.tmp_s.data());
       w.G.multiply(ox, w.ez.data());
       for (int i = 0; i < m; ++i) w.ez[i] = bz[i] - (w.ez[i] - w.tmp_s[i]);
       const double previous = err;

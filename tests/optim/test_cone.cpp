@@ -40,6 +40,30 @@ TEST(NtScaling, InverseIsTheInverse) {
   EXPECT_LT(max_abs_diff(u, back), 1e-14);
 }
 
+// W^2 = eta^2 (2 w w' - J) (from w'Jw = 1) equals applying W twice; likewise W^-2.
+TEST(NtScaling, SquareEqualsTwoApplications) {
+  NtScaling nt(kCone);
+  std::vector<double> lambda(6), u{0.3, -1.0, 2.0, 0.5, -0.25, 4.0}, once(6), twice(6), square(6);
+  ASSERT_TRUE(nt.update(kS.data(), kZ.data(), lambda.data()));
+  nt.apply(u.data(), once.data());
+  nt.apply(once.data(), twice.data());
+  nt.apply_square(u.data(), square.data());
+  EXPECT_LT(max_abs_diff(twice, square), 1e-13);
+}
+
+TEST(NtScaling, InverseSquareEqualsTwoInverseApplications) {
+  NtScaling nt(kCone);
+  std::vector<double> lambda(6), u{0.3, -1.0, 2.0, 0.5, -0.25, 4.0}, once(6), twice(6), square(6);
+  ASSERT_TRUE(nt.update(kS.data(), kZ.data(), lambda.data()));
+  nt.apply_inverse(u.data(), once.data());
+  nt.apply_inverse(once.data(), twice.data());
+  for (int b = 0; b < nt.blocks(); ++b) {
+    const int r0 = nt.block_start(b);
+    nt.apply_inverse_square_block(b, u.data() + r0, square.data() + r0);
+  }
+  EXPECT_LT(max_abs_diff(twice, square), 1e-13);
+}
+
 TEST(NtScaling, RejectsBoundaryPoint) {
   NtScaling nt(kCone);
   std::vector<double> s = kS, lambda(6);
