@@ -14,21 +14,18 @@
 #include "astro/roe_stm.hpp"
 #include "control/closed_form_planner.hpp"
 #include "control/j2_numerical_propagation.hpp"
+#include "control/mission.hpp"
 #include "control/delta_v_lower_bound.hpp"
 #include "core/gps_time.hpp"
 
 namespace visors::control {
-
-
 namespace {
 
 constexpr double kDeg = core::kDegToRad;
 const core::EarthGravityConstants kJ2{};
 const core::EarthGravityConstants kKepler{kJ2.mu, kJ2.re, 0.0};
 
-astro::KeplerianElements mission_chief() {
-  return {kJ2.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
-}
+using test::mission_chief;
 
 double orbit_period(const astro::KeplerianElements& c, const core::EarthGravityConstants& g) {
   const astro::J2SecularRates r = astro::j2_secular_rates(c, g);

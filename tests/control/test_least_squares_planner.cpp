@@ -12,6 +12,7 @@
 #include "astro/roe_stm.hpp"
 #include "control/closed_form_planner.hpp"
 #include "control/j2_numerical_propagation.hpp"
+#include "control/mission.hpp"
 #include "control/least_squares_planner.hpp"
 
 namespace visors::control {
@@ -21,9 +22,7 @@ constexpr double kDeg = core::kDegToRad;
 const core::EarthGravityConstants kJ2{};
 const core::EarthGravityConstants kKepler{kJ2.mu, kJ2.re, 0.0};
 
-astro::KeplerianElements mission_chief() {
-  return {kJ2.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
-}
+using test::mission_chief;
 
 double mean_motion(const astro::KeplerianElements& c) { return std::sqrt(kJ2.mu / (c.a * c.a * c.a)); }
 
