@@ -99,7 +99,13 @@ struct Case {
   astro::RelativeOrbitalElements target;
   double t_earliest_orbits;
   double tf_orbits;
+  [[nodiscard]] double t0() const { return t_earliest_orbits * period_s(); }  // [s]
+  [[nodiscard]] double tf() const { return tf_orbits * period_s(); }         // [s]
 };
+
+core::Result<ManeuverPlan> plan_case(ReachableSetPlanner& planner, const Case& c) {
+  return planner.plan(mission_chief(), c.roe0, c.target, c.t0(), c.tf());
+}
 
 std::vector<Case> cases() {
   return {
@@ -121,9 +127,9 @@ TEST(ReachableSetPlanner, TotalDeltaVWithinHalfPercentOfDenseGridReference) {
   const int dense = 10 * (planner.settings().grid_points - 1) + 1;
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    const double t0 = c.t_earliest_orbits * period_s();
-    const double tf = c.tf_orbits * period_s();
-    const auto plan = planner.plan(mission_chief(), c.roe0, c.target, t0, tf);
+    const double t0 = c.t0();
+    const double tf = c.tf();
+    const auto plan = plan_case(planner, c);
     ASSERT_TRUE(plan.ok()) << plan.error().describe();
     const Reference ref = dense_reference(c.roe0, c.target, t0, tf, dense);
     ASSERT_TRUE(ref.optimal);
@@ -224,9 +230,9 @@ TEST(ReachableSetPlanner, TotalDeltaVWithinHalfPercentOfCvxoptDenseOptimum) {
   const int dense = 10 * (planner.settings().grid_points - 1) + 1;
   for (const Case& c : {cases()[0], cases()[2], cases()[5]}) {
     SCOPED_TRACE(c.name);
-    const double t0 = c.t_earliest_orbits * period_s();
-    const double tf = c.tf_orbits * period_s();
-    const auto plan = planner.plan(mission_chief(), c.roe0, c.target, t0, tf);
+    const double t0 = c.t0();
+    const double tf = c.tf();
+    const auto plan = plan_case(planner, c);
     ASSERT_TRUE(plan.ok()) << plan.error().describe();
     const double oracle = cvxopt_dense_optimum(c.roe0, c.target, t0, tf, dense);
     ASSERT_GT(oracle, 0.0) << "CVXOPT oracle failed";
@@ -241,9 +247,9 @@ TEST(ReachableSetPlanner, PlanHasAtMostSixSortedImpulsesInsideTheWindow) {
   ReachableSetPlanner planner = make_planner();
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    const double t0 = c.t_earliest_orbits * period_s();
-    const double tf = c.tf_orbits * period_s();
-    const auto plan = planner.plan(mission_chief(), c.roe0, c.target, t0, tf);
+    const double t0 = c.t0();
+    const double tf = c.tf();
+    const auto plan = plan_case(planner, c);
     ASSERT_TRUE(plan.ok()) << plan.error().describe();
     EXPECT_LE(plan->impulses.size(), 6u);
     EXPECT_TRUE(validate_impulses(plan->impulses, t0, tf).ok());
@@ -257,9 +263,9 @@ TEST(ReachableSetPlanner, LowerBoundIsTightOnThePlannerGrid) {
   ReachableSetPlanner planner = make_planner();
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    const double t0 = c.t_earliest_orbits * period_s();
-    const double tf = c.tf_orbits * period_s();
-    const auto plan = planner.plan(mission_chief(), c.roe0, c.target, t0, tf);
+    const double t0 = c.t0();
+    const double tf = c.tf();
+    const auto plan = plan_case(planner, c);
     ASSERT_TRUE(plan.ok()) << plan.error().describe();
     const Reference grid = dense_reference(c.roe0, c.target, t0, tf, planner.settings().grid_points);
     ASSERT_TRUE(grid.optimal);
