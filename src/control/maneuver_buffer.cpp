@@ -47,25 +47,36 @@ Eigen::MatrixXd stacked_effects(const astro::KeplerianElements& chief, const std
 
 }  // namespace
 
-core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
-                                                 double mass, const BufferSettings& settings) {
+namespace {
+
+// The split with what the quantisation needs: the pieces' effect matrices side by side (6 x 3K)
+// and the planned impulse's effect, both at the last piece's time.
+struct Split {
+  std::vector<Impulse> pieces;
+  Eigen::MatrixXd effects;
+  astro::RelativeOrbitalElements target;
+};
+
+core::Result<Split> split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
+                          const BufferSettings& settings) {
   if (auto ok = check_inputs(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
   const double cap = settings.cap_margin * settings.limits.max_impulse / mass;  // [m/s]
   const double dv = impulse.dv_rtn.norm();
-  if (dv <= cap) return std::vector<Impulse>{impulse};
+  if (dv <= cap) {
+    const Eigen::Matrix<double, 6, 3> effect = impulse_effect(chief_mean_t0, impulse.t, impulse.t, settings.gravity);
+    return Split{{impulse}, effect, effect * impulse.dv_rtn};
+  }
   for (int pieces = std::max(2, static_cast<int>(std::ceil(dv / cap))); pieces <= settings.max_pieces; ++pieces) {
     const std::vector<double> times = piece_times(impulse.t, pieces, settings.limits.spacing);
     const double t_ref = times.back();
-    const Eigen::MatrixXd b = stacked_effects(chief_mean_t0, times, t_ref, settings.gravity);
-    const astro::RelativeOrbitalElements target =
-        impulse_effect(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn;
-    // Minimum-norm solution of b x = target (b has full row rank for >= 2 distinct times).
-    const Eigen::VectorXd x = b.completeOrthogonalDecomposition().solve(target);
-    std::vector<Impulse> out(times.size());
+    Split out{std::vector<Impulse>(times.size()), stacked_effects(chief_mean_t0, times, t_ref, settings.gravity),
+              impulse_effect(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn};
+    // Minimum-norm solution of effects x = target (full row rank for >= 2 distinct times).
+    const Eigen::VectorXd x = out.effects.completeOrthogonalDecomposition().solve(out.target);
     bool within_cap = true;
     for (std::size_t j = 0; j < times.size(); ++j) {
-      out[j] = {times[j], x.segment<3>(3 * static_cast<Eigen::Index>(j))};
-      within_cap = within_cap && out[j].dv_rtn.norm() <= cap;
+      out.pieces[j] = {times[j], x.segment<3>(3 * static_cast<Eigen::Index>(j))};
+      within_cap = within_cap && out.pieces[j].dv_rtn.norm() <= cap;
     }
     if (within_cap) return out;
   }
@@ -74,21 +85,26 @@ core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements&
                                             " N s"};
 }
 
+}  // namespace
+
+core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+                                                 double mass, const BufferSettings& settings) {
+  auto result = split(chief_mean_t0, impulse, mass, settings);
+  if (!result) return result.error();
+  return std::move(result).value().pieces;
+}
+
 core::Result<BufferedManeuver> buffer_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
                                               double mass, const BufferSettings& settings) {
-  auto split = split_impulse(chief_mean_t0, impulse, mass, settings);
-  if (!split) return split.error();
-  std::vector<Impulse> pieces = std::move(split).value();
-  const double t_ref = std::max(pieces.back().t, impulse.t);
-  const core::EarthGravityConstants& gravity = settings.gravity;
+  auto result = split(chief_mean_t0, impulse, mass, settings);
+  if (!result) return result.error();
+  Split parts = std::move(result).value();
+  std::vector<Impulse>& pieces = parts.pieces;
+  const Eigen::MatrixXd& b = parts.effects;
   const ActuatorLimits& limits = settings.limits;
-  std::vector<double> times(pieces.size());
-  for (std::size_t j = 0; j < pieces.size(); ++j) times[j] = pieces[j].t;
-  const Eigen::MatrixXd b = stacked_effects(chief_mean_t0, times, t_ref, gravity);
-  const astro::RelativeOrbitalElements target = impulse_effect(chief_mean_t0, impulse.t, t_ref, gravity) * impulse.dv_rtn;
 
   // Quantise piece j, then give what its rounding left to the pieces after it.
-  astro::RelativeOrbitalElements remaining = target;
+  astro::RelativeOrbitalElements remaining = parts.target;
   const auto n = static_cast<Eigen::Index>(pieces.size());
   for (Eigen::Index j = 0; j < n; ++j) {
     Impulse& piece = pieces[static_cast<std::size_t>(j)];
