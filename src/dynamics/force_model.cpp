@@ -139,19 +139,30 @@ void ForceModel::refresh_solar_activity(core::GpsTime t) {
   }
 }
 
+// Everything that depends on time only, computed once per distinct time: RK4's two mid-step
+// evaluations (and both spacecraft of a formation sharing a model) reuse it.
+void ForceModel::refresh_time_dependent(core::GpsTime t) {
+  if (at_time_.t == t) return;
+  refresh_earth_orientation(t);
+  at_time_.t = t;
+  at_time_.gcrf_to_itrf = earth_frame_.gcrf_to_itrf_matrix(t);
+  const bool need_sun = config_.sun || config_.srp.enabled || atmosphere_ != nullptr;
+  at_time_.sun_gcrf = need_sun ? astro::sun_position_gcrf(t) : Eigen::Vector3d::Zero();
+  at_time_.moon_gcrf = config_.moon ? astro::moon_position_gcrf(t) : Eigen::Vector3d::Zero();
+}
+
 Eigen::Vector3d ForceModel::acceleration(core::GpsTime t, const core::StateVector& x_gcrf) {
   return acceleration_terms(t, x_gcrf).total();
 }
 
 AccelerationTerms ForceModel::acceleration_terms(core::GpsTime t, const core::StateVector& x_gcrf) {
   AccelerationTerms terms;
-  refresh_earth_orientation(t);
-  const Eigen::Matrix3d gcrf_to_itrf = earth_frame_.gcrf_to_itrf_matrix(t);
+  refresh_time_dependent(t);
+  const Eigen::Matrix3d& gcrf_to_itrf = at_time_.gcrf_to_itrf;
+  const Eigen::Vector3d& sun_gcrf = at_time_.sun_gcrf;
   const Eigen::Vector3d r_itrf = gcrf_to_itrf * x_gcrf.r;
   terms.gravity = gcrf_to_itrf.transpose() * gravity_->acceleration(r_itrf);
 
-  const bool need_sun = config_.sun || config_.srp.enabled || atmosphere_ != nullptr;
-  const Eigen::Vector3d sun_gcrf = need_sun ? astro::sun_position_gcrf(t) : Eigen::Vector3d::Zero();
   if (atmosphere_ != nullptr) {
     refresh_solar_activity(t);
     const AtmosphereQuery query{t, x_gcrf.r, r_itrf, sun_gcrf, space_weather_ ? activity_ : config_.drag.activity};
@@ -171,7 +182,7 @@ AccelerationTerms ForceModel::acceleration_terms(core::GpsTime t, const core::St
                                  spacecraft_.srp_area, spacecraft_.mass);
   }
   if (config_.sun) terms.sun = third_body_acceleration(x_gcrf.r, sun_gcrf, kGmSun);
-  if (config_.moon) terms.moon = third_body_acceleration(x_gcrf.r, astro::moon_position_gcrf(t), kGmMoon);
+  if (config_.moon) terms.moon = third_body_acceleration(x_gcrf.r, at_time_.moon_gcrf, kGmMoon);
   if (!config_.empirical_rtn.isZero()) {
     terms.empirical = core::gcrf_to_rtn_matrix(x_gcrf).transpose() * config_.empirical_rtn;
   }

@@ -73,6 +73,7 @@ class ForceModel {
   ForceModel() = default;
   void refresh_earth_orientation(core::GpsTime t);
   void refresh_solar_activity(core::GpsTime t);
+  void refresh_time_dependent(core::GpsTime t);
 
   ForceModelConfig config_;
   SpacecraftProperties spacecraft_;
@@ -88,6 +89,12 @@ class ForceModel {
   core::EarthOrientation eop_;
   core::OnboardEarthFrame earth_frame_;
   std::vector<std::string> warnings_;
+  struct TimeDependent {
+    std::optional<core::GpsTime> t;
+    Eigen::Matrix3d gcrf_to_itrf = Eigen::Matrix3d::Identity();
+    Eigen::Vector3d sun_gcrf = Eigen::Vector3d::Zero();   // [m]
+    Eigen::Vector3d moon_gcrf = Eigen::Vector3d::Zero();  // [m]
+  } at_time_;
   std::int64_t space_weather_misses_ = 0;
   std::int64_t eop_misses_ = 0;
 };
