@@ -3,6 +3,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
+
+#include <unistd.h>
 
 #include "core/data_path.hpp"
 
@@ -13,7 +17,8 @@ class DataPath : public ::testing::Test {
   void SetUp() override {
     const char* old = std::getenv("VISORS_DATA_PATH");
     saved_ = old ? std::optional<std::string>(old) : std::nullopt;
-    root_ = std::filesystem::temp_directory_path() / "visors_data_path_test";
+    // One folder per process: CTest runs the cases of this fixture in parallel processes.
+    root_ = std::filesystem::temp_directory_path() / ("visors_data_path_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(root_ / "first" / "eop");
     std::filesystem::create_directories(root_ / "second" / "eop");
     std::ofstream(root_ / "second" / "eop" / "x.txt") << "second";

@@ -1,6 +1,7 @@
 // ICGEM .gfc reader: the quirks of the real files (navigation-and-dynamics digest §2.3) and one
 // clear error per malformed input, plus the embedded default field.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -26,7 +27,8 @@ std::filesystem::path data_file(const std::string& relative) {
 
 // Writes `text` to a fresh file in the test temp dir.
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / ("visors_icgem_" + name + ".gfc");
+  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) /
+                                     ("visors_icgem_" + std::to_string(::getpid()) + "_" + name + ".gfc");
   std::ofstream(path) << text;
   return path;
 }
