@@ -198,6 +198,28 @@ void NtScaling::apply_block(int block, const double* in, double* out, int stride
   for (int i = 1; i < q; ++i) out[i * stride] = eta_[k] * (in[i * stride] + coef * w[i]);
 }
 
+void NtScaling::apply_block_rows(int block, const double* in, double* out, int cols) const {
+  if (block < cone_.orthant()) {
+    for (int c = 0; c < cols; ++c) out[c] = w_[block] * in[c];
+    return;
+  }
+  const int k = block - cone_.orthant();
+  const int q = cone_.soc_dim(k);
+  const double* w = w_.data() + cone_.soc_start(k);
+  const double eta = eta_[k];
+  const double w0_inv = w0_inv_[k];
+  // The same formula as apply_block, column by column, with the columns innermost; out's first
+  // row holds w1'u1 until the end.
+  for (int c = 0; c < cols; ++c) out[c] = 0.0;
+  for (int i = 1; i < q; ++i) {
+    for (int c = 0; c < cols; ++c) out[c] += w[i] * in[i * cols + c];
+  }
+  for (int i = 1; i < q; ++i) {
+    for (int c = 0; c < cols; ++c) out[i * cols + c] = eta * (in[i * cols + c] + (in[c] + out[c] * w0_inv) * w[i]);
+  }
+  for (int c = 0; c < cols; ++c) out[c] = eta * (w[0] * in[c] + out[c]);
+}
+
 void NtScaling::apply_inverse_block(int block, const double* in, double* out, int stride) const {
   if (block < cone_.orthant()) {
     out[0] = in[0] * w_inv_[block];
@@ -247,9 +269,21 @@ void NtScaling::apply_inverse_square_block(int block, const double* in, double* 
 }
 
 void NtScaling::apply_square(const double* in, double* out) const {
-  for (int b = 0; b < blocks(); ++b) {
-    const int r0 = block_start(b);
-    apply_square_block(b, in + r0, out + r0);
+  // apply_square_block over every block, with the loop over blocks here so the short per-cone
+  // loops are not each a call.
+  for (int i = 0; i < cone_.orthant(); ++i) out[i] = w_[i] * w_[i] * in[i];
+  for (int k = 0; k < cone_.soc_count(); ++k) {
+    const int o = cone_.soc_start(k);
+    const int q = cone_.soc_dim(k);
+    const double* w = w_.data() + o;
+    const double* u = in + o;
+    double* v = out + o;
+    const double e2 = eta_[k] * eta_[k];
+    double wu = 0.0;
+    for (int i = 0; i < q; ++i) wu += w[i] * u[i];
+    const double twice_wu = 2.0 * wu;
+    v[0] = e2 * (twice_wu * w[0] - u[0]);
+    for (int i = 1; i < q; ++i) v[i] = e2 * (twice_wu * w[i] + u[i]);
   }
 }
 

@@ -65,6 +65,9 @@ class NtScaling {
   /// out = W^{-1} in on the rows [start, start + dim) of one block; `in` and `out` point at the
   /// block's first row and step by `stride` (to scale matrix columns in place of vectors).
   void apply_inverse_block(int block, const double* in, double* out, int stride) const;
+  /// out = W in on one block for a matrix: `in` and `out` are the block's dim x cols rows of
+  /// row-major matrices (cols consecutive values per row; in != out).
+  void apply_block_rows(int block, const double* in, double* out, int cols) const;
   /// out = W^2 in / out = W^-2 in on one block (stride 1, in != out). For a SOC, from w'Jw = 1:
   /// W^2 = eta^2 (2 w w' - J) and W^-2 = eta^-2 (2 (Jw)(Jw)' - J): one dot product and one
   /// update instead of two applications of W.

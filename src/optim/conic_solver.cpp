@@ -9,6 +9,7 @@
 
 #include "optim/cone.hpp"
 #include "optim/quasidefinite_ldl.hpp"
+#include "optim/separable_kkt.hpp"
 
 namespace visors::optim {
 namespace {
@@ -119,6 +120,11 @@ struct ConicSolver::Workspace {
   std::vector<unsigned char> sep_block, sep_col;
   std::vector<int> col_uses, sep_gcol;
   bool any_separable = false;
+  // Every column separable: the KKT solves go through the p x p Schur complement (schur) while
+  // it factors; use_schur says the current iteration's factorisation is that one.
+  bool all_separable = false;
+  bool use_schur = false;
+  SeparableKkt schur;
   Vec sep_ginv, sep_ak, ubuf, sep_in, sep_out;
   Vec pwork, rfac;  // PSD check of P: work copy and pivoted Cholesky factor R (P = R'R)
   std::vector<unsigned char> pdone;
@@ -141,6 +147,7 @@ ConicSolver::ConicSolver(const ConicDimensions& dims, const ConicSettings& setti
   w.cone = ConeProduct(dims.l, dims.q);
   w.nt = NtScaling(w.cone);
   w.ldl = QuasiDefiniteLdl(w.n + w.p);
+  if (w.m == w.n) w.schur = SeparableKkt(w.m, w.p);
   const int full = w.n + w.p;
   w.dense = Eigen::MatrixXd::Zero(full, full);
   w.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(full);
@@ -365,7 +372,6 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   // condition of W_k near the optimum (eigenvalues eta^-2 (w0 +- ||w1||)^2), where the fixed-order
   // LDL' would meet tiny, cancellation-made pivots.
   QuasiDefiniteLdl& ldl = w.ldl;
-  ldl.begin_structure(n + p, n);
   {
     int count = 0;
     std::fill(w.col_uses.begin(), w.col_uses.end(), 0);
@@ -402,36 +408,46 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
       for (int r = r0; separable && r < r0 + dim; ++r) {
         w.sep_gcol[r] = w.G.col[w.G.ptr[r]];
         w.sep_ginv[r] = 1.0 / w.G.val[w.G.ptr[r]];
+        w.sep_col[w.sep_gcol[r]] = 1;
         w.marker[w.sep_gcol[r]] = r;  // column -> row, for the A entries below
       }
-      for (int a = w.bc_ptr[k]; a < w.bc_ptr[k + 1]; ++a) {
-        if (separable) {
-          w.sep_col[w.bc_col[a]] = 1;
-          continue;
-        }
-        for (int bb = w.bc_ptr[k]; bb <= a; ++bb) ldl.mark(w.bc_col[a], w.bc_col[bb]);
-      }
     }
-    std::fill(w.sep_ak.begin(), w.sep_ak.end(), 0.0);
-    for (int i = 0; i < p; ++i) {
-      for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
-        const int j = w.A.col[e];
-        if (w.sep_col[j] == 0) {
-          ldl.mark(n + i, j);
-        } else {
-          const int r = w.marker[j];
-          w.sep_ak[static_cast<std::size_t>(r * p + i)] = w.A.val[e] * w.sep_ginv[r];
+    w.all_separable = std::all_of(w.sep_col.begin(), w.sep_col.begin() + n, [](unsigned char f) { return f != 0; });
+    if (w.all_separable) {
+      // Every column separable (then m = n): the Schur-complement path, no LDL' structure.
+      for (int r = 0; r < m; ++r) w.schur.set_row(r, w.sep_gcol[r], w.G.val[w.G.ptr[r]]);
+      w.schur.clear_equalities();
+      for (int i = 0; i < p; ++i) {
+        for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) w.schur.set_equality_entry(i, w.marker[w.A.col[e]], w.A.val[e]);
+      }
+    } else {
+      ldl.begin_structure(n + p, n);
+      for (int k = 0; k < blocks; ++k) {
+        for (int a = w.bc_ptr[k]; w.sep_block[k] == 0 && a < w.bc_ptr[k + 1]; ++a) {
+          for (int bb = w.bc_ptr[k]; bb <= a; ++bb) ldl.mark(w.bc_col[a], w.bc_col[bb]);
         }
       }
-      for (int i2 = 0; w.any_separable && i2 <= i; ++i2) ldl.mark(n + i, n + i2);
-    }
-    for (int i = 0; i < w.P.rows; ++i) {
-      for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) {
-        if (w.P.col[e] <= i) ldl.mark(i, w.P.col[e]);
+      std::fill(w.sep_ak.begin(), w.sep_ak.end(), 0.0);
+      for (int i = 0; i < p; ++i) {
+        for (int e = w.A.ptr[i]; e < w.A.ptr[i + 1]; ++e) {
+          const int j = w.A.col[e];
+          if (w.sep_col[j] == 0) {
+            ldl.mark(n + i, j);
+          } else {
+            const int r = w.marker[j];
+            w.sep_ak[static_cast<std::size_t>(r * p + i)] = w.A.val[e] * w.sep_ginv[r];
+          }
+        }
+        for (int i2 = 0; w.any_separable && i2 <= i; ++i2) ldl.mark(n + i, n + i2);
       }
+      for (int i = 0; i < w.P.rows; ++i) {
+        for (int e = w.P.ptr[i]; e < w.P.ptr[i + 1]; ++e) {
+          if (w.P.col[e] <= i) ldl.mark(i, w.P.col[e]);
+        }
+      }
+      ldl.analyse();
     }
     std::fill(w.marker.begin(), w.marker.end(), -1);
-    ldl.analyse();
   }
 
   const double delta = st.static_regularisation;
@@ -537,14 +553,19 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     assemble_dense();
     w.lu.compute(w.dense);
     w.use_lu = true;
+    w.use_schur = false;
     ++w.fallbacks;
     const auto diagonal = w.lu.matrixLU().diagonal();
     return diagonal.allFinite() && diagonal.cwiseAbs().minCoeff() > 0.0;
   };
-  // Factors: the structured LDL' unless it had to regularise a pivot. False on breakdown.
+  // Factors: the Schur complement when every column is separable, else the structured LDL';
+  // the dense LU when either fails (S singular, a pivot regularised). False on breakdown.
   const auto factor_kkt = [&]() -> bool {
-    assemble_kkt();
     w.use_lu = false;
+    w.use_schur = w.all_separable && w.schur.factor(w.nt);
+    if (w.use_schur) return true;
+    if (w.all_separable) return factor_dense();
+    assemble_kkt();
     const int regularised = ldl.factor(st.dynamic_epsilon, st.dynamic_delta);
     if (regularised == 0) return true;
     return factor_dense();
@@ -609,6 +630,10 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
   // dense LU is in use.
   const auto reduced_solve = [&](const double* bx, const double* by, const double* bz, double* ox,
                                  double* oy, double* oz) {
+    if (w.use_schur) {
+      w.schur.solve(w.nt, bx, by, bz, ox, oy, oz);
+      return;
+    }
     inverse_square(bz, w.tmp_s.data());
     double* red = w.red.data();
     for (int j = 0; j < n; ++j) red[j] = bx[j];
@@ -639,6 +664,20 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     }
   };
 
+  // (ex, ey, ez) = (bx, by, bz) - K (ox, oy, oz), K the unregularised, unreduced KKT matrix.
+  const auto kkt_residual = [&](const double* bx, const double* by, const double* bz, const double* ox,
+                                const double* oy, const double* oz) {
+    w.P.multiply(ox, w.ex.data());
+    if (w.P.rows == 0) std::fill(w.ex.begin(), w.ex.end(), 0.0);
+    w.A.multiply_transpose_add(oy, w.ex.data());
+    w.G.multiply_transpose_add(oz, w.ex.data());
+    for (int j = 0; j < n; ++j) w.ex[j] = bx[j] - w.ex[j];
+    w.A.multiply(ox, w.ey.data());
+    for (int i = 0; i < p; ++i) w.ey[i] = by[i] - w.ey[i];
+    w.nt.apply_square(oz, w.tmp_s.data());
+    w.G.multiply(ox, w.ez.data());
+    for (int i = 0; i < m; ++i) w.ez[i] = bz[i] - (w.ez[i] - w.tmp_s[i]);
+  };
   // Solve with iterative refinement against the exact, unregularised, unreduced system.
   const auto refined_solve = [&](const double* bx, const double* by, const double* bz, double* ox,
                                  double* oy, double* oz) -> double {
@@ -647,16 +686,11 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     double err = 0.0;
     for (int step = 0; step <= st.refinement_steps; ++step) {
       // e = rhs - K o.
-      w.P.multiply(ox, w.ex.data());
-      if (w.P.rows == 0) std::fill(w.ex.begin(), w.ex.end(), 0.0);
-      w.A.multiply_transpose_add(oy, w.ex.data());
-      w.G.multiply_transpose_add(oz, w.ex.data());
-      for (int j = 0; j < n; ++j) w.ex[j] = bx[j] - w.ex[j];
-      w.A.multiply(ox, w.ey.data());
-      for (int i = 0; i < p; ++i) w.ey[i] = by[i] - w.ey[i];
-      w.nt.apply_square(oz, w.tmp_s.data());
-      w.G.multiply(ox, w.ez.data());
-      for (int i = 0; i < m; ++i) w.ez[i] = bz[i] - (w.ez[i] - w.tmp_s[i]);
+      if (w.use_schur) {
+        w.schur.residual(w.nt, bx, by, bz, ox, oy, oz, w.ex.data(), w.ey.data(), w.ez.data());
+      } else {
+        kkt_residual(bx, by, bz, ox, oy, oz);
+      }
       const double previous = err;
       err = std::max({norm_inf(w.ex.data(), n), norm_inf(w.ey.data(), p), norm_inf(w.ez.data(), m)}) / scale;
       // Stop at working accuracy, at the step cap, or once a step no longer halves the residual.

@@ -17,6 +17,8 @@
 //   in closed form before the LDL' (their diagonal block G_k'W_k^-2 G_k has the explicit inverse
 //   G_k^-1 W_k^2 G_k^-T), so the LDL' never pivots on those blocks, whose condition is that of
 //   W_k squared near the optimum; there the dense LU fallback becomes rare.
+// - When every column is separable (the planners' minimum-fuel problems), the whole KKT solve is
+//   the p x p Schur complement of separable_kkt.hpp, unregularised and exact.
 // Stopping tests and tolerances: conic_settings.hpp.
 //
 // All storage is sized by create(); solve() allocates nothing on accepted data (a rejected input

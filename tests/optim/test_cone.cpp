@@ -64,6 +64,22 @@ TEST(NtScaling, InverseSquareEqualsTwoInverseApplications) {
   EXPECT_LT(max_abs_diff(twice, square), 1e-13);
 }
 
+// The matrix form applies W to every column of a row-major block like the vector form.
+TEST(NtScaling, BlockRowsEqualColumnByColumnApplication) {
+  NtScaling nt(kCone);
+  std::vector<double> lambda(6);
+  ASSERT_TRUE(nt.update(kS.data(), kZ.data(), lambda.data()));
+  constexpr int kCols = 3;
+  std::vector<double> in(6 * kCols), rows(6 * kCols), columns(6 * kCols);
+  for (std::size_t i = 0; i < in.size(); ++i) in[i] = std::sin(1.0 + static_cast<double>(i));
+  for (int b = 0; b < nt.blocks(); ++b) {
+    const int r0 = nt.block_start(b);
+    nt.apply_block_rows(b, in.data() + r0 * kCols, rows.data() + r0 * kCols, kCols);
+    for (int c = 0; c < kCols; ++c) nt.apply_block(b, in.data() + r0 * kCols + c, columns.data() + r0 * kCols + c, kCols);
+  }
+  EXPECT_LT(max_abs_diff(rows, columns), 1e-14);
+}
+
 TEST(NtScaling, RejectsBoundaryPoint) {
   NtScaling nt(kCone);
   std::vector<double> s = kS, lambda(6);
