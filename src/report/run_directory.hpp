@@ -1,0 +1,29 @@
+#pragma once
+// File names and column names of a run directory (docs/run-directory.md), shared by the
+// simulator's recorder and the report, so neither can drift from the other.
+
+#include <array>
+#include <string_view>
+
+namespace visors::report {
+
+inline constexpr std::string_view kScenarioFile = "scenario.toml";
+inline constexpr std::string_view kTimeseriesFile = "timeseries.csv";
+inline constexpr std::string_view kObservationsFile = "observations.csv";
+inline constexpr std::string_view kEventsFile = "events.csv";
+inline constexpr std::string_view kSummaryFile = "summary.json";
+inline constexpr std::string_view kReportFile = "report.html";
+
+/// The columns of timeseries.csv, in order.
+inline constexpr std::array<std::string_view, 26> kTimeseriesColumns{
+    "t_s",         "mode",        "active",     "ada_mean_m",      "adl_mean_m", "adex_mean_m", "adey_mean_m",
+    "adix_mean_m", "adiy_mean_m", "ada_osc_m",  "adl_osc_m",       "adex_osc_m", "adey_osc_m",  "adix_osc_m",
+    "adiy_osc_m",  "r_r_m",       "r_t_m",      "r_n_m",           "v_r_mps",    "v_t_mps",     "v_n_mps",
+    "sep_rn_m",    "sep_3d_m",    "safety_margin_m", "dv_dsc_mps", "dv_osc_mps"};
+
+/// The columns of observations.csv and events.csv, in order.
+inline constexpr std::array<std::string_view, 6> kObservationColumns{
+    "index", "t_s", "lateral_error_m", "lateral_velocity_mps", "focus_error_m", "success"};
+inline constexpr std::array<std::string_view, 4> kEventColumns{"t_s", "spacecraft", "kind", "detail"};
+
+}  // namespace visors::report
