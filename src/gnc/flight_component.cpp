@@ -1,0 +1,411 @@
+#include "gnc/flight_component.hpp"
+
+#include <cmath>
+
+#include "control/closed_form_planner.hpp"
+#include "control/least_squares_planner.hpp"
+#include "safety/escape_maneuver.hpp"
+#include "safety/passive_safety.hpp"
+
+namespace visors::gnc {
+
+namespace {
+
+// Without a navigation solution for this long the component stops planning and reports itself
+// GNC incapable [s].
+constexpr double kMaxEstimateAge = 10.0;
+constexpr int kMaxWaypoints = 64;
+constexpr int kQueueCapacity = 4096;
+
+}  // namespace
+
+core::Result<FlightComponent> FlightComponent::create(const GncConfig& config) {
+  const auto valid = validate(config);
+  if (!valid.ok()) return valid.error();
+  auto mpc = control::StochasticMpc::create(config.science.mpc);
+  if (!mpc.ok()) return core::Error{"science.mpc." + mpc.error().field, mpc.error().message};
+  return FlightComponent(config, std::move(mpc).value());
+}
+
+FlightComponent::FlightComponent(const GncConfig& config, control::StochasticMpc mpc)
+    : config_(config), mpc_(std::move(mpc)), queue_(kQueueCapacity), active_(config.active), mass_kg_(config.mass_kg) {
+  waypoints_.reserve(kMaxWaypoints);
+}
+
+GncOutputs FlightComponent::step(const GncInputs& inputs) {
+  GncOutputs out;
+  try {
+    if (started_ && inputs.t < now_) {
+      ++telemetry_.rejected.navigation;  // a step back in time: nothing of it is used
+    } else {
+      now_ = inputs.t;
+      started_ = true;
+      accept_inputs(inputs, out);
+      if (!active_ && observation_ && now_ > observation_->end) observation_.reset();
+      if (estimate_) check_safety(out);
+      if (active_) run_control(out);
+      release_maneuver(out);
+    }
+  } catch (...) {  // allocation failure in a planner: never let it cross the API
+    ++telemetry_.planning_failures;
+    ++consecutive_failures_;
+  }
+  out.mode = mode_;
+  out.star_tracker_power = mode_ == Mode::science;
+  out.lrf_power = mode_ == Mode::science;
+  out.passive_safety_violated = safety_violated_ && mode_ != Mode::manual && mode_ != Mode::escape;
+  const bool stale = !estimate_ || since(last_navigation_) > kMaxEstimateAge;
+  out.gnc_incapable = stale || consecutive_failures_ >= config_.max_planning_failures;
+  telemetry_.t = now_;
+  telemetry_.mode = mode_;
+  telemetry_.active = active_;
+  telemetry_.estimate_valid = !stale;
+  if (estimate_) telemetry_.roe_mean_m = estimate_->chief_mean.a * estimate_->roe_mean;
+  telemetry_.safety_checked = safety_checked_;
+  telemetry_.safety_margin_m = safety_margin_m_;
+  telemetry_.observations_done = observations_done_;
+  telemetry_.pending_pieces = queue_.pending();
+  out.telemetry = telemetry_;
+  fill_crosslink(out);
+  return out;
+}
+
+void FlightComponent::accept_inputs(const GncInputs& inputs, GncOutputs& out) {
+  auto& rejected = telemetry_.rejected;
+  if (inputs.time_at_tone) {
+    if (validate(*inputs.time_at_tone, now_).ok()) {
+      q_body_to_gcrf_ = inputs.time_at_tone->q_body_to_gcrf;
+      has_attitude_ = true;
+    } else {
+      ++rejected.time_at_tone;
+    }
+  }
+  if (inputs.propulsion) {
+    if (validate(*inputs.propulsion, now_).ok()) mass_kg_ = inputs.propulsion->mass_kg;
+    else ++rejected.propulsion;
+  }
+  if (inputs.navigation) {
+    const bool valid = validate(*inputs.navigation, now_).ok();
+    auto estimate = valid ? estimate_from_navigation(*inputs.navigation, config_.gravity)
+                          : core::Result<RelativeEstimate>(core::Error{"navigation", "invalid"});
+    if (estimate.ok()) {
+      estimate_ = std::move(estimate).value();
+      last_navigation_ = inputs.navigation->t;
+    } else {
+      ++rejected.navigation;
+    }
+  }
+  if (inputs.command) {
+    if (validate(*inputs.command, now_).ok()) apply_command(*inputs.command);
+    else ++rejected.command;
+  }
+  if (inputs.crosslink) {
+    if (validate(*inputs.crosslink, now_).ok()) {
+      if (!active_) follow_peer(*inputs.crosslink, out);
+    } else {
+      ++rejected.crosslink;
+    }
+  }
+}
+
+void FlightComponent::apply_command(const GroundCommand& command) {
+  using Kind = GroundCommand::Kind;
+  switch (command.kind) {
+    case Kind::to_manual: enter(Mode::manual); break;
+    case Kind::to_standby:
+      if (mode_ == Mode::manual) enter(Mode::standby);
+      break;
+    case Kind::start_science:
+      if (mode_ == Mode::standby) {
+        observations_planned_ = command.observations;
+        observations_done_ = 0;
+        enter(Mode::transfer_to_science);
+      }
+      break;
+    case Kind::transfer_to_standby:
+      if (mode_ == Mode::science || mode_ == Mode::transfer_to_science) enter(Mode::transfer_to_standby);
+      break;
+    case Kind::escape:
+      if (mode_ != Mode::escape) enter(Mode::escape);
+      break;
+    case Kind::make_active: active_ = true; break;
+    case Kind::make_passive:
+      active_ = false;
+      queue_.clear();
+      break;
+  }
+}
+
+void FlightComponent::follow_peer(const CrosslinkMessage& peer, GncOutputs& out) {
+  if (!peer.sender_active) return;
+  mode_ = peer.mode;
+  observations_done_ = peer.observations_done;
+  observations_planned_ = peer.observations_planned;
+  if (peer.has_observation && (!observation_ || observation_->index != peer.observation_index)) {
+    ScheduledObservation scheduled;
+    scheduled.index = peer.observation_index;
+    scheduled.slew_start = peer.slew_start;
+    scheduled.start = peer.observation_start;
+    scheduled.end = peer.observation_end;
+    observation_ = scheduled;
+    out.observation = ObservationCommand{scheduled.index, scheduled.slew_start, scheduled.start, scheduled.end};
+  }
+}
+
+void FlightComponent::enter(Mode mode) {
+  mode_ = mode;
+  queue_.clear();
+  standby_checked_ = false;
+  waypoints_.clear();
+  leg_ = 0;
+  leg_planned_ = false;
+  observation_.reset();
+  observation_announced_ = false;
+  mpc_started_ = false;
+  ls_burns_planned_ = -1;
+  escape_planned_ = false;
+}
+
+void FlightComponent::check_safety(GncOutputs& /*out*/) {
+  if (safety_checked_ && since(last_safety_check_) < config_.safety.check_period) return;
+  last_safety_check_ = now_;
+  const auto assessment = safety::evaluate_passive_safety(estimate_->chief_mean, estimate_->roe_mean,
+                                                          estimate_->roe_covariance, config_.safety, config_.gravity);
+  if (!assessment.ok()) return;  // an estimate the check cannot use: keep the last verdict
+  safety_checked_ = true;
+  safety_margin_m_ = assessment->min_separation_margin;
+  safety_violated_ = !assessment->safe;
+}
+
+double FlightComponent::chief_period_s() const {
+  return safety::orbital_period(estimate_->chief_mean, config_.gravity.mu);
+}
+
+void FlightComponent::run_control(GncOutputs& out) {
+  if (!estimate_ || since(last_navigation_) > kMaxEstimateAge) return;
+  switch (mode_) {
+    case Mode::manual: break;
+    case Mode::standby: run_standby(); break;
+    case Mode::transfer_to_science:
+    case Mode::transfer_to_standby: run_transfer(); break;
+    case Mode::science: run_science(out); break;
+    case Mode::escape: run_escape(); break;
+  }
+}
+
+bool FlightComponent::replace_plan(const core::Result<std::vector<control::Impulse>>& impulses) {
+  if (impulses.ok()) {
+    queue_.clear();
+    const auto added = queue_.add(estimate_->t, estimate_->chief_mean, *impulses, mass_kg_, config_.buffer);
+    if (added.ok()) {
+      ++telemetry_.plans;
+      consecutive_failures_ = 0;
+      return true;
+    }
+  }
+  ++telemetry_.planning_failures;
+  ++consecutive_failures_;
+  return false;
+}
+
+namespace {
+core::Result<std::vector<control::Impulse>> impulses_of(const core::Result<control::ManeuverPlan>& plan) {
+  if (!plan.ok()) return plan.error();
+  return plan->impulses;
+}
+}  // namespace
+
+void FlightComponent::run_standby() {
+  if (!queue_.empty()) return;
+  const double period = config_.standby_keeping.check_period_orbits * chief_period_s();
+  if (standby_checked_ && since(last_standby_check_) < period) return;
+  standby_checked_ = true;
+  last_standby_check_ = now_;
+  const double a = estimate_->chief_mean.a;
+  const astro::RelativeOrbitalElements target = control::standby_roe(a, config_.standby);
+  const astro::RelativeOrbitalElements deviation_m = a * (estimate_->roe_mean - target);
+  const double de_m = std::hypot(deviation_m(astro::roe::kDex), deviation_m(astro::roe::kDey));
+  const double dlambda_m = std::abs(deviation_m(astro::roe::kDlambda));
+  if (de_m <= config_.standby_keeping.de_deadband_m && dlambda_m <= config_.standby_keeping.dlambda_threshold_m) return;
+  control::ClosedFormSettings settings;
+  settings.earliest_burn = config_.burn_latency_s;
+  const double tf = config_.standby_keeping.plan_orbits * chief_period_s();
+  replace_plan(impulses_of(control::plan_closed_form(estimate_->chief_mean, estimate_->roe_mean, target, tf, settings,
+                                                     config_.gravity)));
+}
+
+bool FlightComponent::start_transfer(const astro::RelativeOrbitalElements& target) {
+  auto waypoints = control::transfer_waypoints(estimate_->roe_mean, target, config_.transfer.waypoints);
+  if (!waypoints.ok() || waypoints->empty() || waypoints->size() > static_cast<std::size_t>(kMaxWaypoints)) {
+    ++telemetry_.planning_failures;
+    ++consecutive_failures_;
+    return false;
+  }
+  waypoints_.assign(waypoints->begin(), waypoints->end());
+  leg_ = 0;
+  leg_planned_ = false;
+  return true;
+}
+
+bool FlightComponent::plan_leg() {
+  const double tf = config_.transfer.leg_orbits * chief_period_s();
+  control::ClosedFormSettings settings;
+  settings.earliest_burn = config_.burn_latency_s;
+  settings.end_margin = config_.transfer.end_margin_s;
+  leg_end_ = estimate_->t + tf;
+  leg_planned_ = true;
+  return replace_plan(impulses_of(control::plan_closed_form(estimate_->chief_mean, estimate_->roe_mean,
+                                                            waypoints_[leg_], tf, settings, config_.gravity)));
+}
+
+void FlightComponent::run_transfer() {
+  if (waypoints_.empty()) {
+    astro::RelativeOrbitalElements target;
+    if (mode_ == Mode::transfer_to_science) {
+      const auto next = next_observation(estimate_->chief_mean, estimate_->t, 1, config_.science, config_.gravity);
+      if (!next.ok()) {
+        ++telemetry_.planning_failures;
+        ++consecutive_failures_;
+        return;
+      }
+      target = next->roe_target;
+    } else {
+      target = control::standby_roe(estimate_->chief_mean.a, config_.standby);
+    }
+    if (!start_transfer(target)) return;
+  }
+  if (!leg_planned_) {
+    plan_leg();
+    return;
+  }
+  if (now_ < leg_end_ || !queue_.empty()) return;
+  ++leg_;
+  leg_planned_ = false;
+  if (leg_ < waypoints_.size()) return;
+  enter(mode_ == Mode::transfer_to_science ? Mode::science : Mode::standby);
+}
+
+bool FlightComponent::schedule_observation(GncOutputs& out) {
+  const auto next = next_observation(estimate_->chief_mean, estimate_->t, observations_done_ + 1, config_.science,
+                                     config_.gravity);
+  if (!next.ok()) {
+    ++telemetry_.planning_failures;
+    ++consecutive_failures_;
+    return false;
+  }
+  if (!mpc_started_) mpc_epoch_ = estimate_->t;
+  observation_ = *next;
+  if (!mpc_.set_target(next->roe_target, next->start.seconds_since(mpc_epoch_)).ok()) {
+    ++telemetry_.planning_failures;
+    ++consecutive_failures_;
+  }
+  mpc_started_ = true;
+  last_mpc_ = now_ - 2.0 * config_.science.mpc_period_s;  // plan at once
+  ls_burns_planned_ = -1;
+  out.observation = ObservationCommand{next->index, next->slew_start, next->start, next->end};
+  return true;
+}
+
+void FlightComponent::run_science(GncOutputs& out) {
+  if (!observation_) {
+    if (!schedule_observation(out)) return;
+  }
+  if (now_ >= observation_->end) {
+    ++observations_done_;
+    observation_.reset();
+    if (observations_done_ >= observations_planned_) enter(Mode::transfer_to_standby);
+    return;
+  }
+  if (now_ >= observation_->slew_start) {
+    queue_.clear();  // nothing fires during the slew and the observation
+    return;
+  }
+  if (observation_->start.seconds_since(now_) <= config_.science.least_squares_window_s) {
+    science_fine_control();
+  } else {
+    science_mpc();
+  }
+}
+
+void FlightComponent::science_mpc() {
+  if (since(last_mpc_) < config_.science.mpc_period_s) return;
+  last_mpc_ = now_;
+  const double t = estimate_->t.seconds_since(mpc_epoch_);
+  const auto step = mpc_.step(t, estimate_->chief_mean, estimate_->roe_mean, estimate_->roe_covariance);
+  if (!step.ok()) {
+    ++telemetry_.planning_failures;
+    ++consecutive_failures_;
+    return;
+  }
+  if (!step->replanned) return;
+  std::vector<control::Impulse> impulses = step->remaining;
+  for (auto& impulse : impulses) impulse.t -= t;  // since the estimate time, the queue's epoch
+  replace_plan(impulses);
+}
+
+void FlightComponent::science_fine_control() {
+  const double to_start = observation_->start.seconds_since(estimate_->t);
+  double burns[3];
+  int count = 0;
+  for (const double before : config_.science.least_squares_burns_before_s) {
+    const double t_burn = to_start - before;
+    if (t_burn >= config_.burn_latency_s) burns[count++] = t_burn;
+  }
+  if (count == 0 || count == ls_burns_planned_) return;
+  ls_burns_planned_ = count;
+  const auto plan = control::plan_least_squares(estimate_->chief_mean, estimate_->roe_mean, observation_->roe_target,
+                                                to_start, std::span<const double>(burns, static_cast<std::size_t>(count)),
+                                                config_.science.least_squares, config_.gravity);
+  if (!plan.ok()) {
+    replace_plan(plan.error());
+    return;
+  }
+  replace_plan(plan->plan.impulses);
+}
+
+void FlightComponent::run_escape() {
+  if (!escape_planned_) {
+    escape_planned_ = true;
+    const auto escape = safety::plan_escape(estimate_->chief_mean, estimate_->roe_mean, estimate_->roe_covariance,
+                                            config_.burn_latency_s, config_.escape, config_.gravity);
+    if (!escape.ok()) {
+      replace_plan(escape.error());
+      escape_planned_ = false;  // try again at the next step with a fresh estimate
+      return;
+    }
+    replace_plan(std::vector<control::Impulse>{escape->impulse});
+    return;
+  }
+  if (queue_.empty() && queue_.has_released()) enter(Mode::manual);
+}
+
+void FlightComponent::release_maneuver(GncOutputs& out) {
+  if (!active_ || mode_ == Mode::manual || !has_attitude_ || !estimate_) return;
+  if (!queue_.due(now_, config_.buffer.limits.spacing)) return;
+  const QueuedPiece piece = queue_.pop(now_);
+  // The DSC (chief) firing changes the ROE with the opposite sign of the same impulse of the OSC
+  // (docs/conventions.md "Spacecraft and roles").
+  const Eigen::Vector3d dv_rtn = config_.self == Spacecraft::dsc ? Eigen::Vector3d(-piece.dv_rtn) : piece.dv_rtn;
+  const Eigen::Vector3d dv_gcrf = estimate_->rtn_to_gcrf * dv_rtn;
+  out.maneuver = ManeuverCommand{now_, q_body_to_gcrf_.conjugate() * dv_gcrf, dv_rtn};
+}
+
+void FlightComponent::fill_crosslink(GncOutputs& out) const {
+  CrosslinkMessage message;
+  message.t = now_;
+  message.sender = config_.self;
+  message.mode = mode_;
+  message.sender_active = active_;
+  message.observations_done = observations_done_;
+  message.observations_planned = observations_planned_;
+  if (observation_) {
+    message.has_observation = true;
+    message.observation_index = observation_->index;
+    message.slew_start = observation_->slew_start;
+    message.observation_start = observation_->start;
+    message.observation_end = observation_->end;
+  }
+  out.crosslink = message;
+}
+
+}  // namespace visors::gnc

@@ -1,0 +1,121 @@
+#pragma once
+// The GNC flight component of one spacecraft (architecture.md; mission paper sec. 4): typed
+// inputs in, typed outputs out, one step per call, driven by the time tags it is given.
+//
+// Mode manager (mission paper, GNC modes): manual -> standby (command) -> transfer_to_science
+// (command) -> science (N observation attempts) -> transfer_to_standby (autonomous) -> standby;
+// escape on the host application's FDIR command (raised by this component's passive-safety
+// check), exiting to manual once the escape pieces are fired. Only the ACTIVE spacecraft plans and
+// fires; the passive one follows the active one's mode and observation schedule over the
+// crosslink, and runs its own passive-safety check.
+//
+// Control stack per mode (active spacecraft):
+//  - standby: once per check period, if a|de - de_t| > deadband or a|dlambda - dlambda_t| >
+//    threshold, a closed-form plan back to the standby ROE over plan_orbits;
+//  - transfer: guidance waypoints (control::transfer_waypoints) flown as closed-form legs of
+//    leg_orbits each, each leg planned from the current estimate;
+//  - science: per observation, the stochastic MPC (reachable-set planner) on estimates
+//    mpc_period_s apart, then, inside the last least_squares_window_s, the least-squares planner
+//    at the fixed burn times still ahead (replanned after each burn), then the slew, the 10 s
+//    observation and the next one;
+//  - escape: safety::plan_escape, as soon as allowed.
+// Every plan goes through the maneuver buffer (ManeuverQueue).
+//
+// Robustness: every input is validated (messages.hpp) and a bad one counted and dropped; no
+// exception leaves step(); a planner failure is counted, the previous plan kept, and repeated
+// failures raise gnc_incapable. Storage is sized at creation; the planners themselves still
+// allocate their result vectors when they run (a replanning step), a routine step does not.
+
+#include <memory>
+#include <optional>
+
+#include "control/stochastic_mpc.hpp"
+#include "core/status.hpp"
+#include "gnc/gnc_config.hpp"
+#include "gnc/maneuver_queue.hpp"
+#include "gnc/messages.hpp"
+#include "gnc/observation_schedule.hpp"
+#include "gnc/relative_estimate.hpp"
+
+namespace visors::gnc {
+
+class FlightComponent {
+ public:
+  static core::Result<FlightComponent> create(const GncConfig& config);
+
+  /// One step at inputs.t (non-decreasing between calls; an earlier time is rejected as a whole
+  /// and counted as a navigation rejection).
+  GncOutputs step(const GncInputs& inputs);
+
+  [[nodiscard]] Mode mode() const { return mode_; }
+  [[nodiscard]] bool active() const { return active_; }
+  [[nodiscard]] const GncConfig& config() const { return config_; }
+  [[nodiscard]] const std::optional<RelativeEstimate>& estimate() const { return estimate_; }
+
+ private:
+  explicit FlightComponent(const GncConfig& config, control::StochasticMpc mpc);
+
+  void accept_inputs(const GncInputs& inputs, GncOutputs& out);
+  void apply_command(const GroundCommand& command);
+  void follow_peer(const CrosslinkMessage& peer, GncOutputs& out);
+  void enter(Mode mode);
+  void check_safety(GncOutputs& out);
+  void run_control(GncOutputs& out);
+  void run_standby();
+  void run_transfer();
+  void run_science(GncOutputs& out);
+  void run_escape();
+  void release_maneuver(GncOutputs& out);
+  void fill_crosslink(GncOutputs& out) const;
+  bool start_transfer(const astro::RelativeOrbitalElements& target);
+  bool plan_leg();
+  bool schedule_observation(GncOutputs& out);
+  void science_fine_control();
+  void science_mpc();
+  /// Buffers `impulses` (times since now) replacing what is queued; counts the plan or failure.
+  bool replace_plan(const core::Result<std::vector<control::Impulse>>& impulses);
+  double chief_period_s() const;
+  double since(core::GpsTime t) const { return now_.seconds_since(t); }
+
+  GncConfig config_;
+  control::StochasticMpc mpc_;
+  ManeuverQueue queue_;
+  Mode mode_ = Mode::manual;
+  bool active_ = true;
+  double mass_kg_ = 0.0;
+  core::GpsTime now_;
+  bool started_ = false;
+  Eigen::Quaterniond q_body_to_gcrf_ = Eigen::Quaterniond::Identity();
+  bool has_attitude_ = false;
+  std::optional<RelativeEstimate> estimate_;
+  core::GpsTime last_navigation_;
+  // Safety.
+  bool safety_checked_ = false;
+  core::GpsTime last_safety_check_;
+  double safety_margin_m_ = 0.0;
+  bool safety_violated_ = false;
+  // Standby.
+  core::GpsTime last_standby_check_;
+  bool standby_checked_ = false;
+  // Transfer.
+  std::vector<astro::RelativeOrbitalElements> waypoints_;
+  std::size_t leg_ = 0;
+  core::GpsTime leg_end_;
+  bool leg_planned_ = false;
+  // Science.
+  int observations_planned_ = 0;
+  int observations_done_ = 0;
+  std::optional<ScheduledObservation> observation_;
+  bool observation_announced_ = false;
+  core::GpsTime mpc_epoch_;
+  core::GpsTime last_mpc_;
+  bool mpc_started_ = false;
+  int ls_burns_planned_ = -1;  // least-squares burns still ahead at the last fine plan
+  // Escape.
+  bool escape_planned_ = false;
+  // Counters.
+  Telemetry telemetry_;
+  int consecutive_failures_ = 0;
+};
+
+}  // namespace visors::gnc

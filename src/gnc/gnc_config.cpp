@@ -1,0 +1,54 @@
+#include "gnc/gnc_config.hpp"
+
+#include <cmath>
+
+namespace visors::gnc {
+
+namespace {
+bool positive(double x) { return std::isfinite(x) && x > 0.0; }
+}  // namespace
+
+core::Result<GncConfig> validate(const GncConfig& config) {
+  if (!positive(config.mass_kg)) return core::Error{"mass_kg", "must be > 0"};
+  if (!positive(config.standby.separation)) return core::Error{"standby.separation", "must be > 0"};
+  const auto& sk = config.standby_keeping;
+  if (!positive(sk.check_period_orbits)) return core::Error{"standby_keeping.check_period_orbits", "must be > 0"};
+  if (!positive(sk.de_deadband_m)) return core::Error{"standby_keeping.de_deadband_m", "must be > 0"};
+  if (!positive(sk.dlambda_threshold_m)) return core::Error{"standby_keeping.dlambda_threshold_m", "must be > 0"};
+  if (!(sk.plan_orbits >= 1.6 && std::isfinite(sk.plan_orbits))) {
+    return core::Error{"standby_keeping.plan_orbits", "must be >= 1.6 (the closed-form window is 1.5 orbits)"};
+  }
+  if (!(config.transfer.leg_orbits >= 1.6 && std::isfinite(config.transfer.leg_orbits))) {
+    return core::Error{"transfer.leg_orbits", "must be >= 1.6 (the closed-form window is 1.5 orbits)"};
+  }
+  if (!(config.transfer.end_margin_s >= 0.0)) return core::Error{"transfer.end_margin_s", "must be >= 0"};
+  const auto& sc = config.science;
+  if (!positive(sc.least_squares_window_s)) return core::Error{"science.least_squares_window_s", "must be > 0"};
+  for (int k = 0; k < 3; ++k) {
+    const double b = sc.least_squares_burns_before_s[k];
+    if (!(b > 0.0 && b <= sc.least_squares_window_s) || (k > 0 && !(b < sc.least_squares_burns_before_s[k - 1]))) {
+      return core::Error{"science.least_squares_burns_before_s",
+                         "must be decreasing, > 0 and within least_squares_window_s"};
+    }
+  }
+  if (!positive(sc.mpc_period_s)) return core::Error{"science.mpc_period_s", "must be > 0"};
+  if (!(sc.min_lead_s > sc.least_squares_window_s)) {
+    return core::Error{"science.min_lead_s", "must exceed least_squares_window_s"};
+  }
+  if (!positive(sc.observation_duration_s)) return core::Error{"science.observation_duration_s", "must be > 0"};
+  if (!positive(sc.slew_rate_rad_s)) return core::Error{"science.slew_rate_rad_s", "must be > 0"};
+  if (!(sc.slew_settle_s >= 0.0)) return core::Error{"science.slew_settle_s", "must be >= 0"};
+  if (!(sc.max_slew_angle_rad > 0.0 && sc.max_slew_angle_rad <= core::kPi)) {
+    return core::Error{"science.max_slew_angle_rad", "must be in (0, pi]"};
+  }
+  if (sc.least_squares_burns_before_s[2] <= sc.max_slew_angle_rad / sc.slew_rate_rad_s + sc.slew_settle_s) {
+    return core::Error{"science.least_squares_burns_before_s", "the last burn must precede the slew"};
+  }
+  if (auto ok = safety::validate(config.safety); !ok) return core::Error{"safety." + ok.error().field, ok.error().message};
+  if (auto ok = safety::validate(config.escape); !ok) return core::Error{"escape." + ok.error().field, ok.error().message};
+  if (!(config.burn_latency_s >= 0.0)) return core::Error{"burn_latency_s", "must be >= 0"};
+  if (config.max_planning_failures < 1) return core::Error{"max_planning_failures", "must be >= 1"};
+  return config;
+}
+
+}  // namespace visors::gnc

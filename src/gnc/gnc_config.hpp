@@ -1,0 +1,83 @@
+#pragma once
+// Configuration of the flight component (the configuration channel): every threshold, horizon and
+// period is here with its default and why. Defaults follow the mission paper (GNC algorithms
+// table, test-case table) where it gives a number; the others are stated as this project's.
+
+#include "control/guidance.hpp"
+#include "control/least_squares_planner.hpp"
+#include "control/maneuver_buffer.hpp"
+#include "control/stochastic_mpc.hpp"
+#include "core/constants.hpp"
+#include "core/status.hpp"
+#include "gnc/messages.hpp"
+#include "safety/escape_maneuver.hpp"
+#include "safety/passive_safety_settings.hpp"
+
+namespace visors::gnc {
+
+struct StandbyKeepingSettings {
+  /// How often the standby orbit is checked (paper: once per orbit) [chief orbits].
+  double check_period_orbits = 1.0;
+  /// Deadband on a |de - de_target| (paper: a de_dbd; value ours: 1 % of the 200 m standby
+  /// separation, so the RN separation stays within 2 m of the design) [m].
+  double de_deadband_m = 2.0;
+  /// Threshold on a |dlambda - dlambda_target| (paper: a dlambda_thr, driven by differential
+  /// drag; value ours: a tenth of the standby separation) [m].
+  double dlambda_threshold_m = 20.0;
+  /// Horizon of a station-keeping plan (closed form needs >= 1.5 orbits) [chief orbits].
+  double plan_orbits = 2.0;
+};
+
+struct TransferSettings {
+  control::TransferSettings waypoints;
+  /// Duration of one reconfiguration leg (paper: 1.5-orbit steps; 2 leaves the closed-form
+  /// planner its 1.5-orbit window after the burn latency and an end margin) [chief orbits].
+  double leg_orbits = 2.0;
+  /// The last allowed burn of a leg is this long before the leg end [s].
+  double end_margin_s = 60.0;
+};
+
+struct ScienceSettings {
+  control::ScienceGeometry geometry;
+  /// Fine control window before each observation: least squares at fixed times (paper: last
+  /// 10-15 min) [s].
+  double least_squares_window_s = 720.0;
+  /// Burn times of the least-squares planner, seconds before the observation (3 burns, 4 min
+  /// apart; the last one leaves 2 min for the slew and settling).
+  double least_squares_burns_before_s[3] = {720.0, 480.0, 240.0};
+  control::LeastSquaresSettings least_squares;
+  /// The reachable-set MPC runs on navigation updates this far apart (paper: every 5 min) [s].
+  double mpc_period_s = 300.0;
+  control::StochasticMpcSettings mpc;
+  /// The first observation after entering science is at least this far ahead, so the MPC has
+  /// a horizon (0.5 orbit) [s].
+  double min_lead_s = 2900.0;
+  double observation_duration_s = 10.0;  // [s] (requirement: 10 s windows)
+  double slew_rate_rad_s = 1.5 * core::kPi / 180.0;  // [rad/s] (paper: 1.5 deg/s)
+  double slew_settle_s = 30.0;                       // settling after the slew [s] (ours)
+  /// Largest slew the schedule allows for (zenith to Sun can be up to 180 deg) [rad].
+  double max_slew_angle_rad = core::kPi;
+};
+
+struct GncConfig {
+  Spacecraft self = Spacecraft::osc;
+  bool active = true;        // initial role: the active spacecraft maneuvers
+  double mass_kg = 10.62;    // own wet mass at start (updated by propulsion telemetry) [kg]
+  core::EarthGravityConstants gravity;
+  control::StandbyOrbit standby;
+  StandbyKeepingSettings standby_keeping;
+  TransferSettings transfer;
+  ScienceSettings science;
+  safety::PassiveSafetySettings safety;
+  safety::EscapeSettings escape;
+  control::BufferSettings buffer;
+  /// A new plan's first burn is no earlier than this after the step that planned it [s].
+  double burn_latency_s = 10.0;
+  /// Consecutive planning failures after which "GNC incapable" is raised.
+  int max_planning_failures = 3;
+};
+
+/// Checks every field (names as in the struct, e.g. "standby_keeping.de_deadband_m").
+core::Result<GncConfig> validate(const GncConfig& config);
+
+}  // namespace visors::gnc

@@ -1,0 +1,147 @@
+#pragma once
+// The flight component's channels as typed records (architecture.md "The flight component's
+// channels"; mission paper, GNC interface). Inputs arrive at any time or not at all; each one is
+// validated (validate_* below) and a bad record is rejected, counted in telemetry, and never
+// used. Outputs are produced by every step.
+//
+// Relative states follow docs/conventions.md: deputy (OSC) minus chief (DSC), chief RTN.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "core/gps_time.hpp"
+#include "core/state_vector.hpp"
+#include "core/status.hpp"
+#include "gnc/gnc_mode.hpp"
+
+namespace visors::gnc {
+
+enum class Spacecraft : std::uint8_t { dsc, osc };
+std::string_view to_string(Spacecraft spacecraft);
+
+// ---- Inputs.
+
+/// Time at tone with the attitude solution (1 Hz).
+struct TimeAtTone {
+  core::GpsTime t;
+  Eigen::Quaterniond q_body_to_gcrf = Eigen::Quaterniond::Identity();  // scalar first, Hamilton
+};
+
+/// Navigation solution (1 Hz): absolute states of both spacecraft and the covariance of the
+/// relative state (until the GPS filter exists, the simulator's ideal navigation provides it).
+struct NavigationSolution {
+  core::GpsTime t;
+  core::StateVector chief_gcrf;   // DSC [m, m/s]
+  core::StateVector deputy_gcrf;  // OSC [m, m/s]
+  /// Covariance of [dr_rtn; dv_rtn] of the deputy relative to the chief [m^2, m^2/s^2].
+  Eigen::Matrix<double, 6, 6> relative_covariance_rtn = Eigen::Matrix<double, 6, 6>::Identity() * 1e-4;
+};
+
+/// Ground commands (weekly); FDIR responses of the host application use the same record.
+struct GroundCommand {
+  enum class Kind : std::uint8_t {
+    to_manual,            // stop autonomous control
+    to_standby,           // from manual: acquire / keep the standby orbit
+    start_science,        // from standby: transfer to science, then `observations` attempts
+    transfer_to_standby,  // FDIR: abort science or transfer, go back to standby
+    escape,               // FDIR: plan and execute the escape maneuver, then manual
+    make_active,          // role switch: this spacecraft maneuvers
+    make_passive,         // role switch: this spacecraft does not maneuver
+  };
+  core::GpsTime t;
+  Kind kind = Kind::to_manual;
+  int observations = 10;  // start_science only
+};
+std::string_view to_string(GroundCommand::Kind kind);
+
+/// Propulsion telemetry after each impulse.
+struct PropulsionTelemetry {
+  core::GpsTime t;
+  Eigen::Vector3d dv_body_mps = Eigen::Vector3d::Zero();  // as executed (commanded, quantised) [m/s]
+  double mass_kg = 0.0;                                   // after the impulse [kg]
+  bool executed = false;                                  // false: the command was refused
+};
+
+/// Crosslink (1 Hz, delayed): what the other spacecraft's component tells this one.
+struct CrosslinkMessage {
+  core::GpsTime t;  // when it was sent
+  Spacecraft sender = Spacecraft::dsc;
+  Mode mode = Mode::manual;
+  bool sender_active = false;
+  int observations_done = 0;
+  int observations_planned = 0;
+  bool has_observation = false;  // the next observation below is scheduled
+  int observation_index = 0;
+  core::GpsTime slew_start, observation_start, observation_end;
+};
+
+/// Everything that arrived for one step; absent channels are empty.
+struct GncInputs {
+  core::GpsTime t;
+  std::optional<TimeAtTone> time_at_tone;
+  std::optional<NavigationSolution> navigation;
+  std::optional<CrosslinkMessage> crosslink;
+  std::optional<GroundCommand> command;
+  std::optional<PropulsionTelemetry> propulsion;
+};
+
+// ---- Outputs.
+
+struct ManeuverCommand {
+  core::GpsTime t;
+  Eigen::Vector3d dv_body_mps = Eigen::Vector3d::Zero();  // for the thrusters [m/s]
+  Eigen::Vector3d dv_rtn_mps = Eigen::Vector3d::Zero();   // the same impulse, own spacecraft's view of the chief RTN [m/s]
+};
+
+struct ObservationCommand {
+  int index = 0;  // 1-based attempt number
+  core::GpsTime slew_start, start, end;
+};
+
+/// Rejected-input counters by channel (telemetry).
+struct RejectionCounters {
+  std::int64_t time_at_tone = 0, navigation = 0, crosslink = 0, command = 0, propulsion = 0;
+  [[nodiscard]] std::int64_t total() const { return time_at_tone + navigation + crosslink + command + propulsion; }
+};
+
+struct Telemetry {
+  core::GpsTime t;
+  Mode mode = Mode::manual;
+  bool active = false;
+  bool estimate_valid = false;
+  Eigen::Matrix<double, 6, 1> roe_mean_m = Eigen::Matrix<double, 6, 1>::Zero();  // a * mean ROE [m]
+  bool safety_checked = false;       // a check has been made
+  double safety_margin_m = 0.0;      // last check: min separation - q sigma [m]
+  int observations_done = 0;
+  int pending_pieces = 0;            // buffered impulses not yet commanded
+  std::int64_t plans = 0;            // planner calls that produced a plan
+  std::int64_t planning_failures = 0;
+  RejectionCounters rejected;
+};
+
+struct GncOutputs {
+  std::optional<ManeuverCommand> maneuver;
+  std::optional<ObservationCommand> observation;  // issued once per attempt, when scheduled
+  std::optional<CrosslinkMessage> crosslink;
+  Mode mode = Mode::manual;
+  bool star_tracker_power = false;  // science mode
+  bool lrf_power = false;           // science mode
+  bool gnc_incapable = false;       // no valid estimate, or planning keeps failing
+  bool passive_safety_violated = false;
+  Telemetry telemetry;
+};
+
+// ---- Validation (field names in the errors; times must be within `max_age` of the step).
+
+core::Result<bool> validate(const TimeAtTone& message, core::GpsTime now);
+core::Result<bool> validate(const NavigationSolution& message, core::GpsTime now);
+core::Result<bool> validate(const CrosslinkMessage& message, core::GpsTime now);
+core::Result<bool> validate(const GroundCommand& message, core::GpsTime now);
+core::Result<bool> validate(const PropulsionTelemetry& message, core::GpsTime now);
+
+}  // namespace visors::gnc

@@ -1,0 +1,65 @@
+#pragma once
+// Test support: navigation solutions of a formation given by mean elements, advanced by the
+// secular J2 model (astro::propagate_mean_j2) and converted to osculating Cartesian states, so
+// the flight component sees the relative orbit it is meant to see (no noise).
+
+#include <cmath>
+#include <numbers>
+
+#include "astro/j2_secular.hpp"
+#include "astro/keplerian_elements.hpp"
+#include "astro/mean_osculating.hpp"
+#include "astro/relative_orbital_elements.hpp"
+#include "gnc/messages.hpp"
+
+namespace visors::gnc::test {
+
+inline constexpr double kDeg = std::numbers::pi / 180.0;
+
+/// The mission chief (DSC) mean elements (mission paper test case; argp 90 deg, u0 = 0).
+inline astro::KeplerianElements mission_chief() {
+  return {6378136.3 + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, -90.0 * kDeg};
+}
+
+class FormationHarness {
+ public:
+  FormationHarness(const astro::KeplerianElements& chief_mean, const Eigen::Matrix<double, 6, 1>& roe_m, core::GpsTime t0)
+      : chief_(chief_mean), t0_(t0) {
+    deputy_ = astro::deputy_from_roe(chief_mean, roe_m / chief_mean.a).value();
+  }
+
+  [[nodiscard]] NavigationSolution navigation(double t_s) const {
+    NavigationSolution out;
+    out.t = t0_ + t_s;
+    out.chief_gcrf = state(chief_, t_s);
+    out.deputy_gcrf = state(deputy_, t_s);
+    out.relative_covariance_rtn.setZero();
+    out.relative_covariance_rtn.diagonal() << 3.3e-5, 3.3e-5, 3.3e-5, 8.3e-10, 8.3e-10, 8.3e-10;  // 1 cm, 50 um/s 3D
+    return out;
+  }
+  [[nodiscard]] GncInputs inputs(double t_s) const {
+    GncInputs in;
+    in.t = t0_ + t_s;
+    in.time_at_tone = TimeAtTone{in.t, Eigen::Quaterniond::Identity()};
+    in.navigation = navigation(t_s);
+    return in;
+  }
+  [[nodiscard]] core::GpsTime t0() const { return t0_; }
+
+ private:
+  static core::StateVector state(const astro::KeplerianElements& mean, double t_s) {
+    const auto m = astro::propagate_mean_j2(mean, t_s);
+    return astro::cartesian_from_keplerian(astro::osculating_from_mean(m).value(), core::EarthGravityConstants{}.mu);
+  }
+
+  astro::KeplerianElements chief_, deputy_;
+  core::GpsTime t0_;
+};
+
+inline Eigen::Matrix<double, 6, 1> roe_m(double da, double dl, double dex, double dey, double dix, double diy) {
+  Eigen::Matrix<double, 6, 1> r;
+  r << da, dl, dex, dey, dix, diy;
+  return r;
+}
+
+}  // namespace visors::gnc::test

@@ -1,0 +1,185 @@
+// The flight component: mode manager, roles, input rejection, control stack hooks, escape,
+// allocation-free routine steps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "formation_harness.hpp"
+#include "gnc/flight_component.hpp"
+#include "support/counting_new.hpp"
+
+namespace {
+
+using namespace visors::gnc;
+using visors::core::GpsTime;
+
+const GpsTime kT0 = GpsTime::from_seconds(1.4e9);
+
+FlightComponent make(Spacecraft self, bool active, double mass_kg = 10.62) {
+  GncConfig config;
+  config.self = self;
+  config.active = active;
+  config.mass_kg = mass_kg;
+  return FlightComponent::create(config).value();
+}
+
+GroundCommand command(double t_s, GroundCommand::Kind kind, int observations = 10) {
+  return GroundCommand{kT0 + t_s, kind, observations};
+}
+
+TEST(FlightComponent, StartsInManual) {
+  const auto c = make(Spacecraft::osc, true);
+  EXPECT_EQ(c.mode(), Mode::manual);
+}
+
+TEST(FlightComponent, StandbyCommandFromManual) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  EXPECT_EQ(c.step(in).mode, Mode::standby);
+}
+
+TEST(FlightComponent, ScienceCommandFromStandbyStartsTheTransfer) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  c.step(in);
+  in = h.inputs(1.0);
+  in.command = command(1.0, GroundCommand::Kind::start_science, 3);
+  const auto out = c.step(in);
+  EXPECT_EQ(out.mode, Mode::transfer_to_science);
+}
+
+// Nominal standby orbit: inside the deadband and threshold, nothing is planned.
+TEST(FlightComponent, NominalStandbyPlansNothing) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  const auto out = c.step(in);
+  EXPECT_EQ(out.telemetry.plans, 0);
+}
+
+// a|de - de_t| = 10 m > the 2 m deadband: a closed-form plan is buffered at the first check.
+TEST(FlightComponent, StandbyOffsetTriggersAPlan) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 210, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  const auto out = c.step(in);
+  EXPECT_GT(out.telemetry.pending_pieces, 0);
+}
+
+TEST(FlightComponent, PassiveSpacecraftFollowsTheActiveMode) {
+  auto c = make(Spacecraft::dsc, false);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  auto in = h.inputs(1.0);
+  CrosslinkMessage peer;
+  peer.t = kT0 + 0.5;
+  peer.sender = Spacecraft::osc;
+  peer.sender_active = true;
+  peer.mode = Mode::science;
+  in.crosslink = peer;
+  EXPECT_EQ(c.step(in).mode, Mode::science);
+}
+
+TEST(FlightComponent, PassiveSpacecraftNeverFires) {
+  auto c = make(Spacecraft::dsc, false);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 230, 0, 200), kT0);
+  int maneuvers = 0;
+  for (int k = 0; k < 200; ++k) {
+    auto in = h.inputs(k);
+    if (k == 0) in.command = command(0.0, GroundCommand::Kind::to_standby);
+    maneuvers += c.step(in).maneuver ? 1 : 0;
+  }
+  EXPECT_EQ(maneuvers, 0);
+}
+
+TEST(FlightComponent, NanNavigationIsCountedAndNotUsed) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.navigation->chief_gcrf.v.y() = std::numeric_limits<double>::quiet_NaN();
+  const auto out = c.step(in);
+  EXPECT_EQ(out.telemetry.rejected.navigation, 1);
+}
+
+TEST(FlightComponent, NoEstimateMeansGncIncapable) {
+  auto c = make(Spacecraft::osc, true);
+  GncInputs in;
+  in.t = kT0;
+  EXPECT_TRUE(c.step(in).gnc_incapable);
+}
+
+TEST(FlightComponent, StepBackInTimeIsRejected) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  c.step(h.inputs(10.0));
+  const auto out = c.step(h.inputs(5.0));
+  EXPECT_EQ(out.telemetry.rejected.navigation, 1);
+}
+
+// docs/conventions.md: the chief's impulse changes the ROE with the opposite sign of the same
+// impulse of the deputy, so the DSC commands -dv where the OSC would command dv (same mass, so
+// the buffer quantises both alike).
+TEST(FlightComponent, DscFiresTheOppositeOfTheOsc) {
+  auto osc = make(Spacecraft::osc, true);
+  auto dsc = make(Spacecraft::dsc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 230, 0, 200), kT0);
+  std::optional<ManeuverCommand> first_osc, first_dsc;
+  for (int k = 0; k < 4000 && !(first_osc && first_dsc); ++k) {
+    auto in = h.inputs(k);
+    if (k == 0) in.command = command(0.0, GroundCommand::Kind::to_standby);
+    if (auto m = osc.step(in).maneuver; m && !first_osc) first_osc = m;
+    if (auto m = dsc.step(in).maneuver; m && !first_dsc) first_dsc = m;
+  }
+  ASSERT_TRUE(first_osc && first_dsc);
+  EXPECT_LT((first_osc->dv_rtn_mps + first_dsc->dv_rtn_mps).norm(), 1e-12);
+}
+
+// Perpendicular e and i vectors: the RN separation vanishes twice per orbit (D'Amico &
+// Montenbruck 2006), so the passive-safety check must flag it.
+TEST(FlightComponent, PerpendicularEiVectorsRaiseAViolation) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 200, 0, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  EXPECT_TRUE(c.step(in).passive_safety_violated);
+}
+
+TEST(FlightComponent, EscapeFiresAndEndsInManual) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(-1.0, 30, -34.5, 4.8, -18.7, 2.7), kT0);
+  int maneuvers = 0;
+  Mode mode = Mode::manual;
+  for (int k = 0; k < 1500 && !(maneuvers > 0 && mode == Mode::manual); ++k) {
+    auto in = h.inputs(k);
+    if (k == 0) in.command = command(0.0, GroundCommand::Kind::to_standby);
+    if (k == 1) in.command = command(1.0, GroundCommand::Kind::escape);
+    const auto out = c.step(in);
+    maneuvers += out.maneuver ? 1 : 0;
+    mode = out.mode;
+  }
+  EXPECT_GT(maneuvers, 0);
+  EXPECT_EQ(mode, Mode::manual);
+}
+
+// A routine step (standby inside the deadband, safety check included) allocates nothing.
+TEST(FlightComponent, RoutineStepAllocatesNothing) {
+  auto c = make(Spacecraft::osc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  c.step(in);
+  std::vector<GncInputs> inputs;
+  for (int k = 1; k <= 25; ++k) inputs.push_back(h.inputs(k));
+  const long allocations = visors::test::count_allocations([&] {
+    for (const auto& i : inputs) c.step(i);
+  });
+  EXPECT_EQ(allocations, 0);
+}
+
+}  // namespace
