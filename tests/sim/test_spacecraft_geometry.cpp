@@ -1,0 +1,127 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "sim/spacecraft_geometry.hpp"
+
+namespace {
+
+using visors::sim::GeometrySettings;
+using visors::sim::RandomStream;
+using visors::sim::SpacecraftGeometry;
+
+GeometrySettings zero_sigma() {
+  GeometrySettings s;
+  s.com_sigma_m = 0.0;
+  s.payload_position_sigma_m = 0.0;
+  s.payload_pointing_sigma_rad = 0.0;
+  return s;
+}
+
+TEST(SpacecraftGeometry, DefaultSettingsAreValid) { EXPECT_TRUE(GeometrySettings{}.validate().ok()); }
+
+TEST(SpacecraftGeometry, ValidateNamesTheField) {
+  GeometrySettings s;
+  s.com_sigma_m = -1.0;
+  EXPECT_EQ(s.validate().error().field, "com_sigma_m");
+}
+
+// Issue default: payload point (0.15, 0, 0) m on the +X face, nominal centre of mass at the origin.
+TEST(SpacecraftGeometry, NominalPayloadFromComIsTheDefault) {
+  RandomStream rng(1, "osc.geometry");
+  EXPECT_EQ(SpacecraftGeometry::draw({}, rng).payload_from_com_nominal_body_m(), Eigen::Vector3d(0.15, 0.0, 0.0));
+}
+
+// Zero sigmas reproduce the nominal values bit for bit.
+TEST(SpacecraftGeometry, ZeroSigmaGivesNominalPayloadFromCom) {
+  RandomStream rng(1, "osc.geometry");
+  const SpacecraftGeometry g = SpacecraftGeometry::draw(zero_sigma(), rng);
+  EXPECT_EQ(g.payload_from_com_body_m(), g.payload_from_com_nominal_body_m());
+}
+
+TEST(SpacecraftGeometry, ZeroSigmaGivesNominalAxis) {
+  RandomStream rng(1, "osc.geometry");
+  const SpacecraftGeometry g = SpacecraftGeometry::draw(zero_sigma(), rng);
+  EXPECT_EQ(g.payload_axis_body(), g.payload_axis_nominal_body());
+}
+
+TEST(SpacecraftGeometry, TrueAxisIsUnit) {
+  RandomStream rng(2, "osc.geometry");
+  EXPECT_NEAR(SpacecraftGeometry::draw({}, rng).payload_axis_body().norm(), 1.0, 1e-15);
+}
+
+// Sample statistics over N = 20000 draws from one stream; references are the issue's sigmas with
+// 5-standard-error bands (mean: sigma / sqrt(N); std: sigma / sqrt(2N)).
+constexpr int kDraws = 20000;
+struct Moments {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), std = Eigen::Vector3d::Zero();
+};
+enum class Quantity { kCom, kPayloadPoint, kAxis };
+
+Moments sample(Quantity quantity) {
+  RandomStream rng(11, "stats.geometry");
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero(), sum2 = Eigen::Vector3d::Zero();
+  for (int k = 0; k < kDraws; ++k) {
+    const SpacecraftGeometry g = SpacecraftGeometry::draw({}, rng);
+    Eigen::Vector3d x;
+    switch (quantity) {
+      case Quantity::kCom: x = g.com_body_m() - g.com_nominal_body_m(); break;
+      case Quantity::kPayloadPoint: x = g.payload_body_m() - g.payload_nominal_body_m(); break;
+      case Quantity::kAxis: x = g.payload_axis_body() - g.payload_axis_nominal_body(); break;
+    }
+    sum += x;
+    sum2 += x.cwiseProduct(x);
+  }
+  Moments m;
+  m.mean = sum / kDraws;
+  m.std = (sum2 / kDraws - m.mean.cwiseProduct(m.mean)).cwiseSqrt();
+  return m;
+}
+
+TEST(SpacecraftGeometry, CentreOfMassErrorIsUnbiased) {
+  EXPECT_LT(sample(Quantity::kCom).mean.cwiseAbs().maxCoeff(), 5.0 * 3e-3 / std::sqrt(kDraws));
+}
+
+TEST(SpacecraftGeometry, CentreOfMassErrorHas3mmPerAxis) {
+  EXPECT_LT((sample(Quantity::kCom).std.array() - 3e-3).abs().maxCoeff(), 5.0 * 3e-3 / std::sqrt(2.0 * kDraws));
+}
+
+TEST(SpacecraftGeometry, PayloadPointErrorIsUnbiased) {
+  EXPECT_LT(sample(Quantity::kPayloadPoint).mean.cwiseAbs().maxCoeff(), 5.0 * 0.5e-3 / std::sqrt(kDraws));
+}
+
+TEST(SpacecraftGeometry, PayloadPointErrorHasHalfMillimetrePerAxis) {
+  EXPECT_LT((sample(Quantity::kPayloadPoint).std.array() - 0.5e-3).abs().maxCoeff(),
+            5.0 * 0.5e-3 / std::sqrt(2.0 * kDraws));
+}
+
+// Tilts of the +X axis show as its Y and Z components (sin t ~ t to 4e-9 relative at 30 arcsec),
+// each with 1-sigma 30 arcsec (per-axis tilt, header comment).
+TEST(SpacecraftGeometry, PointingTiltHas30ArcsecPerAxis) {
+  const double sigma = 30.0 * visors::core::kArcsecToRad;
+  const Eigen::Vector3d s = sample(Quantity::kAxis).std;
+  EXPECT_LT(std::max(std::abs(s.y() - sigma), std::abs(s.z() - sigma)), 5.0 * sigma / std::sqrt(2.0 * kDraws));
+}
+
+TEST(SpacecraftGeometry, PointingTiltIsUnbiased) {
+  const double sigma = 30.0 * visors::core::kArcsecToRad;
+  const Eigen::Vector3d m = sample(Quantity::kAxis).mean;
+  EXPECT_LT(std::max(std::abs(m.y()), std::abs(m.z())), 5.0 * sigma / std::sqrt(kDraws));
+}
+
+// Determinism: same seed and name -> identical geometry.
+TEST(SpacecraftGeometry, SameSeedGivesIdenticalGeometry) {
+  RandomStream a(7, "dsc.geometry"), b(7, "dsc.geometry");
+  const SpacecraftGeometry ga = SpacecraftGeometry::draw({}, a), gb = SpacecraftGeometry::draw({}, b);
+  EXPECT_TRUE(ga.payload_from_com_body_m() == gb.payload_from_com_body_m() &&
+              ga.payload_axis_body() == gb.payload_axis_body());
+}
+
+TEST(SpacecraftGeometry, DifferentNamesGiveDifferentGeometry) {
+  RandomStream a(7, "dsc.geometry"), b(7, "osc.geometry");
+  EXPECT_NE(SpacecraftGeometry::draw({}, a).com_body_m(), SpacecraftGeometry::draw({}, b).com_body_m());
+}
+
+}  // namespace
