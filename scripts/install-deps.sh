@@ -8,6 +8,7 @@ PACKAGES=(
   libeigen3-dev liberfa-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgeographiclib-dev
   python3 python3-cvxopt python3-numpy
+  chromium
 )
 
 missing=()

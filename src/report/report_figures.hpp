@@ -1,0 +1,27 @@
+#pragma once
+// The seven figures of the run report, each a <figure> holding an <svg> with a stable id (tests
+// and readers find figures by id) and a <figcaption>.
+
+#include <string>
+
+#include "report/run_data.hpp"
+
+namespace visors::report {
+
+/// The ids of the figures, in the order they appear.
+inline constexpr const char* kFigureIds[] = {"fig-roe-mean-osc", "fig-ei-vectors", "fig-separation",
+                                             "fig-trajectory-rtn", "fig-alignment", "fig-delta-v",
+                                             "fig-modes"};
+
+std::string roe_figure(const RunData& run);
+std::string ei_vector_figure(const RunData& run);
+std::string separation_figure(const RunData& run);
+std::string trajectory_figure(const RunData& run);
+std::string alignment_figure(const RunData& run);
+std::string delta_v_figure(const RunData& run);
+std::string mode_figure(const RunData& run);
+
+/// All seven, in order.
+std::string all_figures(const RunData& run);
+
+}  // namespace visors::report
