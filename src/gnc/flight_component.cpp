@@ -2,7 +2,13 @@
 
 #include <cmath>
 
+#include <Eigen/LU>
+
+#include "astro/j2_secular.hpp"
+#include "astro/roe_rtn_map.hpp"
+#include "astro/roe_stm.hpp"
 #include "control/closed_form_planner.hpp"
+#include "control/impulse_effect.hpp"
 #include "control/least_squares_planner.hpp"
 #include "safety/escape_maneuver.hpp"
 #include "safety/passive_safety.hpp"
@@ -64,6 +70,8 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
   telemetry_.safety_checked = safety_checked_;
   telemetry_.safety_margin_m = safety_margin_m_;
   telemetry_.observations_done = observations_done_;
+  telemetry_.roe_target_m.setZero();
+  if (observation_ && estimate_) telemetry_.roe_target_m = estimate_->chief_mean.a * observation_->roe_target;
   telemetry_.pending_pieces = queue_.pending();
   out.telemetry = telemetry_;
   fill_crosslink(out);
@@ -91,6 +99,8 @@ void FlightComponent::accept_inputs(const GncInputs& inputs, GncOutputs& out) {
     if (estimate.ok()) {
       estimate_ = std::move(estimate).value();
       last_navigation_ = inputs.navigation->t;
+      const double n = 2.0 * core::kPi / chief_period_s();
+      drag_.observe(estimate_->t, estimate_->chief_mean.a * estimate_->roe_mean(astro::roe::kDa), n);
     } else {
       ++rejected.navigation;
     }
@@ -162,7 +172,7 @@ void FlightComponent::enter(Mode mode) {
   observation_.reset();
   observation_announced_ = false;
   mpc_started_ = false;
-  ls_burns_planned_ = -1;
+  ls_planned_ = false;
   escape_planned_ = false;
 }
 
@@ -252,6 +262,7 @@ bool FlightComponent::plan_leg() {
   control::ClosedFormSettings settings;
   settings.earliest_burn = config_.burn_latency_s;
   settings.end_margin = config_.transfer.end_margin_s;
+  settings.normal_burns = config_.transfer.normal_burns;
   leg_end_ = estimate_->t + tf;
   leg_planned_ = true;
   return replace_plan(impulses_of(control::plan_closed_form(estimate_->chief_mean, estimate_->roe_mean,
@@ -262,6 +273,10 @@ void FlightComponent::run_transfer() {
   if (waypoints_.empty()) {
     astro::RelativeOrbitalElements target;
     if (mode_ == Mode::transfer_to_science) {
+      if (config_.science.choose_pole) {
+        const auto north = choose_north_pole(estimate_->chief_mean, estimate_->t, config_.science, config_.gravity);
+        if (north.ok()) config_.science.geometry.north = *north;
+      }
       const auto next = next_observation(estimate_->chief_mean, estimate_->t, 1, config_.science, config_.gravity);
       if (!next.ok()) {
         ++telemetry_.planning_failures;
@@ -295,13 +310,23 @@ bool FlightComponent::schedule_observation(GncOutputs& out) {
   }
   if (!mpc_started_) mpc_epoch_ = estimate_->t;
   observation_ = *next;
-  if (!mpc_.set_target(next->roe_target, next->start.seconds_since(mpc_epoch_)).ok()) {
+  // The MPC hands over to the least-squares planner at the start of the fine-control window, so
+  // its target is the aligned ROE carried back there by the free (J2) motion:
+  // roe(t_ls) = Phi(t_aligned, t_ls)^-1 roe(t_aligned); otherwise its optimal impulses would
+  // fall inside the window, where the least-squares plan replaces them.
+  const double to_aligned = next->aligned.seconds_since(estimate_->t);
+  const double window = config_.science.least_squares_window_s + 0.5 * config_.science.observation_duration_s;
+  const astro::KeplerianElements chief_ls = astro::propagate_mean_j2(estimate_->chief_mean, to_aligned - window, config_.gravity);
+  const astro::RoeStm phi = astro::j2_roe_stm(chief_ls, window, config_.gravity);
+  const astro::RelativeOrbitalElements roe_ls = phi.partialPivLu().solve(next->roe_target);
+  const core::GpsTime handover = next->aligned - window;
+  if (!mpc_.set_target(roe_ls, handover.seconds_since(mpc_epoch_)).ok()) {
     ++telemetry_.planning_failures;
     ++consecutive_failures_;
   }
   mpc_started_ = true;
   last_mpc_ = now_ - 2.0 * config_.science.mpc_period_s;  // plan at once
-  ls_burns_planned_ = -1;
+  ls_planned_ = false;
   out.observation = ObservationCommand{next->index, next->slew_start, next->start, next->end};
   return true;
 }
@@ -345,22 +370,65 @@ void FlightComponent::science_mpc() {
 
 void FlightComponent::science_fine_control() {
   const double to_start = observation_->start.seconds_since(estimate_->t);
+  const double to_aligned = observation_->aligned.seconds_since(estimate_->t);
   double burns[3];
   int count = 0;
   for (const double before : config_.science.least_squares_burns_before_s) {
     const double t_burn = to_start - before;
     if (t_burn >= config_.burn_latency_s) burns[count++] = t_burn;
   }
-  if (count == 0 || count == ls_burns_planned_) return;
-  ls_burns_planned_ = count;
-  const auto plan = control::plan_least_squares(estimate_->chief_mean, estimate_->roe_mean, observation_->roe_target,
-                                                to_start, std::span<const double>(burns, static_cast<std::size_t>(count)),
+  // Replan every least_squares_period_s on the newest estimate (the paper closes this loop about
+  // every 45 s), but never while the pieces of a burn are being fired: they belong together.
+  if (count == 0) return;
+  if (ls_planned_ && since(last_ls_) < config_.science.least_squares_period_s) return;
+  if (!queue_.empty() && queue_.next_time() <= now_ + config_.burn_latency_s + config_.buffer.limits.spacing) return;
+  ls_planned_ = true;
+  last_ls_ = now_;
+  // Aim so that the differential drag still to come carries the formation onto the target.
+  const astro::RelativeOrbitalElements target = observation_->roe_target - drag_drift(to_aligned);
+  if (count == 1) {
+    replan_last_burn(target, burns[0], to_aligned);
+    return;
+  }
+  const auto plan = control::plan_least_squares(estimate_->chief_mean, estimate_->roe_mean, target, to_aligned,
+                                                std::span<const double>(burns, static_cast<std::size_t>(count)),
                                                 config_.science.least_squares, config_.gravity);
   if (!plan.ok()) {
     replace_plan(plan.error());
     return;
   }
   replace_plan(plan->plan.impulses);
+}
+
+// One burn left: three unknowns cannot fix the six ROE, so the burn puts the relative POSITION on
+// target at the alignment time (the alignment requirements are on position to 15-18 mm; the
+// velocity requirement, 0.2 mm/s, is loose enough to be left to the previous burns):
+//   C (Phi x0 + Phi Gamma dv) = C x_target,  C the position rows of the ROE -> RTN map at t_aligned.
+void FlightComponent::replan_last_burn(const astro::RelativeOrbitalElements& target, double t_burn, double to_aligned) {
+  const astro::KeplerianElements chief_aligned = astro::propagate_mean_j2(estimate_->chief_mean, to_aligned, config_.gravity);
+  const Eigen::Matrix<double, 3, 6> c = astro::roe_to_rtn_matrix(chief_aligned, config_.gravity.mu).topRows<3>();
+  const astro::RelativeOrbitalElements free =
+      control::predict_roe(estimate_->chief_mean, estimate_->roe_mean, {}, to_aligned, config_.gravity);
+  const Eigen::Matrix3d m = c * control::impulse_effect(estimate_->chief_mean, t_burn, to_aligned, config_.gravity);
+  const Eigen::Vector3d miss = c * (target - free);
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(m);
+  if (lu.rcond() < 1e-8) {
+    replace_plan(core::Error{"last_burn", "singular geometry"});
+    return;
+  }
+  replace_plan(std::vector<control::Impulse>{control::Impulse{t_burn, lu.solve(miss)}});
+}
+
+astro::RelativeOrbitalElements FlightComponent::drag_drift(double to_aligned) const {
+  astro::RelativeOrbitalElements drift = astro::RelativeOrbitalElements::Zero();
+  if (!drag_.valid() || !(to_aligned > 0.0)) return drift;
+  constexpr int kNodes = 24;
+  const double h = to_aligned / kNodes;
+  const Eigen::Vector3d dv_rtn(0.0, drag_.along_track_mps2() * h, 0.0);
+  for (int k = 0; k < kNodes; ++k) {
+    drift += control::impulse_effect(estimate_->chief_mean, (k + 0.5) * h, to_aligned, config_.gravity) * dv_rtn;
+  }
+  return drift;
 }
 
 void FlightComponent::run_escape() {
@@ -383,6 +451,7 @@ void FlightComponent::release_maneuver(GncOutputs& out) {
   if (!active_ || mode_ == Mode::manual || !has_attitude_ || !estimate_) return;
   if (!queue_.due(now_, config_.buffer.limits.spacing)) return;
   const QueuedPiece piece = queue_.pop(now_);
+  drag_.maneuver(now_);
   // The DSC (chief) firing changes the ROE with the opposite sign of the same impulse of the OSC
   // (docs/conventions.md "Spacecraft and roles").
   const Eigen::Vector3d dv_rtn = config_.self == Spacecraft::dsc ? Eigen::Vector3d(-piece.dv_rtn) : piece.dv_rtn;

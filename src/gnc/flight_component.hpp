@@ -31,6 +31,7 @@
 
 #include "control/stochastic_mpc.hpp"
 #include "core/status.hpp"
+#include "gnc/differential_drag_estimator.hpp"
 #include "gnc/gnc_config.hpp"
 #include "gnc/maneuver_queue.hpp"
 #include "gnc/messages.hpp"
@@ -72,9 +73,13 @@ class FlightComponent {
   bool schedule_observation(GncOutputs& out);
   void science_fine_control();
   void science_mpc();
+  void replan_last_burn(const astro::RelativeOrbitalElements& target, double t_burn, double to_aligned);
   /// Buffers `impulses` (times since now) replacing what is queued; counts the plan or failure.
   bool replace_plan(const core::Result<std::vector<control::Impulse>>& impulses);
   double chief_period_s() const;
+  /// The mean-ROE change at `to_aligned` s (since the estimate) that the estimated differential
+  /// drag produces from now on (midpoint quadrature of Phi Gamma a_T).
+  astro::RelativeOrbitalElements drag_drift(double to_aligned) const;
   double since(core::GpsTime t) const { return now_.seconds_since(t); }
 
   GncConfig config_;
@@ -110,7 +115,9 @@ class FlightComponent {
   core::GpsTime mpc_epoch_;
   core::GpsTime last_mpc_;
   bool mpc_started_ = false;
-  int ls_burns_planned_ = -1;  // least-squares burns still ahead at the last fine plan
+  bool ls_planned_ = false;  // a least-squares plan exists for the current observation
+  core::GpsTime last_ls_;
+  DifferentialDragEstimator drag_;
   // Escape.
   bool escape_planned_ = false;
   // Counters.

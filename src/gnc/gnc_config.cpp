@@ -21,6 +21,9 @@ core::Result<GncConfig> validate(const GncConfig& config) {
   if (!(config.transfer.leg_orbits >= 1.6 && std::isfinite(config.transfer.leg_orbits))) {
     return core::Error{"transfer.leg_orbits", "must be >= 1.6 (the closed-form window is 1.5 orbits)"};
   }
+  if (config.transfer.normal_burns != 1 && config.transfer.normal_burns != 2) {
+    return core::Error{"transfer.normal_burns", "must be 1 or 2"};
+  }
   if (!(config.transfer.end_margin_s >= 0.0)) return core::Error{"transfer.end_margin_s", "must be >= 0"};
   const auto& sc = config.science;
   if (!positive(sc.least_squares_window_s)) return core::Error{"science.least_squares_window_s", "must be > 0"};
@@ -31,6 +34,7 @@ core::Result<GncConfig> validate(const GncConfig& config) {
                          "must be decreasing, > 0 and within least_squares_window_s"};
     }
   }
+  if (!positive(sc.least_squares_period_s)) return core::Error{"science.least_squares_period_s", "must be > 0"};
   if (!positive(sc.mpc_period_s)) return core::Error{"science.mpc_period_s", "must be > 0"};
   if (!(sc.min_lead_s > sc.least_squares_window_s)) {
     return core::Error{"science.min_lead_s", "must exceed least_squares_window_s"};

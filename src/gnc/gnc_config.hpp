@@ -30,25 +30,45 @@ struct StandbyKeepingSettings {
 
 struct TransferSettings {
   control::TransferSettings waypoints;
-  /// Duration of one reconfiguration leg (paper: 1.5-orbit steps; 2 leaves the closed-form
-  /// planner its 1.5-orbit window after the burn latency and an end margin) [chief orbits].
-  double leg_orbits = 2.0;
+  /// Duration of one reconfiguration leg (paper: 1.5-orbit steps; 1.6 leaves the closed-form
+  /// planner its 1.5-orbit window after the burn latency and the end margin) [chief orbits].
+  double leg_orbits = 1.6;
+  /// Normal burns per leg: 2 halves each normal impulse (one orbit apart), so the buffer can
+  /// spread it within its piece limit (a 200 m -> 120 m delta-i step needs ~90 mm/s).
+  int normal_burns = 2;
   /// The last allowed burn of a leg is this long before the leg end [s].
   double end_margin_s = 60.0;
 };
 
+/// The MPC's execution-error model set to the simulated actuator (magnitude 5 % 1-sigma, the
+/// paper's lower bound; floor one impulse quantum, 6e-5 N s / 10.6 kg = 6 um/s), so the
+/// Mahalanobis test replans when the error grows beyond what the thrusters explain.
+inline control::StochasticMpcSettings science_mpc_defaults() {
+  control::StochasticMpcSettings settings;
+  settings.execution_sigma_fraction = 0.05;
+  settings.execution_sigma_floor_mps = 6e-6;
+  return settings;
+}
+
 struct ScienceSettings {
   control::ScienceGeometry geometry;
+  /// Choose the observation pole at the start of each campaign (choose_north_pole) instead of
+  /// geometry.north.
+  bool choose_pole = true;
   /// Fine control window before each observation: least squares at fixed times (paper: last
   /// 10-15 min) [s].
-  double least_squares_window_s = 720.0;
-  /// Burn times of the least-squares planner, seconds before the observation (3 burns, 4 min
-  /// apart; the last one leaves 2 min for the slew and settling).
-  double least_squares_burns_before_s[3] = {720.0, 480.0, 240.0};
+  double least_squares_window_s = 900.0;
+  /// Burn times of the least-squares planner, seconds before the observation (3 burns, 6 and 6
+  /// min apart; the last one just before the slew, so differential drag has the least time to
+  /// act; closer burns make the 6 x 6 problem ill-conditioned and the plan large).
+  double least_squares_burns_before_s[3] = {900.0, 540.0, 180.0};
   control::LeastSquaresSettings least_squares;
+  /// The least-squares plan is recomputed this often on the newest estimate, so differential drag
+  /// and execution errors are corrected up to the last burn (paper: every 45 s) [s].
+  double least_squares_period_s = 45.0;
   /// The reachable-set MPC runs on navigation updates this far apart (paper: every 5 min) [s].
   double mpc_period_s = 300.0;
-  control::StochasticMpcSettings mpc;
+  control::StochasticMpcSettings mpc = science_mpc_defaults();
   /// The first observation after entering science is at least this far ahead, so the MPC has
   /// a horizon (0.5 orbit) [s].
   double min_lead_s = 2900.0;

@@ -45,6 +45,8 @@ class ManeuverQueue {
   [[nodiscard]] bool due(core::GpsTime now, double spacing_s) const;
   QueuedPiece pop(core::GpsTime now);
 
+  /// Time of the next piece (only when not empty).
+  [[nodiscard]] core::GpsTime next_time() const { return pieces_[next_].t; }
   [[nodiscard]] int pending() const { return static_cast<int>(pieces_.size() - next_); }
   [[nodiscard]] bool empty() const { return pending() == 0; }
   [[nodiscard]] bool has_released() const { return released_; }

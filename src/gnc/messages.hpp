@@ -118,6 +118,8 @@ struct Telemetry {
   bool safety_checked = false;       // a check has been made
   double safety_margin_m = 0.0;      // last check: min separation - q sigma [m]
   int observations_done = 0;
+  /// a * mean ROE the science control aims at for the next observation [m] (zero outside science).
+  Eigen::Matrix<double, 6, 1> roe_target_m = Eigen::Matrix<double, 6, 1>::Zero();
   int pending_pieces = 0;            // buffered impulses not yet commanded
   std::int64_t plans = 0;            // planner calls that produced a plan
   std::int64_t planning_failures = 0;

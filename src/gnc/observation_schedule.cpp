@@ -1,11 +1,31 @@
 #include "gnc/observation_schedule.hpp"
 
 #include "astro/j2_secular.hpp"
+#include "astro/mean_osculating.hpp"
+#include "astro/sun_moon.hpp"
+#include "core/rtn_frame.hpp"
 
 namespace visors::gnc {
 
 double slew_lead_s(const ScienceSettings& settings) {
   return settings.max_slew_angle_rad / settings.slew_rate_rad_s + settings.slew_settle_s;
+}
+
+core::Result<astro::RelativeOrbitalElements> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
+                                                              const control::ScienceGeometry& geometry,
+                                                              const core::EarthGravityConstants& gravity) {
+  const auto chief_osc = astro::osculating_from_mean(chief_mean, gravity);
+  if (!chief_osc.ok()) return chief_osc.error();
+  const core::StateVector chief = astro::cartesian_from_keplerian(*chief_osc, gravity.mu);
+  const Eigen::Vector3d sun_unit = (astro::sun_position_gcrf(t) - chief.r).normalized();
+  const Eigen::Matrix3d rtn_to_gcrf = core::gcrf_to_rtn_matrix(chief).transpose();
+  const Eigen::Vector3d dr = geometry.focal_distance * sun_unit + rtn_to_gcrf * geometry.offset_rtn;
+  const core::StateVector deputy{chief.r + dr, chief.v + geometry.los_rate * sun_unit};
+  const auto deputy_osc = astro::cartesian_to_keplerian(deputy.r, deputy.v, gravity.mu);
+  if (!deputy_osc.ok()) return deputy_osc.error();
+  const auto deputy_mean = astro::mean_from_osculating(*deputy_osc, gravity);
+  if (!deputy_mean.ok()) return deputy_mean.error();
+  return astro::roe_from_keplerian(chief_mean, *deputy_mean);
 }
 
 core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
@@ -17,13 +37,35 @@ core::Result<ScheduledObservation> next_observation(const astro::KeplerianElemen
   const core::GpsTime from = now + settings.min_lead_s;
   const auto orbit = control::science_orbit(chief_from, from, settings.geometry, gravity);
   if (!orbit.ok()) return orbit.error();
+  // Aligned at the middle of the window: the relative acceleration (~n^2 f) then moves the
+  // payloads half as far, and changes their velocity half as much, as when aligned at its start.
+  const core::GpsTime aligned = from + orbit->t_obs;
+  const auto roe = aligned_mean_roe(astro::propagate_mean_j2(chief_from, orbit->t_obs, gravity), aligned,
+                                    settings.geometry, gravity);
+  if (!roe.ok()) return roe.error();
   ScheduledObservation out;
   out.index = index;
-  out.start = from + orbit->t_obs;
+  out.aligned = aligned;
+  out.start = aligned - 0.5 * settings.observation_duration_s;
   out.slew_start = out.start - slew_lead_s(settings);
   out.end = out.start + settings.observation_duration_s;
-  out.roe_target = orbit->roe;
+  out.roe_target = *roe;
   return out;
+}
+
+core::Result<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
+                                     const ScienceSettings& settings, const core::EarthGravityConstants& gravity) {
+  bool parallel[2] = {false, false};
+  for (int pole = 0; pole < 2; ++pole) {
+    ScienceSettings candidate = settings;
+    candidate.geometry.north = pole == 1;
+    const auto next = next_observation(chief_mean, now, 1, candidate, gravity);
+    if (!next.ok()) return next.error();
+    const auto& roe = next->roe_target;
+    parallel[pole] = roe(astro::roe::kDex) * roe(astro::roe::kDix) + roe(astro::roe::kDey) * roe(astro::roe::kDiy) > 0.0;
+  }
+  if (parallel[0] != parallel[1]) return parallel[1];
+  return settings.geometry.north;
 }
 
 }  // namespace visors::gnc

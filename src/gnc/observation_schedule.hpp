@@ -16,15 +16,34 @@ namespace visors::gnc {
 struct ScheduledObservation {
   int index = 0;  // 1-based attempt number
   core::GpsTime slew_start, start, end;
-  /// Mean ROE of the aligned science orbit at `start` [-].
+  core::GpsTime aligned;  // the middle of the window, where the formation is aligned
+  /// Mean ROE of the aligned science orbit at `aligned` [-].
   astro::RelativeOrbitalElements roe_target = astro::RelativeOrbitalElements::Zero();
 };
+
+/// The mean ROE (chief_mean at t) whose OSCULATING relative state at t is the aligned one: the
+/// deputy f metres from the chief towards the Sun (plus geometry.offset_rtn) with an inertial
+/// relative velocity along the Sun line only (geometry.los_rate). Built exactly: chief osculating
+/// state, deputy state, deputy mean elements, ROE. control::science_orbit's ROE comes from the
+/// first-order map at the MEAN chief instead, which misplaces the deputy by the short-period J2
+/// terms (centimetres at 40 m, where the requirement is 18 mm).
+core::Result<astro::RelativeOrbitalElements> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
+                                                              const control::ScienceGeometry& geometry,
+                                                              const core::EarthGravityConstants& gravity);
 
 /// The first observation opportunity at least settings.min_lead_s after `now`. chief_mean: the
 /// chief's mean elements at `now`. Errors: those of control::science_orbit ("geometry" ...).
 core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                                     int index, const ScienceSettings& settings,
                                                     const core::EarthGravityConstants& gravity);
+
+/// The pole for the campaign: the one whose science orbit has PARALLEL relative e and i vectors
+/// (de . di > 0), like the standby orbit and the mission paper's science orbit, so the transfer
+/// never has to turn an e/i-separated orbit inside out (the paper's pathological case:
+/// antiparallel science vectors against a parallel standby). If both or neither pole qualifies,
+/// settings.geometry.north is kept.
+core::Result<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
+                                     const ScienceSettings& settings, const core::EarthGravityConstants& gravity);
 
 /// Slew plus settling time commanded before each observation [s].
 double slew_lead_s(const ScienceSettings& settings);
