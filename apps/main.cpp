@@ -10,6 +10,8 @@
 
 #include "preview/preview_command.hpp"
 #include "propagate/propagate_command.hpp"
+#include "run/run_command.hpp"
+#include "report/report_command.hpp"
 #include "tools/tool.hpp"
 
 namespace {
@@ -87,6 +89,19 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   propagate->add_option("--out", propagate_out, "output folder")->capture_default_str();
 
+  std::string run_scenario = "scenarios/campaign.toml";
+  std::string run_out = "out/campaign";
+  auto* run = app.add_subcommand(
+      "run", "the mission campaign in closed loop (standby, transfer, 10 observations, back); run directory + report");
+  run->add_option("scenario", run_scenario, "scenario TOML (a path, or relative to VISORS_DATA_PATH and data/)")
+      ->capture_default_str();
+  run->add_option("--out", run_out, "run directory")->capture_default_str();
+
+  std::string report_dir;
+  auto* report = app.add_subcommand(
+      "report", "render DIR/report.html (self-contained HTML, inline SVG) from a run directory");
+  report->add_option("dir", report_dir, "run directory written by 'visors run'")->required();
+
   app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors 0.1.0\n"); });
 
   try {
@@ -99,5 +114,7 @@ int main(int argc, char** argv) {
   if (propagate->parsed()) {
     return visors::propagate::run_propagate_command(propagate_scenario, propagate_out);
   }
+  if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out);
+  if (report->parsed()) return visors::report::run_report_command(report_dir);
   return 0;
 }

@@ -1,0 +1,76 @@
+#include "run/run_command.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+#include "core/data_path.hpp"
+#include "report/report.hpp"
+#include "sim/campaign_simulation.hpp"
+
+namespace visors::run {
+namespace {
+
+constexpr int kExitBadInput = 2;
+constexpr int kExitFailed = 1;
+
+// Simulated time, speed-up and ETA on one refreshed terminal line (only when stderr is a
+// terminal, so logs and CI output stay clean).
+void show_progress(const sim::RunProgress& p) {
+  static double last_wall = -1.0;
+  if (p.wall_s - last_wall < 0.5) return;
+  last_wall = p.wall_s;
+  const double speed = p.wall_s > 0.0 ? p.simulated_s / p.wall_s : 0.0;
+  const double eta = speed > 0.0 ? (p.total_s - p.simulated_s) / speed : 0.0;
+  fmt::print(stderr, "\r  simulated {:8.0f} s ({:5.1f} h)   {:7.0f}x real time   ETA {:5.0f} s   ", p.simulated_s,
+             p.simulated_s / 3600.0, speed, eta);
+}
+
+}  // namespace
+
+int run_campaign_command(const std::string& scenario_path, const std::string& out_dir) {
+  const auto path = core::find_data_file(scenario_path);
+  if (!path) {
+    fmt::print(stderr, "visors run: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n", scenario_path);
+    return kExitBadInput;
+  }
+  std::ifstream in(*path);
+  std::stringstream text;
+  text << in.rdbuf();
+  auto scenario = sim::campaign_from_toml(text.str());
+  if (!scenario.ok()) {
+    fmt::print(stderr, "visors run: {}: {}\n", path->string(), scenario.error().describe());
+    return kExitBadInput;
+  }
+  fmt::print("visors run: {} ({}), seed {}\n", scenario->name, path->string(), scenario->seed);
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  auto result = sim::run_campaign(*scenario, out_dir, terminal ? std::function<void(const sim::RunProgress&)>(show_progress)
+                                                               : std::function<void(const sim::RunProgress&)>());
+  if (terminal) fmt::print(stderr, "\n");
+  if (!result.ok()) {
+    fmt::print(stderr, "visors run: {}\n", result.error().describe());
+    return kExitFailed;
+  }
+  const auto& s = result->summary;
+  fmt::print("  simulated {:.0f} s in {:.1f} s ({:.0f}x real time)\n", s["simulated_s"].get<double>(), s["wall_s"].get<double>(),
+             s["simulated_s"].get<double>() / std::max(1e-9, s["wall_s"].get<double>()));
+  fmt::print("  observations: {} attempted, success rate {:.0f} % (requirement >= 20 %)\n", s["observations"].size(),
+             100.0 * s["success_rate"].get<double>());
+  fmt::print("  delta-v (L1, thrusters' frame): DSC {:.4f} m/s, OSC {:.4f} m/s\n", s["delta_v_mps"]["dsc"]["total"].get<double>(),
+             s["delta_v_mps"]["osc"]["total"].get<double>());
+  fmt::print("  min separation: RN {:.2f} m, 3D {:.2f} m; passive-safety violations: {}; final mode: {}\n",
+             s["min_separation_rn_m"].get<double>(), s["min_separation_3d_m"].get<double>(), s["safety_violations"].get<int>(),
+             s["final_mode"].get<std::string>());
+  auto report = report::write_report(result->dir);
+  if (!report.ok()) {
+    fmt::print(stderr, "visors run: report: {}\n", report.error().describe());
+    return kExitFailed;
+  }
+  fmt::print("  run directory {}\n  report {}\n", result->dir.string(), report->string());
+  return 0;
+}
+
+}  // namespace visors::run

@@ -1,0 +1,42 @@
+#pragma once
+// Observation alignment metrics (mission paper, requirements; docs/conventions.md "Alignment"),
+// from the TRUE positions and velocities of the payload reference points (photon-sieve centre on
+// the OSC, detector aperture centre on the DSC) over the observation window. With s the unit
+// vector from the DSC to the Sun and d = p_OSC - p_DSC, w = v_OSC - v_DSC (inertial):
+//   lateral error     |d - (d.s) s|        <= 18 mm
+//   focus error       | d.s - 40 m |       <= 15 mm
+//   lateral velocity  |w - (w.s) s|        <= 0.2 mm/s
+// each taken as its worst value over the window; the attempt succeeds when all three hold for
+// the whole window.
+
+#include <Eigen/Core>
+
+namespace visors::sim {
+
+struct AlignmentRequirements {
+  double lateral_error_m = 0.018;
+  double lateral_velocity_mps = 2e-4;
+  double focus_error_m = 0.015;
+  double focal_distance_m = 40.0;
+};
+
+struct AlignmentResult {
+  int index = 0;
+  double t_s = 0.0;  // window start since t0 [s]
+  double lateral_error_m = 0.0;
+  double lateral_velocity_mps = 0.0;
+  double focus_error_m = 0.0;
+  int samples = 0;
+  [[nodiscard]] bool success(const AlignmentRequirements& req) const {
+    return samples > 0 && lateral_error_m <= req.lateral_error_m && lateral_velocity_mps <= req.lateral_velocity_mps &&
+           focus_error_m <= req.focus_error_m;
+  }
+};
+
+/// Folds one sample of the window into `result` (worst values). Positions [m], velocities [m/s],
+/// GCRF; sun_unit from the DSC towards the Sun.
+void add_alignment_sample(AlignmentResult& result, const Eigen::Vector3d& p_osc, const Eigen::Vector3d& v_osc,
+                          const Eigen::Vector3d& p_dsc, const Eigen::Vector3d& v_dsc, const Eigen::Vector3d& sun_unit,
+                          const AlignmentRequirements& requirements);
+
+}  // namespace visors::sim

@@ -1,0 +1,327 @@
+#include "sim/campaign_scenario.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "core/angles.hpp"
+#include "core/constants.hpp"
+#include "core/toml_fields.hpp"
+#include "dynamics/force_model_toml.hpp"
+
+namespace visors::sim {
+
+namespace {
+
+using core::Error;
+using namespace core::toml_fields;
+
+core::Result<bool> in_range(double value, double lo, double hi, const std::string& field) {
+  if (!(value >= lo && value <= hi)) return Error{field, fmt::format("must be in [{}, {}]", lo, hi)};
+  return true;
+}
+
+core::Result<Eigen::Matrix<double, 6, 1>> vector6_at(const toml::table& table, const std::string& section,
+                                                     std::string_view key, const Eigen::Matrix<double, 6, 1>& fallback) {
+  const toml::node* node = table.get(key);
+  if (node == nullptr) return fallback;
+  const toml::array* array = node->as_array();
+  const std::string field = field_name(section, key);
+  if (array == nullptr || array->size() != 6) return Error{field, "must be an array of 6 numbers"};
+  Eigen::Matrix<double, 6, 1> out;
+  for (std::size_t k = 0; k < 6; ++k) {
+    const auto value = (*array)[k].value<double>();
+    if (!value || !std::isfinite(*value)) return Error{field, "must be an array of 6 finite numbers"};
+    out(static_cast<Eigen::Index>(k)) = *value;
+  }
+  return out;
+}
+
+const toml::table* table_at(const toml::table& root, std::string_view key) { return root.get_as<toml::table>(key); }
+
+core::Result<bool> read_time(const toml::table& root, CampaignScenario& s) {
+  const toml::table* t = table_at(root, "time");
+  if (t == nullptr) return true;
+  if (auto e = check_keys(*t, "time", {"start_gps", "step_s", "output_step_s", "integration_step_s", "max_duration_s"})) {
+    return *e;
+  }
+  if (t->contains("start_gps")) {
+    VISORS_TRY(text, string_at(*t, "time", "start_gps", std::nullopt));
+    auto start = core::GpsTime::parse(text, core::TimeScale::kGps);
+    if (!start) return Error{"time.start_gps", start.error().message};
+    s.t0 = start.value();
+  }
+  VISORS_TRY(step, number_at(*t, "time", "step_s", s.step_s));
+  VISORS_TRY(output, number_at(*t, "time", "output_step_s", s.output_step_s));
+  VISORS_TRY(integration, number_at(*t, "time", "integration_step_s", s.integration_step_s));
+  VISORS_TRY(max_duration, number_at(*t, "time", "max_duration_s", s.max_duration_s));
+  if (auto ok = in_range(step, 0.1, 10.0, "time.step_s"); !ok) return ok.error();
+  if (auto ok = in_range(output, step, 3600.0, "time.output_step_s"); !ok) return ok.error();
+  if (auto ok = in_range(integration, 0.01, step, "time.integration_step_s"); !ok) return ok.error();
+  if (auto ok = in_range(max_duration, step, 3.2e7, "time.max_duration_s"); !ok) return ok.error();
+  if (std::abs(std::round(step / integration) * integration - step) > 1e-9) {
+    return Error{"time.integration_step_s", "must divide time.step_s"};
+  }
+  if (std::abs(std::round(output / step) * step - output) > 1e-9) {
+    return Error{"time.output_step_s", "must be a multiple of time.step_s"};
+  }
+  s.step_s = step;
+  s.output_step_s = output;
+  s.integration_step_s = integration;
+  s.max_duration_s = max_duration;
+  return true;
+}
+
+core::Result<bool> read_chief(const toml::table& root, CampaignScenario& s) {
+  const toml::table* c = table_at(root, "chief");
+  if (c == nullptr) return true;
+  const std::string sec = "chief";
+  if (auto e = check_keys(*c, sec, {"a_m", "e", "i_deg", "raan_deg", "argp_deg", "u_deg"})) return *e;
+  auto& k = s.chief_mean;
+  VISORS_TRY(a, number_at(*c, sec, "a_m", k.a));
+  VISORS_TRY(ecc, number_at(*c, sec, "e", k.e));
+  VISORS_TRY(i_deg, number_at(*c, sec, "i_deg", k.i / core::kDegToRad));
+  VISORS_TRY(raan_deg, number_at(*c, sec, "raan_deg", k.raan / core::kDegToRad));
+  VISORS_TRY(argp_deg, number_at(*c, sec, "argp_deg", k.argp / core::kDegToRad));
+  VISORS_TRY(u_deg, number_at(*c, sec, "u_deg", (k.argp + k.M) / core::kDegToRad));
+  if (auto ok = in_range(a, core::kWgs84SemiMajorAxis + 200e3, core::kWgs84SemiMajorAxis + 2000e3, "chief.a_m"); !ok) {
+    return ok.error();
+  }
+  if (auto ok = in_range(ecc, 0.0, 0.05, "chief.e"); !ok) return ok.error();
+  if (auto ok = in_range(i_deg, 1.0, 179.0, "chief.i_deg"); !ok) return ok.error();
+  k = astro::KeplerianElements{a, ecc, i_deg * core::kDegToRad, raan_deg * core::kDegToRad, argp_deg * core::kDegToRad,
+                               (u_deg - argp_deg) * core::kDegToRad};
+  return true;
+}
+
+core::Result<bool> read_campaign(const toml::table& root, CampaignScenario& s) {
+  if (const toml::table* f = table_at(root, "formation")) {
+    if (auto e = check_keys(*f, "formation", {"initial_roe_m"})) return *e;
+    VISORS_TRY(roe, vector6_at(*f, "formation", "initial_roe_m", s.initial_roe_m));
+    if (roe.cwiseAbs().maxCoeff() > 5000.0) return Error{"formation.initial_roe_m", "must be within 5 km"};
+    s.initial_roe_m = roe;
+  }
+  const toml::table* c = table_at(root, "campaign");
+  if (c == nullptr) return true;
+  const std::string sec = "campaign";
+  if (auto e = check_keys(*c, sec, {"standby_s", "observations", "tail_s", "active"})) return *e;
+  VISORS_TRY(standby, number_at(*c, sec, "standby_s", s.standby_s));
+  VISORS_TRY(observations, integer_at(*c, sec, "observations", s.observations));
+  VISORS_TRY(tail, number_at(*c, sec, "tail_s", s.tail_s));
+  VISORS_TRY(active, string_at(*c, sec, "active", s.active));
+  if (auto ok = in_range(standby, 0.0, 3.2e7, "campaign.standby_s"); !ok) return ok.error();
+  if (observations < 0 || observations > 1000) return Error{"campaign.observations", "must be in [0, 1000]"};
+  if (auto ok = in_range(tail, 0.0, 3.2e7, "campaign.tail_s"); !ok) return ok.error();
+  if (active != "osc" && active != "dsc") return Error{"campaign.active", "must be \"osc\" or \"dsc\""};
+  s.standby_s = standby;
+  s.observations = static_cast<int>(observations);
+  s.tail_s = tail;
+  s.active = active;
+  return true;
+}
+
+core::Result<bool> read_navigation(const toml::table& root, CampaignScenario& s) {
+  const toml::table* n = table_at(root, "navigation");
+  if (n == nullptr) return true;
+  const std::string sec = "navigation";
+  if (auto e = check_keys(*n, sec, {"mode", "relative_position_m", "relative_velocity_mps", "absolute_position_m",
+                                    "absolute_velocity_mps", "correlation_time_s"})) {
+    return *e;
+  }
+  VISORS_TRY(mode, string_at(*n, sec, "mode", "ideal"));
+  if (mode != "ideal") return Error{"navigation.mode", "only \"ideal\" is available (GPS navigation is a later issue)"};
+  auto& v = s.navigation;
+  VISORS_TRY(rp, number_at(*n, sec, "relative_position_m", v.relative_position_m));
+  VISORS_TRY(rv, number_at(*n, sec, "relative_velocity_mps", v.relative_velocity_mps));
+  VISORS_TRY(ap, number_at(*n, sec, "absolute_position_m", v.absolute_position_m));
+  VISORS_TRY(av, number_at(*n, sec, "absolute_velocity_mps", v.absolute_velocity_mps));
+  VISORS_TRY(tau, number_at(*n, sec, "correlation_time_s", v.correlation_time_s));
+  if (auto ok = in_range(rp, 0.0, 100.0, "navigation.relative_position_m"); !ok) return ok.error();
+  if (auto ok = in_range(rv, 0.0, 1.0, "navigation.relative_velocity_mps"); !ok) return ok.error();
+  if (auto ok = in_range(ap, 0.0, 1e4, "navigation.absolute_position_m"); !ok) return ok.error();
+  if (auto ok = in_range(av, 0.0, 10.0, "navigation.absolute_velocity_mps"); !ok) return ok.error();
+  if (auto ok = in_range(tau, 1.0, 1e6, "navigation.correlation_time_s"); !ok) return ok.error();
+  v = NavigationErrorSettings{rp, rv, ap, av, tau};
+  return true;
+}
+
+core::Result<bool> read_propulsion(const toml::table& root, CampaignScenario& s) {
+  const toml::table* p = table_at(root, "propulsion");
+  if (p == nullptr) return true;
+  const std::string sec = "propulsion";
+  if (auto e = check_keys(*p, sec, {"magnitude_sigma", "direction_sigma_deg", "isp_s", "isp_sigma_s"})) return *e;
+  auto& v = s.propulsion;
+  VISORS_TRY(mag, number_at(*p, sec, "magnitude_sigma", v.magnitude_sigma));
+  VISORS_TRY(dir, number_at(*p, sec, "direction_sigma_deg", v.direction_sigma_rad / core::kDegToRad));
+  VISORS_TRY(isp, number_at(*p, sec, "isp_s", v.isp_s));
+  VISORS_TRY(isp_sigma, number_at(*p, sec, "isp_sigma_s", v.isp_sigma_s));
+  v.magnitude_sigma = mag;
+  v.direction_sigma_rad = dir * core::kDegToRad;
+  v.isp_s = isp;
+  v.isp_sigma_s = isp_sigma;
+  if (auto ok = v.validate(); !ok) return Error{"propulsion." + ok.error().field, ok.error().message};
+  return true;
+}
+
+core::Result<bool> read_spacecraft(const toml::table& root, const std::string& sec, SpacecraftSettings& v) {
+  const toml::table* t = table_at(root, sec);
+  if (t == nullptr) return true;
+  if (auto e = check_keys(*t, sec, {"mass_kg", "propellant_kg", "cd", "cr", "srp_area_m2"})) return *e;
+  VISORS_TRY(mass, number_at(*t, sec, "mass_kg", v.mass_kg));
+  VISORS_TRY(propellant, number_at(*t, sec, "propellant_kg", v.propellant_kg));
+  VISORS_TRY(cd, number_at(*t, sec, "cd", v.cd));
+  VISORS_TRY(cr, number_at(*t, sec, "cr", v.cr));
+  VISORS_TRY(area, number_at(*t, sec, "srp_area_m2", v.srp_area_m2));
+  if (auto ok = in_range(mass, 0.1, 1000.0, sec + ".mass_kg"); !ok) return ok.error();
+  if (auto ok = in_range(propellant, 0.0, 0.9 * mass, sec + ".propellant_kg"); !ok) return ok.error();
+  if (auto ok = in_range(cd, 0.0, 5.0, sec + ".cd"); !ok) return ok.error();
+  if (auto ok = in_range(cr, 0.0, 2.0, sec + ".cr"); !ok) return ok.error();
+  if (auto ok = in_range(area, 0.0, 10.0, sec + ".srp_area_m2"); !ok) return ok.error();
+  v = SpacecraftSettings{mass, propellant, cd, cr, area};
+  return true;
+}
+
+core::Result<bool> read_links_and_faults(const toml::table& root, CampaignScenario& s) {
+  if (const toml::table* c = table_at(root, "crosslink")) {
+    if (auto e = check_keys(*c, "crosslink", {"delay_s", "drop_probability"})) return *e;
+    VISORS_TRY(delay, number_at(*c, "crosslink", "delay_s", s.crosslink_delay_s));
+    VISORS_TRY(drop, number_at(*c, "crosslink", "drop_probability", s.crosslink_drop_probability));
+    if (auto ok = in_range(delay, 0.0, 5.0, "crosslink.delay_s"); !ok) return ok.error();
+    if (auto ok = in_range(drop, 0.0, 1.0, "crosslink.drop_probability"); !ok) return ok.error();
+    s.crosslink_delay_s = delay;
+    s.crosslink_drop_probability = drop;
+  }
+  if (const toml::table* f = table_at(root, "fault")) {
+    if (auto e = check_keys(*f, "fault", {"impulse_t_s", "impulse_dv_rtn_mps"})) return *e;
+    VISORS_TRY(t, number_at(*f, "fault", "impulse_t_s", s.fault.impulse_t_s));
+    VISORS_TRY(dv, vector3_at(*f, "fault", "impulse_dv_rtn_mps", s.fault.impulse_dv_rtn_mps));
+    if (dv.norm() > 1.0) return Error{"fault.impulse_dv_rtn_mps", "must be below 1 m/s"};
+    s.fault = FaultSettings{t, dv};
+  }
+  return true;
+}
+
+core::Result<bool> read_gnc(const toml::table& root, CampaignScenario& s) {
+  const toml::table* g = table_at(root, "gnc");
+  if (g == nullptr) return true;
+  const std::string sec = "gnc";
+  if (auto e = check_keys(*g, sec, {"standby_de_deadband_m", "standby_dlambda_threshold_m", "transfer_leg_orbits",
+                                    "mpc_period_s", "least_squares_window_s", "safety_epsilon_m", "safety_q_sigma",
+                                    "safety_horizon_orbits", "safety_check_period_s", "escape_da_target_m",
+                                    "north"})) {
+    return *e;
+  }
+  auto& c = s.gnc;
+  VISORS_TRY(de, number_at(*g, sec, "standby_de_deadband_m", c.standby_keeping.de_deadband_m));
+  VISORS_TRY(dl, number_at(*g, sec, "standby_dlambda_threshold_m", c.standby_keeping.dlambda_threshold_m));
+  VISORS_TRY(leg, number_at(*g, sec, "transfer_leg_orbits", c.transfer.leg_orbits));
+  VISORS_TRY(mpc, number_at(*g, sec, "mpc_period_s", c.science.mpc_period_s));
+  VISORS_TRY(ls, number_at(*g, sec, "least_squares_window_s", c.science.least_squares_window_s));
+  VISORS_TRY(eps, number_at(*g, sec, "safety_epsilon_m", c.safety.epsilon));
+  VISORS_TRY(q, number_at(*g, sec, "safety_q_sigma", c.safety.q_sigma));
+  VISORS_TRY(horizon, number_at(*g, sec, "safety_horizon_orbits", c.safety.horizon_orbits));
+  VISORS_TRY(period, number_at(*g, sec, "safety_check_period_s", c.safety.check_period));
+  VISORS_TRY(da, number_at(*g, sec, "escape_da_target_m", c.escape.da_target));
+  VISORS_TRY(north, bool_at(*g, sec, "north", c.science.geometry.north));
+  c.standby_keeping.de_deadband_m = de;
+  c.standby_keeping.dlambda_threshold_m = dl;
+  c.transfer.leg_orbits = leg;
+  c.science.mpc_period_s = mpc;
+  c.science.least_squares_window_s = ls;
+  c.safety.epsilon = eps;
+  c.safety.q_sigma = q;
+  c.safety.horizon_orbits = horizon;
+  c.safety.check_period = period;
+  c.escape.da_target = da;
+  c.science.geometry.north = north;
+  if (auto ok = gnc::validate(c); !ok) return Error{"gnc (" + ok.error().field + ")", ok.error().message};
+  return true;
+}
+
+}  // namespace
+
+CampaignScenario default_campaign() {
+  CampaignScenario s;
+  s.t0 = core::GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kGps).value();
+  // Mission test case (paper, test-case table): a = R_E + 500 km, e = 0.004, i = 97.8 deg,
+  // RAAN = 157.5 deg (LTAN 10:00 on 2024-10-01), u(t0) = 0; argp 90 deg puts e along ey.
+  s.chief_mean = astro::KeplerianElements{core::kWgs84SemiMajorAxis + 500e3, 0.004, 97.8 * core::kDegToRad,
+                                          157.5 * core::kDegToRad, 90.0 * core::kDegToRad, -90.0 * core::kDegToRad};
+  s.initial_roe_m << 0.0, 0.0, 0.0, 200.0, 0.0, 200.0;  // the standby orbit
+  s.dsc = SpacecraftSettings{11.35, 0.378, 2.2, 1.8, 0.35};
+  s.osc = SpacecraftSettings{10.62, 0.205, 2.2, 1.8, 0.35};
+  return s;
+}
+
+core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
+  auto parsed = parse(text);
+  if (!parsed.ok()) return parsed.error();
+  const toml::table& root = parsed.value();
+  if (auto e = check_keys(root, "", {"name", "seed", "time", "chief", "formation", "campaign", "navigation", "propulsion",
+                                     "dsc", "osc", "crosslink", "forces", "gnc", "fault"})) {
+    return *e;
+  }
+  CampaignScenario s = default_campaign();
+  VISORS_TRY(name, string_at(root, "", "name", s.name));
+  VISORS_TRY(seed, integer_at(root, "", "seed", static_cast<std::int64_t>(s.seed)));
+  if (seed < 0) return Error{"seed", "must be >= 0"};
+  s.name = name;
+  s.seed = static_cast<std::uint64_t>(seed);
+  for (auto* reader : {&read_time, &read_chief, &read_campaign, &read_navigation, &read_propulsion,
+                       &read_links_and_faults, &read_gnc}) {
+    if (auto ok = reader(root, s); !ok) return ok.error();
+  }
+  if (auto ok = read_spacecraft(root, "dsc", s.dsc); !ok) return ok.error();
+  if (auto ok = read_spacecraft(root, "osc", s.osc); !ok) return ok.error();
+  if (const toml::table* forces = table_at(root, "forces")) {
+    auto config = dynamics::force_model_config_from_toml(forces, "forces");
+    if (!config.ok()) return config.error();
+    s.forces = config.value();
+    toml::table wrapper;  // printed from the root so nested tables keep their "forces." prefix
+    wrapper.insert("forces", *forces);
+    std::ostringstream text_out;
+    text_out << wrapper;
+    s.forces_toml = text_out.str() + "\n";
+  }
+  return s;
+}
+
+std::string campaign_to_toml(const CampaignScenario& s) {
+  const auto deg = [](double rad) { return rad / core::kDegToRad; };
+  const auto& k = s.chief_mean;
+  const auto& n = s.navigation;
+  const auto& p = s.propulsion;
+  const auto& g = s.gnc;
+  const auto spacecraft = [](const char* name, const SpacecraftSettings& v) {
+    return fmt::format("[{}]\nmass_kg = {:.17g}\npropellant_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\nsrp_area_m2 = {:.17g}\n\n",
+                       name, v.mass_kg, v.propellant_kg, v.cd, v.cr, v.srp_area_m2);
+  };
+  std::string out = fmt::format("# Resolved scenario of this run (every default written out).\nname = \"{}\"\nseed = {}\n\n", s.name, s.seed);
+  out += fmt::format("[time]\nstart_gps = \"{}\"\nstep_s = {:.17g}\noutput_step_s = {:.17g}\nintegration_step_s = {:.17g}\nmax_duration_s = {:.17g}\n\n",
+                     s.t0.format(core::TimeScale::kGps, 3), s.step_s, s.output_step_s, s.integration_step_s, s.max_duration_s);
+  out += fmt::format("[chief]  # mean elements at the start\na_m = {:.17g}\ne = {:.17g}\ni_deg = {:.17g}\nraan_deg = {:.17g}\nargp_deg = {:.17g}\nu_deg = {:.17g}\n\n",
+                     k.a, k.e, deg(k.i), deg(k.raan), deg(k.argp), deg(k.argp + k.M));
+  out += fmt::format("[formation]\ninitial_roe_m = [{:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}]\n\n",
+                     s.initial_roe_m(0), s.initial_roe_m(1), s.initial_roe_m(2), s.initial_roe_m(3), s.initial_roe_m(4),
+                     s.initial_roe_m(5));
+  out += fmt::format("[campaign]\nstandby_s = {:.17g}\nobservations = {}\ntail_s = {:.17g}\nactive = \"{}\"\n\n", s.standby_s,
+                     s.observations, s.tail_s, s.active);
+  out += fmt::format("[navigation]\nmode = \"ideal\"\nrelative_position_m = {:.17g}\nrelative_velocity_mps = {:.17g}\nabsolute_position_m = {:.17g}\nabsolute_velocity_mps = {:.17g}\ncorrelation_time_s = {:.17g}\n\n",
+                     n.relative_position_m, n.relative_velocity_mps, n.absolute_position_m, n.absolute_velocity_mps, n.correlation_time_s);
+  out += fmt::format("[propulsion]\nmagnitude_sigma = {:.17g}\ndirection_sigma_deg = {:.17g}\nisp_s = {:.17g}\nisp_sigma_s = {:.17g}\n\n",
+                     p.magnitude_sigma, deg(p.direction_sigma_rad), p.isp_s, p.isp_sigma_s);
+  out += spacecraft("dsc", s.dsc);
+  out += spacecraft("osc", s.osc);
+  out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
+  out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\n\n",
+                     g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,
+                     g.science.mpc_period_s, g.science.least_squares_window_s, g.safety.epsilon, g.safety.q_sigma,
+                     g.safety.horizon_orbits, g.safety.check_period, g.escape.da_target, g.science.geometry.north);
+  out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\n\n", s.fault.impulse_t_s,
+                     s.fault.impulse_dv_rtn_mps(0), s.fault.impulse_dv_rtn_mps(1), s.fault.impulse_dv_rtn_mps(2));
+  out += s.forces_toml;
+  return out;
+}
+
+}  // namespace visors::sim

@@ -1,0 +1,87 @@
+#pragma once
+// The mission-campaign scenario of `visors run` (TOML; data/scenarios/campaign.toml is the
+// default, the mission paper's test case): the chief orbit, the initial formation, the campaign
+// timeline (standby, then science with N attempts, then back to standby), navigation, propulsion,
+// crosslink, the two spacecraft, the truth forces, faults and outputs. Every key is optional
+// (defaults below and in the structs they fill); unknown keys and out-of-range values are errors
+// naming the dotted key.
+
+#include <cstdint>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "astro/keplerian_elements.hpp"
+#include "core/gps_time.hpp"
+#include "core/status.hpp"
+#include "dynamics/force_model_config.hpp"
+#include "gnc/gnc_config.hpp"
+#include "sim/propulsion.hpp"
+
+namespace visors::sim {
+
+struct NavigationErrorSettings {
+  /// 3D 1-sigma errors of the ideal navigation (issue 6 defaults: relative 1 cm, 50 um/s;
+  /// absolute 5 m, 1 cm/s; the DiGiTaL IAR-on figures of the mission paper's table).
+  double relative_position_m = 0.01;
+  double relative_velocity_mps = 5e-5;
+  double absolute_position_m = 5.0;
+  double absolute_velocity_mps = 0.01;
+  /// Correlation time of the first-order Gauss-Markov errors (a filter's error is correlated
+  /// in time, not white) [s].
+  double correlation_time_s = 600.0;
+};
+
+struct SpacecraftSettings {
+  double mass_kg = 11.35;        // wet mass at start [kg]
+  double propellant_kg = 0.378;  // [kg] (DSC: 14.6 m/s at Isp 44 s; OSC 0.205 kg for 8.4 m/s)
+  double cd = 2.2;
+  double cr = 1.8;
+  double srp_area_m2 = 0.35;
+};
+
+struct FaultSettings {
+  /// An unplanned impulse of the OSC (a stuck valve), to force a passive-safety violation;
+  /// disabled when t_s < 0.
+  double impulse_t_s = -1.0;
+  Eigen::Vector3d impulse_dv_rtn_mps = Eigen::Vector3d::Zero();
+};
+
+struct CampaignScenario {
+  std::string name = "visors_campaign";
+  std::uint64_t seed = 1;
+  core::GpsTime t0;                        // start (GPS), default 2024-10-01 00:00:00
+  astro::KeplerianElements chief_mean;     // DSC mean elements at t0
+  Eigen::Matrix<double, 6, 1> initial_roe_m = Eigen::Matrix<double, 6, 1>::Zero();  // a * mean ROE [m]
+  // Timeline.
+  double standby_s = 2700.0;       // standby before the science command (paper: 45 min) [s]
+  int observations = 10;
+  double tail_s = 1800.0;          // run on this long after the formation is back in standby [s]
+  double max_duration_s = 250000.0;  // hard stop [s]
+  double step_s = 1.0;             // simulation and GNC step (the 1 Hz channels) [s]
+  double output_step_s = 10.0;     // time-series sampling [s]
+  std::string active = "osc";      // initially active spacecraft
+  // Models.
+  NavigationErrorSettings navigation;
+  PropulsionSettings propulsion;
+  SpacecraftSettings dsc;
+  SpacecraftSettings osc;
+  double crosslink_delay_s = 0.5;
+  double crosslink_drop_probability = 0.0;
+  dynamics::ForceModelConfig forces = dynamics::ForceModelConfig::truth();
+  std::string forces_toml = "[forces]\npreset = \"truth\"\n";  // the [forces] table as given (for scenario.toml)
+  double integration_step_s = 1.0;  // truth RK4 step (<= step_s) [s]
+  FaultSettings fault;
+  gnc::GncConfig gnc;  // shared by both components (self, role and mass are set per spacecraft)
+};
+
+/// The default scenario (the mission test case).
+CampaignScenario default_campaign();
+
+/// Parses TOML text over the defaults. Errors name the key ("timeline.observations").
+core::Result<CampaignScenario> campaign_from_toml(const std::string& text);
+
+/// The scenario as TOML with every value written out (the run directory's scenario.toml).
+std::string campaign_to_toml(const CampaignScenario& scenario);
+
+}  // namespace visors::sim

@@ -1,0 +1,98 @@
+#include "sim/run_recorder.hpp"
+
+#include <fstream>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "report/run_directory.hpp"
+
+namespace visors::sim {
+
+namespace {
+
+core::Result<std::FILE*> open_file(const std::filesystem::path& path) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (f == nullptr) return core::Error{"output file " + path.string(), "cannot be written"};
+  return f;
+}
+
+template <std::size_t N>
+void write_header(std::FILE* f, const std::array<std::string_view, N>& columns) {
+  for (std::size_t i = 0; i < N; ++i) std::fprintf(f, "%s%.*s", i ? "," : "", static_cast<int>(columns[i].size()), columns[i].data());
+  std::fputc('\n', f);
+}
+
+// CSV quoting of free text: doubled quotes inside double quotes.
+std::string quoted(std::string_view text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"') out += '"';
+    out += (c == '\n' || c == '\r') ? ' ' : c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+core::Result<RunRecorder> RunRecorder::open(const std::filesystem::path& dir, const std::string& scenario_toml) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return core::Error{"--out " + dir.string(), "cannot create the directory (" + ec.message() + ")"};
+  {
+    std::ofstream scenario(dir / std::string(report::kScenarioFile));
+    if (!scenario) return core::Error{"output file " + (dir / std::string(report::kScenarioFile)).string(), "cannot be written"};
+    scenario << scenario_toml;
+  }
+  RunRecorder r;
+  r.dir_ = dir;
+  auto ts = open_file(dir / std::string(report::kTimeseriesFile));
+  if (!ts.ok()) return ts.error();
+  r.timeseries_.reset(*ts);
+  auto obs = open_file(dir / std::string(report::kObservationsFile));
+  if (!obs.ok()) return obs.error();
+  r.observations_.reset(*obs);
+  auto ev = open_file(dir / std::string(report::kEventsFile));
+  if (!ev.ok()) return ev.error();
+  r.events_.reset(*ev);
+  write_header(r.timeseries_.get(), report::kTimeseriesColumns);
+  write_header(r.observations_.get(), report::kObservationColumns);
+  write_header(r.events_.get(), report::kEventColumns);
+  return r;
+}
+
+void RunRecorder::timeseries(const TimeseriesRow& row) {
+  std::string line = fmt::format("{:.17g},{},{}", row.t_s, row.mode, row.active);
+  for (int i = 0; i < 6; ++i) line += fmt::format(",{:.17g}", row.roe_mean_m(i));
+  for (int i = 0; i < 6; ++i) line += fmt::format(",{:.17g}", row.roe_osc_m(i));
+  for (int i = 0; i < 3; ++i) line += fmt::format(",{:.17g}", row.r_rtn_m(i));
+  for (int i = 0; i < 3; ++i) line += fmt::format(",{:.17g}", row.v_rtn_mps(i));
+  line += fmt::format(",{:.17g},{:.17g},", row.sep_rn_m, row.sep_3d_m);
+  if (row.has_margin) line += fmt::format("{:.17g}", row.safety_margin_m);
+  line += fmt::format(",{:.17g},{:.17g}\n", row.dv_dsc_mps, row.dv_osc_mps);
+  std::fputs(line.c_str(), timeseries_.get());
+}
+
+void RunRecorder::observation(const AlignmentResult& result, bool success) {
+  std::fputs(fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", result.index, result.t_s, result.lateral_error_m,
+                         result.lateral_velocity_mps, result.focus_error_m, success ? 1 : 0)
+                 .c_str(),
+             observations_.get());
+}
+
+void RunRecorder::event(double t_s, std::string_view spacecraft, std::string_view kind, std::string_view detail) {
+  std::fputs(fmt::format("{:.17g},{},{},{}\n", t_s, spacecraft, kind, quoted(detail)).c_str(), events_.get());
+}
+
+core::Result<bool> RunRecorder::finish(const nlohmann::json& summary) {
+  timeseries_.reset();
+  observations_.reset();
+  events_.reset();
+  const auto path = dir_ / std::string(report::kSummaryFile);
+  std::ofstream out(path);
+  if (!out) return core::Error{"output file " + path.string(), "cannot be written"};
+  out << summary.dump(2) << '\n';
+  return true;
+}
+
+}  // namespace visors::sim

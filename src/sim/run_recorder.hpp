@@ -1,0 +1,64 @@
+#pragma once
+// Writes the run directory of `visors run` (docs/run-directory.md): the resolved scenario, the
+// time series, the observations, the event log and summary.json. Rows are streamed to the files
+// as the run goes (a crash leaves what was simulated), numbers with 17 significant digits.
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/status.hpp"
+#include "sim/alignment_metrics.hpp"
+
+namespace visors::sim {
+
+struct TimeseriesRow {
+  double t_s = 0.0;
+  std::string_view mode;
+  std::string_view active;
+  Eigen::Matrix<double, 6, 1> roe_mean_m = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 1> roe_osc_m = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Vector3d r_rtn_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_rtn_mps = Eigen::Vector3d::Zero();
+  double sep_rn_m = 0.0, sep_3d_m = 0.0;
+  bool has_margin = false;
+  double safety_margin_m = 0.0;
+  double dv_dsc_mps = 0.0, dv_osc_mps = 0.0;
+};
+
+class RunRecorder {
+ public:
+  /// Creates `dir` (and parents) and opens the files. Errors name the path.
+  static core::Result<RunRecorder> open(const std::filesystem::path& dir, const std::string& scenario_toml);
+
+  void timeseries(const TimeseriesRow& row);
+  void observation(const AlignmentResult& result, bool success);
+  void event(double t_s, std::string_view spacecraft, std::string_view kind, std::string_view detail);
+  /// Writes summary.json and closes the files.
+  core::Result<bool> finish(const nlohmann::json& summary);
+
+  [[nodiscard]] const std::filesystem::path& dir() const { return dir_; }
+
+  RunRecorder(RunRecorder&&) noexcept = default;
+  RunRecorder& operator=(RunRecorder&&) noexcept = default;
+  ~RunRecorder() = default;
+
+ private:
+  struct Closer {
+    void operator()(std::FILE* f) const {
+      if (f != nullptr) std::fclose(f);
+    }
+  };
+  using File = std::unique_ptr<std::FILE, Closer>;
+  RunRecorder() = default;
+
+  std::filesystem::path dir_;
+  File timeseries_, observations_, events_;
+};
+
+}  // namespace visors::sim

@@ -1,0 +1,133 @@
+// Shortened closed-loop system tests of `visors run` (the full campaign is a README command and a
+// benchmark): a science leg from the science orbit, determinism, the escape scenario.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "sim/campaign_simulation.hpp"
+
+namespace {
+
+using visors::sim::campaign_from_toml;
+using visors::sim::run_campaign;
+
+std::filesystem::path run_dir(const std::string& name) {
+  return std::filesystem::temp_directory_path() / ("visors_run_" + std::to_string(::getpid()) + "_" + name);
+}
+
+std::string read(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Starting on the science orbit (the paper's test-case ROE), one transfer leg, then one attempt.
+constexpr const char* kScience = R"(
+name = "science_leg"
+[formation]
+initial_roe_m = [0.015, 35.09, -34.77, 5.10, -19.09, 2.81]
+[campaign]
+standby_s = 60.0
+observations = 1
+tail_s = 60.0
+[time]
+max_duration_s = 20000.0
+)";
+
+class ScienceLeg : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = run_dir("science");
+    auto result = run_campaign(campaign_from_toml(kScience).value(), dir_);
+    ASSERT_TRUE(result.ok()) << result.error().describe();
+    summary_ = result->summary;
+  }
+  static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
+  static inline std::filesystem::path dir_;
+  static inline nlohmann::json summary_;
+};
+
+TEST_F(ScienceLeg, TheAttemptIsMade) { EXPECT_EQ(summary_["observations"].size(), 1U); }
+
+// Issue 6: no passive-safety violation in nominal operation.
+TEST_F(ScienceLeg, NoSafetyViolation) { EXPECT_EQ(summary_["safety_violations"].get<int>(), 0); }
+
+// The science orbit's minimum RN separation is ~19 m (paper: e/i separation); epsilon is 5 m.
+TEST_F(ScienceLeg, RnSeparationStaysAboveEpsilon) { EXPECT_GT(summary_["min_separation_rn_m"].get<double>(), 5.0); }
+
+// Alignment to centimetres (requirement 18 mm lateral; the attempt may fail the requirement, a
+// control loop that works stays within a decimetre).
+TEST_F(ScienceLeg, LateralErrorIsCentimetreLevel) {
+  EXPECT_LT(summary_["observations"][0]["lateral_error_m"].get<double>(), 0.1);
+}
+
+// After the commanded attempts the formation leaves science for standby on its own (the run stops
+// during that transfer).
+TEST_F(ScienceLeg, LeavesScienceAutonomously) {
+  EXPECT_EQ(summary_["final_mode"].get<std::string>(), "transfer_to_standby");
+}
+
+TEST_F(ScienceLeg, RunDirectoryHasEveryFile) {
+  for (const char* name : {"scenario.toml", "timeseries.csv", "observations.csv", "events.csv", "summary.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir_ / name)) << name;
+  }
+}
+
+TEST_F(ScienceLeg, ResolvedScenarioIsValid) { EXPECT_TRUE(campaign_from_toml(read(dir_ / "scenario.toml")).ok()); }
+
+// Issue 6: same seed, same results, bit for bit (standby keeping with maneuvers, all random
+// models on: navigation, propulsion, geometry).
+TEST(CampaignRun, SameSeedSameResultsBitForBit) {
+  constexpr const char* kStandby = R"(
+[formation]
+initial_roe_m = [0.0, 0.0, 0.0, 215.0, 0.0, 200.0]
+[campaign]
+standby_s = 0.0
+observations = 0
+tail_s = 1500.0
+)";
+  const auto scenario = campaign_from_toml(kStandby).value();
+  const auto a = run_dir("det_a"), b = run_dir("det_b");
+  ASSERT_TRUE(run_campaign(scenario, a).ok());
+  ASSERT_TRUE(run_campaign(scenario, b).ok());
+  const std::string ts = read(a / "timeseries.csv");
+  const bool same = ts == read(b / "timeseries.csv") && read(a / "events.csv") == read(b / "events.csv");
+  const bool maneuvered = read(a / "events.csv").find("maneuver") != std::string::npos;
+  std::filesystem::remove_all(a);
+  std::filesystem::remove_all(b);
+  EXPECT_TRUE(maneuvered);
+  EXPECT_TRUE(same);
+}
+
+// Issue 6: a forced safety violation during science (an unplanned 20 mm/s normal impulse that
+// cancels most of the delta-i separation) makes the host command the escape, which separates
+// the spacecraft and ends in manual mode.
+TEST(CampaignRun, ForcedViolationEscapesAndEndsInManual) {
+  constexpr const char* kEscape = R"(
+[formation]
+initial_roe_m = [0.015, 35.09, -34.77, 5.10, -19.09, 2.81]
+[campaign]
+standby_s = 60.0
+observations = 3
+tail_s = 600.0
+[time]
+max_duration_s = 20000.0
+[fault]
+impulse_t_s = 11000.0
+impulse_dv_rtn_mps = [0.0, 0.0, 0.02]
+)";
+  const auto dir = run_dir("escape");
+  const auto result = run_campaign(campaign_from_toml(kEscape).value(), dir);
+  ASSERT_TRUE(result.ok());
+  const std::string events = read(dir / "events.csv");
+  std::filesystem::remove_all(dir);
+  EXPECT_GE(result->summary["safety_violations"].get<int>(), 1);
+  EXPECT_NE(events.find("escape dv_rtn"), std::string::npos);
+  EXPECT_EQ(result->summary["final_mode"].get<std::string>(), "manual");
+}
+
+}  // namespace

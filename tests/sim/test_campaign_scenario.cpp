@@ -1,0 +1,107 @@
+// The campaign scenario: defaults from the mission paper's test case, validation naming the key,
+// and the resolved scenario read back.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/constants.hpp"
+#include "sim/campaign_scenario.hpp"
+
+namespace {
+
+using visors::sim::campaign_from_toml;
+using visors::sim::campaign_to_toml;
+using visors::sim::default_campaign;
+
+std::string shipped_scenario() {
+  std::ifstream in(std::string(VISORS_SOURCE_DIR) + "/data/scenarios/campaign.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Mission paper, test-case table: a = R_E + 500 km, e = 0.004, i = 97.8 deg, RAAN = 157.5 deg.
+TEST(CampaignScenario, DefaultChiefIsTheMissionTestCase) {
+  const auto s = default_campaign();
+  EXPECT_NEAR(s.chief_mean.a, visors::core::kWgs84SemiMajorAxis + 500e3, 1e-6);
+  EXPECT_NEAR(s.chief_mean.i, 97.8 * visors::core::kDegToRad, 1e-15);
+  EXPECT_NEAR(s.chief_mean.raan, 157.5 * visors::core::kDegToRad, 1e-15);
+}
+
+// u(t0) = argp + M = 0 (test-case table).
+TEST(CampaignScenario, DefaultArgumentOfLatitudeIsZero) {
+  const auto s = default_campaign();
+  EXPECT_NEAR(std::remainder(s.chief_mean.argp + s.chief_mean.M, 2.0 * M_PI), 0.0, 1e-15);
+}
+
+// Mission paper: 45 min of standby, 10 attempts; standby ROE a*dey = a*diy = 200 m.
+TEST(CampaignScenario, DefaultTimelineAndStandbyOrbit) {
+  const auto s = default_campaign();
+  EXPECT_EQ(s.standby_s, 2700.0);
+  EXPECT_EQ(s.observations, 10);
+  EXPECT_EQ(s.initial_roe_m(3), 200.0);
+  EXPECT_EQ(s.initial_roe_m(5), 200.0);
+}
+
+TEST(CampaignScenario, ShippedFileIsValid) { EXPECT_TRUE(campaign_from_toml(shipped_scenario()).ok()); }
+
+TEST(CampaignScenario, ShippedFileKeepsTheDefaultMasses) {
+  const auto s = campaign_from_toml(shipped_scenario()).value();
+  EXPECT_EQ(s.dsc.mass_kg, 11.35);  // mission paper: DSC 11.35 kg, OSC 10.62 kg
+  EXPECT_EQ(s.osc.mass_kg, 10.62);
+}
+
+TEST(CampaignScenario, UnknownKeyIsNamed) {
+  const auto s = campaign_from_toml("[campaign]\nobservation = 3\n");
+  EXPECT_EQ(s.error().field, "campaign.observation");
+}
+
+TEST(CampaignScenario, NegativeObservationsAreRejected) {
+  const auto s = campaign_from_toml("[campaign]\nobservations = -1\n");
+  EXPECT_EQ(s.error().field, "campaign.observations");
+}
+
+TEST(CampaignScenario, IntegrationStepMustDivideTheStep) {
+  const auto s = campaign_from_toml("[time]\nstep_s = 1.0\nintegration_step_s = 0.3\n");
+  EXPECT_EQ(s.error().field, "time.integration_step_s");
+}
+
+TEST(CampaignScenario, OnlyIdealNavigationExists) {
+  const auto s = campaign_from_toml("[navigation]\nmode = \"gps\"\n");
+  EXPECT_EQ(s.error().field, "navigation.mode");
+}
+
+TEST(CampaignScenario, GncThresholdOutOfRangeIsNamed) {
+  const auto s = campaign_from_toml("[gnc]\nstandby_de_deadband_m = -1.0\n");
+  EXPECT_NE(s.error().field.find("standby_keeping.de_deadband_m"), std::string::npos);
+}
+
+TEST(CampaignScenario, ForcesAreReadWithTheirOwnValidation) {
+  const auto s = campaign_from_toml("[forces.gravity]\ndegree = -3\n");
+  EXPECT_FALSE(s.ok());
+}
+
+// The resolved scenario (the run directory's scenario.toml) reads back to the same values.
+TEST(CampaignScenario, ResolvedScenarioReadsBack) {
+  auto s = default_campaign();
+  s.seed = 77;
+  s.observations = 4;
+  s.fault.impulse_t_s = 1234.5;
+  s.gnc.safety.epsilon = 6.5;
+  const auto back = campaign_from_toml(campaign_to_toml(s)).value();
+  EXPECT_EQ(back.seed, 77U);
+  EXPECT_EQ(back.observations, 4);
+  EXPECT_EQ(back.fault.impulse_t_s, 1234.5);
+  EXPECT_EQ(back.gnc.safety.epsilon, 6.5);
+  EXPECT_EQ(back.chief_mean.a, s.chief_mean.a);
+}
+
+TEST(CampaignScenario, ResolvedForcesTableReadsBack) {
+  const auto s = campaign_from_toml("[forces]\npreset = \"onboard\"\n[forces.gravity]\ndegree = 8\norder = 8\n").value();
+  const auto back = campaign_from_toml(campaign_to_toml(s)).value();
+  EXPECT_EQ(back.forces.gravity.degree, 8);
+}
+
+}  // namespace
