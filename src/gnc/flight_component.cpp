@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 #include "astro/j2_secular.hpp"
@@ -373,9 +374,12 @@ void FlightComponent::science_fine_control() {
   const double to_aligned = observation_->aligned.seconds_since(estimate_->t);
   double burns[3];
   int count = 0;
+  // Usable burns: after the planning latency, and early enough that their pieces (centred on the
+  // burn) end a plenum refill before the slew.
+  const double slew_before = observation_->start.seconds_since(observation_->slew_start);
   for (const double before : config_.science.least_squares_burns_before_s) {
     const double t_burn = to_start - before;
-    if (t_burn >= config_.burn_latency_s) burns[count++] = t_burn;
+    if (t_burn >= config_.burn_latency_s && before >= slew_before + config_.buffer.limits.spacing) burns[count++] = t_burn;
   }
   // Replan every least_squares_period_s on the newest estimate (the paper closes this loop about
   // every 45 s), but never while the pieces of a burn are being fired: they belong together.
@@ -400,23 +404,26 @@ void FlightComponent::science_fine_control() {
   replace_plan(plan->plan.impulses);
 }
 
-// One burn left: three unknowns cannot fix the six ROE, so the burn puts the relative POSITION on
-// target at the alignment time (the alignment requirements are on position to 15-18 mm; the
-// velocity requirement, 0.2 mm/s, is loose enough to be left to the previous burns):
-//   C (Phi x0 + Phi Gamma dv) = C x_target,  C the position rows of the ROE -> RTN map at t_aligned.
+// One burn left: three unknowns cannot fix the six ROE, so the burn minimises the alignment
+// errors themselves at the alignment time: the relative position error and the relative velocity
+// error weighted by the ratio of their requirements (18 mm against 0.2 mm/s: 90 s), i.e. the
+// weighted least-squares solution of  W C (x_target - Phi x0 - Phi Gamma dv) = 0,  C the ROE -> RTN
+// map at t_aligned, W = diag(1, 1, 1, w, w, w).
 void FlightComponent::replan_last_burn(const astro::RelativeOrbitalElements& target, double t_burn, double to_aligned) {
   const astro::KeplerianElements chief_aligned = astro::propagate_mean_j2(estimate_->chief_mean, to_aligned, config_.gravity);
-  const Eigen::Matrix<double, 3, 6> c = astro::roe_to_rtn_matrix(chief_aligned, config_.gravity.mu).topRows<3>();
+  Eigen::Matrix<double, 6, 6> wc = astro::roe_to_rtn_matrix(chief_aligned, config_.gravity.mu);
+  wc.bottomRows<3>() *= config_.science.last_burn_velocity_weight_s;
   const astro::RelativeOrbitalElements free =
       control::predict_roe(estimate_->chief_mean, estimate_->roe_mean, {}, to_aligned, config_.gravity);
-  const Eigen::Matrix3d m = c * control::impulse_effect(estimate_->chief_mean, t_burn, to_aligned, config_.gravity);
-  const Eigen::Vector3d miss = c * (target - free);
-  const Eigen::FullPivLU<Eigen::Matrix3d> lu(m);
-  if (lu.rcond() < 1e-8) {
+  const Eigen::Matrix<double, 6, 3> m = wc * control::impulse_effect(estimate_->chief_mean, t_burn, to_aligned, config_.gravity);
+  const Eigen::Matrix<double, 6, 1> miss = wc * (target - free);
+  const Eigen::Matrix3d normal = m.transpose() * m;
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(normal);
+  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) {
     replace_plan(core::Error{"last_burn", "singular geometry"});
     return;
   }
-  replace_plan(std::vector<control::Impulse>{control::Impulse{t_burn, lu.solve(miss)}});
+  replace_plan(std::vector<control::Impulse>{control::Impulse{t_burn, ldlt.solve(m.transpose() * miss)}});
 }
 
 astro::RelativeOrbitalElements FlightComponent::drag_drift(double to_aligned) const {

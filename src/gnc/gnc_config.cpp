@@ -34,6 +34,7 @@ core::Result<GncConfig> validate(const GncConfig& config) {
                          "must be decreasing, > 0 and within least_squares_window_s"};
     }
   }
+  if (!(sc.last_burn_velocity_weight_s >= 0.0)) return core::Error{"science.last_burn_velocity_weight_s", "must be >= 0"};
   if (!positive(sc.least_squares_period_s)) return core::Error{"science.least_squares_period_s", "must be > 0"};
   if (!positive(sc.mpc_period_s)) return core::Error{"science.mpc_period_s", "must be > 0"};
   if (!(sc.min_lead_s > sc.least_squares_window_s)) {
@@ -42,11 +43,8 @@ core::Result<GncConfig> validate(const GncConfig& config) {
   if (!positive(sc.observation_duration_s)) return core::Error{"science.observation_duration_s", "must be > 0"};
   if (!positive(sc.slew_rate_rad_s)) return core::Error{"science.slew_rate_rad_s", "must be > 0"};
   if (!(sc.slew_settle_s >= 0.0)) return core::Error{"science.slew_settle_s", "must be >= 0"};
-  if (!(sc.max_slew_angle_rad > 0.0 && sc.max_slew_angle_rad <= core::kPi)) {
-    return core::Error{"science.max_slew_angle_rad", "must be in (0, pi]"};
-  }
-  if (sc.least_squares_burns_before_s[2] <= sc.max_slew_angle_rad / sc.slew_rate_rad_s + sc.slew_settle_s) {
-    return core::Error{"science.least_squares_burns_before_s", "the last burn must precede the slew"};
+  if (!(sc.slew_margin_rad >= 0.0 && sc.slew_margin_rad <= core::kPi)) {
+    return core::Error{"science.slew_margin_rad", "must be in [0, pi]"};
   }
   if (auto ok = safety::validate(config.safety); !ok) return core::Error{"safety." + ok.error().field, ok.error().message};
   if (auto ok = safety::validate(config.escape); !ok) return core::Error{"escape." + ok.error().field, ok.error().message};

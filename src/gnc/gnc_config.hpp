@@ -58,11 +58,15 @@ struct ScienceSettings {
   /// Fine control window before each observation: least squares at fixed times (paper: last
   /// 10-15 min) [s].
   double least_squares_window_s = 900.0;
-  /// Burn times of the least-squares planner, seconds before the observation (3 burns, 6 and 6
-  /// min apart; the last one just before the slew, so differential drag has the least time to
-  /// act; closer burns make the 6 x 6 problem ill-conditioned and the plan large).
+  /// Burn times of the least-squares planner, seconds before the observation (3 burns, 6 and 7.5
+  /// min apart; the last one as late as the slew allows, so navigation and differential-drag
+  /// errors have the least time to grow; closer burns make the 6 x 6 problem ill-conditioned).
+  /// A burn whose pieces could not end one plenum refill before the slew starts is skipped.
   double least_squares_burns_before_s[3] = {900.0, 540.0, 180.0};
   control::LeastSquaresSettings least_squares;
+  /// Weight of the relative velocity against the position in the last burn's solve: the ratio of
+  /// the requirements, 18 mm / 0.2 mm/s [s].
+  double last_burn_velocity_weight_s = 90.0;
   /// The least-squares plan is recomputed this often on the newest estimate, so differential drag
   /// and execution errors are corrected up to the last burn (paper: every 45 s) [s].
   double least_squares_period_s = 45.0;
@@ -75,8 +79,11 @@ struct ScienceSettings {
   double observation_duration_s = 10.0;  // [s] (requirement: 10 s windows)
   double slew_rate_rad_s = 1.5 * core::kPi / 180.0;  // [rad/s] (paper: 1.5 deg/s)
   double slew_settle_s = 30.0;                       // settling after the slew [s] (ours)
-  /// Largest slew the schedule allows for (zenith to Sun can be up to 180 deg) [rad].
-  double max_slew_angle_rad = core::kPi;
+  /// Added to the predicted slew angle when timing the slew command [rad]. The slew from the
+  /// nominal attitude (+Z at zenith, +X towards the Sun's projection on the horizontal plane) to
+  /// the observation attitude (+X at the Sun) is a rotation by the Sun's elevation, near zero at
+  /// the TN-plane alignment.
+  double slew_margin_rad = 5.0 * core::kPi / 180.0;
 };
 
 struct GncConfig {

@@ -1,5 +1,8 @@
 #include "gnc/observation_schedule.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "astro/j2_secular.hpp"
 #include "astro/mean_osculating.hpp"
 #include "astro/sun_moon.hpp"
@@ -7,11 +10,11 @@
 
 namespace visors::gnc {
 
-double slew_lead_s(const ScienceSettings& settings) {
-  return settings.max_slew_angle_rad / settings.slew_rate_rad_s + settings.slew_settle_s;
+double slew_lead_s(const ScienceSettings& settings, double angle_rad) {
+  return (std::abs(angle_rad) + settings.slew_margin_rad) / settings.slew_rate_rad_s + settings.slew_settle_s;
 }
 
-core::Result<astro::RelativeOrbitalElements> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
+core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
                                                               const control::ScienceGeometry& geometry,
                                                               const core::EarthGravityConstants& gravity) {
   const auto chief_osc = astro::osculating_from_mean(chief_mean, gravity);
@@ -25,7 +28,9 @@ core::Result<astro::RelativeOrbitalElements> aligned_mean_roe(const astro::Keple
   if (!deputy_osc.ok()) return deputy_osc.error();
   const auto deputy_mean = astro::mean_from_osculating(*deputy_osc, gravity);
   if (!deputy_mean.ok()) return deputy_mean.error();
-  return astro::roe_from_keplerian(chief_mean, *deputy_mean);
+  const auto roe = astro::roe_from_keplerian(chief_mean, *deputy_mean);
+  if (!roe.ok()) return roe.error();
+  return AlignedTarget{*roe, std::asin(std::clamp(sun_unit.dot(chief.r.normalized()), -1.0, 1.0))};
 }
 
 core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
@@ -47,9 +52,9 @@ core::Result<ScheduledObservation> next_observation(const astro::KeplerianElemen
   out.index = index;
   out.aligned = aligned;
   out.start = aligned - 0.5 * settings.observation_duration_s;
-  out.slew_start = out.start - slew_lead_s(settings);
+  out.slew_start = out.start - slew_lead_s(settings, roe->sun_elevation_rad);
   out.end = out.start + settings.observation_duration_s;
-  out.roe_target = *roe;
+  out.roe_target = roe->roe_mean;
   return out;
 }
 

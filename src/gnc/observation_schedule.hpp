@@ -27,7 +27,11 @@ struct ScheduledObservation {
 /// state, deputy state, deputy mean elements, ROE. control::science_orbit's ROE comes from the
 /// first-order map at the MEAN chief instead, which misplaces the deputy by the short-period J2
 /// terms (centimetres at 40 m, where the requirement is 18 mm).
-core::Result<astro::RelativeOrbitalElements> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
+struct AlignedTarget {
+  astro::RelativeOrbitalElements roe_mean = astro::RelativeOrbitalElements::Zero();  // [-]
+  double sun_elevation_rad = 0.0;  // the Sun above the chief's local horizontal plane [rad]
+};
+core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
                                                               const control::ScienceGeometry& geometry,
                                                               const core::EarthGravityConstants& gravity);
 
@@ -45,7 +49,8 @@ core::Result<ScheduledObservation> next_observation(const astro::KeplerianElemen
 core::Result<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                      const ScienceSettings& settings, const core::EarthGravityConstants& gravity);
 
-/// Slew plus settling time commanded before each observation [s].
-double slew_lead_s(const ScienceSettings& settings);
+/// Slew plus settling time commanded before an observation whose slew is `angle_rad` [s]:
+/// (angle + margin) / rate + settling.
+double slew_lead_s(const ScienceSettings& settings, double angle_rad);
 
 }  // namespace visors::gnc
