@@ -1,0 +1,94 @@
+// The flight component's parts: maneuver queue, differential-drag estimator, observation
+// schedule.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "astro/j2_secular.hpp"
+#include "astro/mean_osculating.hpp"
+#include "astro/sun_moon.hpp"
+#include "core/rtn_frame.hpp"
+#include "formation_harness.hpp"
+#include "gnc/differential_drag_estimator.hpp"
+#include "gnc/maneuver_queue.hpp"
+#include "gnc/observation_schedule.hpp"
+
+namespace {
+
+using namespace visors::gnc;
+using visors::core::GpsTime;
+
+const GpsTime kT0 = GpsTime::from_seconds(1.4e9);
+
+// A 5 mm/s impulse needs three pieces of at most 0.98 * 2.2e-2 N s / 10.62 kg = 2.03 mm/s.
+TEST(ManeuverQueue, BuffersAnImpulseIntoPieces) {
+  ManeuverQueue q;
+  const auto added = q.add(kT0, test::mission_chief(), {{1000.0, Eigen::Vector3d(0, 5e-3, 0)}}, 10.62, {});
+  ASSERT_TRUE(added.ok());
+  EXPECT_EQ(q.pending(), 3);
+}
+
+// Releases respect the 46.5 s plenum refill even when pieces are already due.
+TEST(ManeuverQueue, ReleasesRespectTheRefillSpacing) {
+  ManeuverQueue q;
+  ASSERT_TRUE(q.add(kT0, test::mission_chief(), {{0.0, Eigen::Vector3d(0, 5e-3, 0)}}, 10.62, {}).ok());
+  const GpsTime late = kT0 + 1000.0;
+  q.pop(late);
+  EXPECT_FALSE(q.due(late + 46.0, 46.5));
+}
+
+TEST(ManeuverQueue, ClearDropsWhatWasNotReleased) {
+  ManeuverQueue q;
+  ASSERT_TRUE(q.add(kT0, test::mission_chief(), {{1000.0, Eigen::Vector3d(0, 5e-3, 0)}}, 10.62, {}).ok());
+  q.clear();
+  EXPECT_TRUE(q.empty());
+}
+
+// GVE: d(a da)/dt = 2 a_T / n. Feed a*da growing at 2 a_T / n with a_T = 1e-6 m/s^2.
+TEST(DifferentialDragEstimator, RecoversAConstantAlongTrackAcceleration) {
+  DifferentialDragEstimator estimator;
+  const double n = 1.1e-3, a_t = 1e-6;
+  for (int k = 0; k <= 1200; ++k) estimator.observe(kT0 + static_cast<double>(k), 2.0 * a_t / n * k, n);
+  EXPECT_NEAR(estimator.along_track_mps2(), a_t, 1e-15);
+}
+
+TEST(DifferentialDragEstimator, AManeuverRestartsTheBaseline) {
+  DifferentialDragEstimator estimator;
+  estimator.maneuver(kT0);
+  for (int k = 0; k < 300; ++k) estimator.observe(kT0 + static_cast<double>(k), 0.01 * k, 1.1e-3);
+  EXPECT_FALSE(estimator.valid());
+}
+
+// The aligned target, built back into states: the OSC is 40 m from the DSC along the Sun line
+// (independent check through the first-order J2 osculating theory and the Sun ephemeris).
+TEST(ObservationSchedule, AlignedTargetPutsTheOscFortyMetresSunward) {
+  const auto chief = test::mission_chief();
+  const GpsTime t = kT0 + 1234.0;
+  const auto target = aligned_mean_roe(chief, t, {}, {});
+  ASSERT_TRUE(target.ok());
+  const auto deputy_mean = visors::astro::deputy_from_roe(chief, target->roe_mean).value();
+  const auto mu = visors::core::EarthGravityConstants{}.mu;
+  const auto c = visors::astro::cartesian_from_keplerian(visors::astro::osculating_from_mean(chief).value(), mu);
+  const auto d = visors::astro::cartesian_from_keplerian(visors::astro::osculating_from_mean(deputy_mean).value(), mu);
+  const Eigen::Vector3d sun = (visors::astro::sun_position_gcrf(t) - c.r).normalized();
+  EXPECT_LT((d.r - c.r - 40.0 * sun).norm(), 1e-4);
+}
+
+// One attempt per orbit: consecutive opportunities are one chief period apart (to the J2 drift of
+// the argument of latitude and the Sun's motion, a few seconds).
+TEST(ObservationSchedule, ConsecutiveAttemptsAreAnOrbitApart) {
+  const auto chief = test::mission_chief();
+  ScienceSettings settings;
+  const auto first = next_observation(chief, kT0, 1, settings, {}).value();
+  const double dt = first.end.seconds_since(kT0);
+  const auto second = next_observation(visors::astro::propagate_mean_j2(chief, dt), first.end, 2, settings, {}).value();
+  const double period = 2.0 * M_PI * std::sqrt(std::pow(chief.a, 3) / visors::core::EarthGravityConstants{}.mu);
+  EXPECT_NEAR(second.aligned.seconds_since(first.aligned), period, 60.0);
+}
+
+TEST(ObservationSchedule, SlewIsCommandedBeforeTheWindow) {
+  const auto next = next_observation(test::mission_chief(), kT0, 1, ScienceSettings{}, {}).value();
+  EXPECT_GE(next.start.seconds_since(next.slew_start), ScienceSettings{}.slew_settle_s);
+}
+
+}  // namespace
