@@ -49,7 +49,7 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
       started_ = true;
       accept_inputs(inputs, out);
       if (!active_ && observation_ && now_ > observation_->end) observation_.reset();
-      if (estimate_) check_safety(out);
+      if (estimate_) check_safety();
       if (active_) run_control(out);
       release_maneuver(out);
     }
@@ -171,13 +171,12 @@ void FlightComponent::enter(Mode mode) {
   leg_ = 0;
   leg_planned_ = false;
   observation_.reset();
-  observation_announced_ = false;
   mpc_started_ = false;
   ls_planned_ = false;
   escape_planned_ = false;
 }
 
-void FlightComponent::check_safety(GncOutputs& /*out*/) {
+void FlightComponent::check_safety() {
   if (safety_checked_ && since(last_safety_check_) < config_.safety.check_period) return;
   last_safety_check_ = now_;
   const auto assessment = safety::evaluate_passive_safety(estimate_->chief_mean, estimate_->roe_mean,

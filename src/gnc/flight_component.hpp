@@ -13,11 +13,14 @@
 //  - standby: once per check period, if a|de - de_t| > deadband or a|dlambda - dlambda_t| >
 //    threshold, a closed-form plan back to the standby ROE over plan_orbits;
 //  - transfer: guidance waypoints (control::transfer_waypoints) flown as closed-form legs of
-//    leg_orbits each, each leg planned from the current estimate;
-//  - science: per observation, the stochastic MPC (reachable-set planner) on estimates
-//    mpc_period_s apart, then, inside the last least_squares_window_s, the least-squares planner
-//    at the fixed burn times still ahead (replanned after each burn), then the slew, the 10 s
-//    observation and the next one;
+//    leg_orbits each (two normal burns per leg), each leg planned from the current estimate;
+//  - science, per observation (observation_schedule.hpp: exact aligned target at mid-window):
+//    the stochastic MPC (reachable-set planner) every mpc_period_s towards the aligned ROE carried
+//    back to the start of the fine-control window; inside the window the least-squares planner at
+//    the fixed burn times still ahead, replanned every least_squares_period_s, and for the last
+//    burn a weighted solve of the position and velocity errors at alignment; both aim off by the
+//    drift the estimated differential drag (differential_drag_estimator.hpp) still causes; then
+//    the slew, the 10 s observation and the next one;
 //  - escape: safety::plan_escape, as soon as allowed.
 // Every plan goes through the maneuver buffer (ManeuverQueue).
 //
@@ -60,7 +63,7 @@ class FlightComponent {
   void apply_command(const GroundCommand& command);
   void follow_peer(const CrosslinkMessage& peer, GncOutputs& out);
   void enter(Mode mode);
-  void check_safety(GncOutputs& out);
+  void check_safety();
   void run_control(GncOutputs& out);
   void run_standby();
   void run_transfer();
@@ -111,7 +114,6 @@ class FlightComponent {
   int observations_planned_ = 0;
   int observations_done_ = 0;
   std::optional<ScheduledObservation> observation_;
-  bool observation_announced_ = false;
   core::GpsTime mpc_epoch_;
   core::GpsTime last_mpc_;
   bool mpc_started_ = false;
