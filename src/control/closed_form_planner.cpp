@@ -23,6 +23,7 @@ using Vector4d = Eigen::Vector4d;
 
 constexpr int kMaxCandidates = 12;
 constexpr int kMaxImpulses = kMaxCandidates + 2;
+static_assert(static_cast<std::size_t>(kMaxImpulses) == kMaxClosedFormImpulses);
 
 // The in-plane rows (da, dlambda, dex, dey) of a 6-vector.
 Vector4d in_plane(const Vector6d& v) { return v.head<4>(); }
@@ -63,7 +64,20 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
                                             const astro::RelativeOrbitalElements& roe_target, double tf,
                                             const ClosedFormSettings& settings,
                                             const core::EarthGravityConstants& gravity) {
+  ManeuverPlan plan;
+  plan.impulses.reserve(kMaxClosedFormImpulses);
+  if (auto ok = plan_closed_form_into(plan, chief_mean_t0, roe0, roe_target, tf, settings, gravity); !ok) return ok.error();
+  return plan;
+}
+
+core::Result<bool> plan_closed_form_into(ManeuverPlan& plan, const astro::KeplerianElements& chief_mean_t0,
+                                         const astro::RelativeOrbitalElements& roe0,
+                                         const astro::RelativeOrbitalElements& roe_target, double tf,
+                                         const ClosedFormSettings& settings, const core::EarthGravityConstants& gravity) {
   using namespace astro::roe;
+  plan.impulses.clear();
+  plan.dv_total = 0.0;
+  plan.dv_lower_bound = 0.0;
   // ---- validation --------------------------------------------------------------------------
   if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok.error();
   if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
@@ -110,10 +124,9 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
   std::array<Eigen::Vector3d, kMaxImpulses> dv{};
   int count = 0;
   const double w_scale = w.norm();
-  if (w_scale == 0.0) {
-    ManeuverPlan plan;  // already on target: no impulse
+  if (w_scale == 0.0) {  // already on target: no impulse
     plan.roe_final_predicted = roe_target;
-    return plan;
+    return true;
   }
 
   // ---- 2. normal burn(s) ---------------------------------------------------------------------
@@ -279,8 +292,6 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
                                          std::to_string(residual.norm()) + " m)"};
   }
 
-  ManeuverPlan plan;
-  plan.impulses.reserve(static_cast<std::size_t>(count));
   for (int k = 0; k < count; ++k) {
     plan.impulses.push_back(Impulse{impulses[static_cast<std::size_t>(k)].t, v.segment<3>(3 * k)});
   }
@@ -289,7 +300,7 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
   plan.dv_total = total_delta_v(plan.impulses);
   plan.dv_lower_bound = bound.value().total;
   plan.roe_final_predicted = predict_roe(chief_mean_t0, roe0, plan.impulses, tf, gravity);
-  return plan;
+  return true;
 }
 
 }  // namespace visors::control

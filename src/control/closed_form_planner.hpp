@@ -44,7 +44,7 @@
 // are reproduced; 4.6 omits that a normal burn's dix also drifts dlambda (-kappa F S tau dix,
 // 0.15 m per orbit for the VISORS 18.7 m of a dix): step 3 therefore plans the in-plane burns on
 // the residual after the normal burn(s), and a pure out-of-plane target gets small tangential burns.
-// No heap allocation except the returned impulse vector.
+// No heap allocation except the returned impulse vector (none for plan_closed_form_into).
 
 #include "astro/keplerian_elements.hpp"
 #include "astro/relative_orbital_elements.hpp"
@@ -79,5 +79,16 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
                                             const astro::RelativeOrbitalElements& roe_target, double tf,
                                             const ClosedFormSettings& settings = {},
                                             const core::EarthGravityConstants& gravity = {});
+
+/// Most impulses a closed-form plan has (in-plane candidates plus two normal burns).
+inline constexpr std::size_t kMaxClosedFormImpulses = 14;
+
+/// The same into `plan` (its impulse vector cleared and refilled: with capacity for
+/// kMaxClosedFormImpulses nothing is allocated). On error `plan` is unspecified.
+core::Result<bool> plan_closed_form_into(ManeuverPlan& plan, const astro::KeplerianElements& chief_mean_t0,
+                                         const astro::RelativeOrbitalElements& roe0,
+                                         const astro::RelativeOrbitalElements& roe_target, double tf,
+                                         const ClosedFormSettings& settings = {},
+                                         const core::EarthGravityConstants& gravity = {});
 
 }  // namespace visors::control

@@ -88,6 +88,15 @@ core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_m
 core::Result<std::vector<RelativeOrbitalElements>> transfer_waypoints(const RelativeOrbitalElements& from,
                                                                       const RelativeOrbitalElements& to,
                                                                       const TransferSettings& settings) {
+  std::vector<RelativeOrbitalElements> waypoints;
+  if (auto ok = transfer_waypoints_into(waypoints, from, to, settings); !ok) return ok.error();
+  return waypoints;
+}
+
+core::Result<int> transfer_waypoints_into(std::vector<RelativeOrbitalElements>& waypoints,
+                                          const RelativeOrbitalElements& from, const RelativeOrbitalElements& to,
+                                          const TransferSettings& settings) {
+  waypoints.clear();
   if (!from.allFinite()) return core::Error{"from", "must be finite"};
   if (!to.allFinite()) return core::Error{"to", "must be finite"};
   if (!(settings.max_phase_step > 0.0)) return core::Error{"max_phase_step", "must be > 0"};
@@ -107,8 +116,7 @@ core::Result<std::vector<RelativeOrbitalElements>> transfer_waypoints(const Rela
   const double log_ratio = std::max(std::abs(std::log(e1[0] / e0[0])), std::abs(std::log(i1[0] / i0[0])));
   const int legs = std::max({1, static_cast<int>(std::ceil(std::abs(dphase) / settings.max_phase_step)),
                              static_cast<int>(std::ceil(log_ratio / std::log(settings.max_size_ratio)))});
-  std::vector<RelativeOrbitalElements> waypoints;
-  waypoints.reserve(static_cast<std::size_t>(legs));
+  if (waypoints.capacity() < static_cast<std::size_t>(legs)) waypoints.reserve(static_cast<std::size_t>(legs));
   for (int k = 1; k < legs; ++k) {
     const double f = static_cast<double>(k) / legs;
     const double phase = phase0 + f * dphase;
@@ -123,7 +131,7 @@ core::Result<std::vector<RelativeOrbitalElements>> transfer_waypoints(const Rela
     waypoints.push_back(w);
   }
   waypoints.push_back(to);
-  return waypoints;
+  return legs;
 }
 
 }  // namespace visors::control

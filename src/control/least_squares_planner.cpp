@@ -1,5 +1,6 @@
 #include "control/least_squares_planner.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -18,6 +19,19 @@ core::Result<LeastSquaresPlan> plan_least_squares(const astro::KeplerianElements
                                                   std::span<const double> burn_times,
                                                   const LeastSquaresSettings& settings,
                                                   const core::EarthGravityConstants& gravity) {
+  LeastSquaresPlan out;
+  out.plan.impulses.reserve(std::max<std::size_t>(burn_times.size(), 1));
+  if (auto ok = plan_least_squares_into(out, chief_mean_t0, roe0, roe_target, tf, burn_times, settings, gravity); !ok) {
+    return ok.error();
+  }
+  return out;
+}
+
+core::Result<bool> plan_least_squares_into(LeastSquaresPlan& out, const astro::KeplerianElements& chief_mean_t0,
+                                           const astro::RelativeOrbitalElements& roe0,
+                                           const astro::RelativeOrbitalElements& roe_target, double tf,
+                                           std::span<const double> burn_times, const LeastSquaresSettings& settings,
+                                           const core::EarthGravityConstants& gravity) {
   if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok.error();
   if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
   if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
@@ -65,16 +79,16 @@ core::Result<LeastSquaresPlan> plan_least_squares(const astro::KeplerianElements
   }
   const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3 * kMaxLeastSquaresBurns, 1> v = big_m.transpose() * y;
 
-  LeastSquaresPlan out;
   out.nu = nu;
-  out.plan.impulses.reserve(burn_times.size());
+  out.plan.impulses.clear();
+  out.plan.dv_lower_bound = 0.0;
   for (int k = 0; k < m; ++k) {
     out.plan.impulses.push_back(Impulse{burn_times[static_cast<std::size_t>(k)], v.segment<3>(3 * k)});
   }
   out.plan.dv_total = total_delta_v(out.plan.impulses);
   out.plan.roe_final_predicted = predict_roe(chief_mean_t0, roe0, out.plan.impulses, tf, gravity);
   out.terminal_error = roe_target - out.plan.roe_final_predicted;
-  return out;
+  return true;
 }
 
 }  // namespace visors::control

@@ -28,105 +28,111 @@ core::Result<bool> check_inputs(const astro::KeplerianElements& chief, const Imp
   return true;
 }
 
-// Piece times centred on the planned time.
-std::vector<double> piece_times(double t, int pieces, double spacing) {
-  std::vector<double> times(static_cast<std::size_t>(pieces));
-  for (int j = 0; j < pieces; ++j) times[static_cast<std::size_t>(j)] = t + (j - 0.5 * (pieces - 1)) * spacing;
-  return times;
-}
-
-// Columns of the effect matrices of `times` at t_ref, side by side (6 x 3K).
-Eigen::MatrixXd stacked_effects(const astro::KeplerianElements& chief, const std::vector<double>& times,
-                                double t_ref, const core::EarthGravityConstants& gravity) {
-  Eigen::MatrixXd b(6, 3 * static_cast<Eigen::Index>(times.size()));
-  for (std::size_t j = 0; j < times.size(); ++j) {
-    b.middleCols<3>(3 * static_cast<Eigen::Index>(j)) = impulse_effect(chief, times[j], t_ref, gravity);
-  }
-  return b;
-}
+using Effects = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3 * kMaxBufferPieces>;
+using PieceVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3 * kMaxBufferPieces, 1>;
 
 }  // namespace
 
-namespace {
-
-// The split with what the quantisation needs: the pieces' effect matrices side by side (6 x 3K)
-// and the planned impulse's effect, both at the last piece's time.
-struct Split {
-  std::vector<Impulse> pieces;
-  Eigen::MatrixXd effects;
-  astro::RelativeOrbitalElements target;
+// The pieces' effect matrices side by side (6 x 3K) at the last piece's time, the planned
+// impulse's effect there, and the minimum-norm solver; all fixed capacity, so nothing allocates.
+struct ImpulseBuffer::Work {
+  Effects effects;
+  astro::RelativeOrbitalElements target = astro::RelativeOrbitalElements::Zero();
+  Eigen::CompleteOrthogonalDecomposition<Effects> cod;
+  PieceVector x;
+  Effects rest;
 };
 
-core::Result<Split> split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
-                          const BufferSettings& settings) {
+ImpulseBuffer::ImpulseBuffer() : work_(std::make_unique<Work>()) {
+  pieces_.reserve(kMaxBufferPieces);
+  result_.pieces.reserve(kMaxBufferPieces);
+}
+ImpulseBuffer::ImpulseBuffer(ImpulseBuffer&&) noexcept = default;
+ImpulseBuffer& ImpulseBuffer::operator=(ImpulseBuffer&&) noexcept = default;
+ImpulseBuffer::~ImpulseBuffer() = default;
+
+core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+                                        double mass, const BufferSettings& settings) {
   if (auto ok = check_inputs(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
+  if (settings.max_pieces > kMaxBufferPieces) return core::Error{"max_pieces", "must be <= 99"};
+  Work& w = *work_;
+  pieces_.clear();
   const double cap = settings.cap_margin * settings.limits.max_impulse / mass;  // [m/s]
   const double dv = impulse.dv_rtn.norm();
   if (dv <= cap) {
-    const Eigen::Matrix<double, 6, 3> effect = impulse_effect(chief_mean_t0, impulse.t, impulse.t, settings.gravity);
-    return Split{{impulse}, effect, effect * impulse.dv_rtn};
+    w.effects.resize(6, 3);
+    w.effects = impulse_effect(chief_mean_t0, impulse.t, impulse.t, settings.gravity);
+    w.target = w.effects * impulse.dv_rtn;
+    pieces_.push_back(impulse);
+    return true;
   }
-  for (int pieces = std::max(2, static_cast<int>(std::ceil(dv / cap))); pieces <= settings.max_pieces; ++pieces) {
-    const std::vector<double> times = piece_times(impulse.t, pieces, settings.limits.spacing);
-    const double t_ref = times.back();
-    Split out{std::vector<Impulse>(times.size()), stacked_effects(chief_mean_t0, times, t_ref, settings.gravity),
-              impulse_effect(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn};
+  for (int count = std::max(2, static_cast<int>(std::ceil(dv / cap))); count <= settings.max_pieces; ++count) {
+    // Piece times centred on the planned time.
+    const auto time = [&](int j) { return impulse.t + (j - 0.5 * (count - 1)) * settings.limits.spacing; };
+    const double t_ref = time(count - 1);
+    w.effects.resize(6, 3 * count);
+    for (int j = 0; j < count; ++j) w.effects.middleCols<3>(3 * j) = impulse_effect(chief_mean_t0, time(j), t_ref, settings.gravity);
+    w.target = impulse_effect(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn;
     // Minimum-norm solution of effects x = target (full row rank for >= 2 distinct times).
-    const Eigen::VectorXd x = out.effects.completeOrthogonalDecomposition().solve(out.target);
+    w.cod.compute(w.effects);
+    w.x = w.cod.solve(w.target);
+    pieces_.clear();
     bool within_cap = true;
-    for (std::size_t j = 0; j < times.size(); ++j) {
-      out.pieces[j] = {times[j], x.segment<3>(3 * static_cast<Eigen::Index>(j))};
-      within_cap = within_cap && out.pieces[j].dv_rtn.norm() <= cap;
+    for (int j = 0; j < count; ++j) {
+      pieces_.push_back({time(j), w.x.segment<3>(3 * j)});
+      within_cap = within_cap && pieces_.back().dv_rtn.norm() <= cap;
     }
-    if (within_cap) return out;
+    if (within_cap) return true;
   }
   return core::Error{"maneuver.dv_rtn", "needs more than max_pieces = " + std::to_string(settings.max_pieces) +
                                             " pieces of at most " + std::to_string(settings.limits.max_impulse) +
                                             " N s"};
 }
 
-}  // namespace
-
-core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
-                                                 double mass, const BufferSettings& settings) {
-  auto result = split(chief_mean_t0, impulse, mass, settings);
-  if (!result) return result.error();
-  return std::move(result).value().pieces;
-}
-
-core::Result<BufferedManeuver> buffer_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
-                                              double mass, const BufferSettings& settings) {
-  auto result = split(chief_mean_t0, impulse, mass, settings);
-  if (!result) return result.error();
-  Split parts = std::move(result).value();
-  std::vector<Impulse>& pieces = parts.pieces;
-  const Eigen::MatrixXd& b = parts.effects;
+core::Result<bool> ImpulseBuffer::buffer(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+                                         double mass, const BufferSettings& settings) {
+  if (auto ok = split(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
+  Work& w = *work_;
   const ActuatorLimits& limits = settings.limits;
-
   // Quantise piece j, then give what its rounding left to the pieces after it.
-  astro::RelativeOrbitalElements remaining = parts.target;
-  const auto n = static_cast<Eigen::Index>(pieces.size());
+  astro::RelativeOrbitalElements remaining = w.target;
+  const auto n = static_cast<Eigen::Index>(pieces_.size());
   for (Eigen::Index j = 0; j < n; ++j) {
-    Impulse& piece = pieces[static_cast<std::size_t>(j)];
+    Impulse& piece = pieces_[static_cast<std::size_t>(j)];
     const double impulse_ns = mass * piece.dv_rtn.norm();
     double quantised = limits.quantum > 0.0 ? std::round(impulse_ns / limits.quantum) * limits.quantum : impulse_ns;
     if (quantised > limits.max_impulse) quantised -= limits.quantum;
     if (quantised < limits.min_impulse) quantised = 0.0;
     piece.dv_rtn = impulse_ns > 0.0 ? Eigen::Vector3d(piece.dv_rtn * (quantised / impulse_ns)) : Eigen::Vector3d::Zero();
-    remaining -= b.middleCols<3>(3 * j) * piece.dv_rtn;
+    remaining -= w.effects.middleCols<3>(3 * j) * piece.dv_rtn;
     if (j + 1 < n) {
-      const Eigen::MatrixXd rest = b.rightCols(3 * (n - j - 1));
-      const Eigen::VectorXd x = rest.completeOrthogonalDecomposition().solve(remaining);
-      for (Eigen::Index k = j + 1; k < n; ++k) pieces[static_cast<std::size_t>(k)].dv_rtn = x.segment<3>(3 * (k - j - 1));
+      w.rest = w.effects.rightCols(3 * (n - j - 1));
+      w.cod.compute(w.rest);
+      w.x = w.cod.solve(remaining);
+      for (Eigen::Index k = j + 1; k < n; ++k) pieces_[static_cast<std::size_t>(k)].dv_rtn = w.x.segment<3>(3 * (k - j - 1));
     }
   }
-  BufferedManeuver out;
-  for (const Impulse& p : pieces) {
-    if (p.dv_rtn.squaredNorm() > 0.0) out.pieces.push_back(p);
+  result_.pieces.clear();
+  for (const Impulse& p : pieces_) {
+    if (p.dv_rtn.squaredNorm() > 0.0) result_.pieces.push_back(p);
   }
-  out.residual_roe_m = chief_mean_t0.a * remaining;
-  out.dv_total = total_delta_v(out.pieces);
-  return out;
+  result_.residual_roe_m = chief_mean_t0.a * remaining;
+  result_.dv_total = total_delta_v(result_.pieces);
+  return true;
+}
+
+core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+                                                 double mass, const BufferSettings& settings) {
+  ImpulseBuffer buffer;
+  if (auto ok = buffer.split(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
+  return buffer.pieces();
+}
+
+core::Result<BufferedManeuver> buffer_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+                                              double mass, const BufferSettings& settings) {
+  ImpulseBuffer buffer;
+  if (auto ok = buffer.buffer(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
+  return buffer.result();
 }
 
 }  // namespace visors::control

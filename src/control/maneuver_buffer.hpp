@@ -24,6 +24,7 @@
 // (iii) caps the 1-norm of the pieces before the compensation is added. The minimum-norm solve has
 // none of these problems and covers the eccentric, J2 case the paper's closed forms do not.
 
+#include <memory>
 #include <vector>
 
 #include "astro/keplerian_elements.hpp"
@@ -55,6 +56,36 @@ struct BufferedManeuver {
   /// (from the quantisation of the last piece and dropped sub-minimum pieces).
   Eigen::Matrix<double, 6, 1> residual_roe_m = Eigen::Matrix<double, 6, 1>::Zero();
   double dv_total = 0.0;  // sum of the pieces' |dv| [m/s]
+};
+
+/// The buffer with its storage sized once (at most kMaxBufferPieces pieces; fixed-capacity
+/// matrices and decompositions, reserved piece vectors), so buffering an impulse allocates
+/// nothing: the flight component's form. buffer_impulse and split_impulse below wrap it.
+inline constexpr int kMaxBufferPieces = 99;
+
+class ImpulseBuffer {
+ public:
+  ImpulseBuffer();
+  ImpulseBuffer(ImpulseBuffer&&) noexcept;
+  ImpulseBuffer& operator=(ImpulseBuffer&&) noexcept;
+  ~ImpulseBuffer();
+
+  /// The unquantised split into pieces() (as split_impulse). Errors as buffer_impulse, and
+  /// "max_pieces" above kMaxBufferPieces.
+  core::Result<bool> split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
+                           const BufferSettings& settings);
+  /// The split, quantised, into result() (as buffer_impulse).
+  core::Result<bool> buffer(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
+                            const BufferSettings& settings);
+
+  [[nodiscard]] const std::vector<Impulse>& pieces() const { return pieces_; }
+  [[nodiscard]] const BufferedManeuver& result() const { return result_; }
+
+ private:
+  struct Work;  // the fixed-capacity matrices (kept out of the header)
+  std::vector<Impulse> pieces_;
+  BufferedManeuver result_;
+  std::unique_ptr<Work> work_;  // one allocation at construction (~50 kB of matrices)
 };
 
 /// Splits `impulse` (t since the epoch of `chief_mean_t0`, the chief's mean elements at t = 0)

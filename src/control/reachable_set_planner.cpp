@@ -162,6 +162,19 @@ core::Result<ManeuverPlan> ReachableSetPlanner::plan(const astro::KeplerianEleme
                                                      const astro::RelativeOrbitalElements& roe0,
                                                      const astro::RelativeOrbitalElements& roe_target,
                                                      double t_earliest, double tf) {
+  ManeuverPlan result;
+  result.impulses.reserve(static_cast<std::size_t>(settings_.max_impulses));
+  if (auto ok = plan_into(result, chief_mean_t0, roe0, roe_target, t_earliest, tf); !ok) return ok.error();
+  return result;
+}
+
+core::Result<bool> ReachableSetPlanner::plan_into(ManeuverPlan& result, const astro::KeplerianElements& chief_mean_t0,
+                                                  const astro::RelativeOrbitalElements& roe0,
+                                                  const astro::RelativeOrbitalElements& roe_target, double t_earliest,
+                                                  double tf) {
+  result.impulses.clear();
+  result.dv_total = 0.0;
+  result.dv_lower_bound = 0.0;
   const ReachableSetSettings& s = settings_;
   Workspace& w = *work_;
   stats_ = ReachableSetStats{};
@@ -187,10 +200,9 @@ core::Result<ManeuverPlan> ReachableSetPlanner::plan(const astro::KeplerianEleme
   const astro::RelativeOrbitalElements drift = phi_f0 * roe0;
   const Eigen::Matrix<double, 6, 1> w_m = a * (roe_target - drift);
   const double w_norm = w_m.norm();
-  ManeuverPlan result;
   result.roe_final_predicted = drift;
   if (!std::isfinite(w_norm)) return invalid("roe_target", "pseudostate is not finite");
-  if (w_norm <= 1e-12 * a * std::max(roe_target.norm(), 1e-9)) return result;  // already on target
+  if (w_norm <= 1e-12 * a * std::max(roe_target.norm(), 1e-9)) return true;  // already on target
   const Eigen::Matrix<double, 6, 1> w_hat = w_m / w_norm;
   // dv [m/s] = (scaled dv) * n * |a w|: sum (n B_k)(dv_k / (n |a w|)) = a w / |a w|.
   const double dv_scale = n * w_norm;
@@ -442,7 +454,6 @@ core::Result<ManeuverPlan> ReachableSetPlanner::plan(const astro::KeplerianEleme
   }
 
   // ---- The plan, in m/s, sorted by time.
-  result.impulses.reserve(static_cast<std::size_t>(count));
   Eigen::Matrix<double, 6, 1> reached = Eigen::Matrix<double, 6, 1>::Zero();
   for (int j = 0; j < count; ++j) {
     const Eigen::Vector3d dv = w.cand_dv[static_cast<std::size_t>(j)] * dv_scale;
@@ -453,7 +464,7 @@ core::Result<ManeuverPlan> ReachableSetPlanner::plan(const astro::KeplerianEleme
   result.dv_total = total_delta_v(result.impulses);
   if (!std::isfinite(result.dv_total)) return invalid("solver", "non-finite plan");
   result.roe_final_predicted = drift + reached * (w_norm / a);
-  return result;
+  return true;
 }
 
 }  // namespace visors::control

@@ -45,7 +45,7 @@
 //    KKT), and a dense G for ConicSolver would take 90 MB; hence the dual with a working set.
 //
 // Allocation: create() sizes every buffer (grid, working set, one small solver per candidate
-// count); plan() allocates only the returned impulse vector (and error messages).
+// count); plan() allocates only the returned impulse vector (and error messages); plan_into() nothing.
 
 #include <memory>
 #include <vector>
@@ -117,6 +117,11 @@ class ReachableSetPlanner {
                                   const astro::RelativeOrbitalElements& roe0,
                                   const astro::RelativeOrbitalElements& roe_target, double t_earliest,
                                   double tf);
+  /// The same into `result` (its impulse vector cleared and refilled: with capacity for
+  /// max_impulses, nothing is allocated). On error `result` is unspecified.
+  core::Result<bool> plan_into(ManeuverPlan& result, const astro::KeplerianElements& chief_mean_t0,
+                               const astro::RelativeOrbitalElements& roe0,
+                               const astro::RelativeOrbitalElements& roe_target, double t_earliest, double tf);
 
   [[nodiscard]] const ReachableSetSettings& settings() const { return settings_; }
   [[nodiscard]] const ReachableSetStats& stats() const { return stats_; }

@@ -1,6 +1,7 @@
 #include "control/stochastic_mpc.hpp"
 #include "control/impulse_effect.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -30,7 +31,11 @@ bool symmetric_psd(const Matrix6d& m, bool strictly) {
 }  // namespace
 
 StochasticMpc::StochasticMpc(const StochasticMpcSettings& settings, ReachableSetPlanner planner)
-    : settings_(settings), planner_(std::move(planner)) {}
+    : settings_(settings), planner_(std::move(planner)) {
+  const auto capacity = static_cast<std::size_t>(std::max(settings.planner.max_impulses, 1));
+  plan_.impulses.reserve(capacity);
+  fresh_.impulses.reserve(capacity);
+}
 
 core::Result<StochasticMpc> StochasticMpc::create(const StochasticMpcSettings& s) {
   if (!(s.mahalanobis_threshold > 0.0) || !std::isfinite(s.mahalanobis_threshold)) {
@@ -59,13 +64,21 @@ core::Result<bool> StochasticMpc::set_target(const astro::RelativeOrbitalElement
   tf_ = tf;
   has_target_ = true;
   has_plan_ = false;
-  plan_ = ManeuverPlan{};
+  plan_.impulses.clear();  // keeps its capacity
   return true;
 }
 
 core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElements& chief_mean_t,
                                           const astro::RelativeOrbitalElements& roe_estimate,
                                           const Matrix6d& covariance) {
+  MpcStep out;
+  if (auto ok = step_into(out, t, chief_mean_t, roe_estimate, covariance); !ok) return ok.error();
+  return out;
+}
+
+core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
+                                            const astro::RelativeOrbitalElements& roe_estimate,
+                                            const Matrix6d& covariance) {
   if (!has_target_) return invalid("target", "set_target() was not called");
   if (!std::isfinite(t) || t < last_t_ || t > tf_) return invalid("t", "must be finite, non-decreasing and <= tf");
   const auto chief_ok = astro::validate_keplerian(chief_mean_t);
@@ -93,7 +106,7 @@ core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElemen
     }
   };
 
-  MpcStep out;
+  out.replanned = false;
   Eigen::Matrix<double, 6, 1> mean;
   Matrix6d cov;
   predict(mean, cov);
@@ -109,18 +122,19 @@ core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElemen
   const bool frozen = tau < settings_.freeze_time_s;
   if ((!has_plan_ || out.mahalanobis > settings_.mahalanobis_threshold) && !frozen) {
     const double t_earliest = std::min(settings_.burn_latency_s, tau);
-    auto fresh = planner_.plan(chief_mean_t, roe_estimate, target_, t_earliest, tau);
-    if (!fresh.ok()) return fresh.error();
-    plan_ = std::move(fresh).value();
+    // Into the spare plan, swapped in on success (the previous plan stays on failure); both keep
+    // their reserved capacity, so replanning allocates nothing.
+    if (auto ok = planner_.plan_into(fresh_, chief_mean_t, roe_estimate, target_, t_earliest, tau); !ok) return ok.error();
+    std::swap(plan_, fresh_);
     for (Impulse& imp : plan_.impulses) imp.t += t;
     has_plan_ = true;
     ++replans_;
     out.replanned = true;
     predict(mean, cov);
   }
-  out.remaining = plan_.impulses;
+  out.remaining.assign(plan_.impulses.begin(), plan_.impulses.end());
   out.roe_final_predicted = mean;
-  return out;
+  return true;
 }
 
 }  // namespace visors::control

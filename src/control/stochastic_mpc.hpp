@@ -76,6 +76,11 @@ class StochasticMpc {
   core::Result<MpcStep> step(double t, const astro::KeplerianElements& chief_mean_t,
                              const astro::RelativeOrbitalElements& roe_estimate,
                              const Eigen::Matrix<double, 6, 6>& covariance);
+  /// The same into `out` (out.remaining cleared and refilled: given capacity for the planner's
+  /// max_impulses, a step allocates nothing, replanning included).
+  core::Result<bool> step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
+                               const astro::RelativeOrbitalElements& roe_estimate,
+                               const Eigen::Matrix<double, 6, 6>& covariance);
 
   /// The current plan (absolute impulse times; executed impulses are dropped at each step).
   [[nodiscard]] const ManeuverPlan& plan() const { return plan_; }
@@ -88,6 +93,7 @@ class StochasticMpc {
   StochasticMpcSettings settings_;
   ReachableSetPlanner planner_;
   ManeuverPlan plan_;
+  ManeuverPlan fresh_;  // the replanning target, swapped with plan_ on success
   bool has_plan_ = false;
   bool has_target_ = false;
   astro::RelativeOrbitalElements target_ = astro::RelativeOrbitalElements::Zero();

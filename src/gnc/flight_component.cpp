@@ -37,6 +37,9 @@ core::Result<FlightComponent> FlightComponent::create(const GncConfig& config) {
 FlightComponent::FlightComponent(const GncConfig& config, control::StochasticMpc mpc)
     : config_(config), mpc_(std::move(mpc)), queue_(kQueueCapacity), active_(config.active), mass_kg_(config.mass_kg) {
   waypoints_.reserve(kMaxWaypoints);
+  plan_.impulses.reserve(control::kMaxClosedFormImpulses);
+  ls_plan_.plan.impulses.reserve(control::kMaxLeastSquaresBurns);
+  mpc_step_.remaining.reserve(static_cast<std::size_t>(config.science.mpc.planner.max_impulses));
 }
 
 GncOutputs FlightComponent::step(const GncInputs& inputs) {
@@ -203,27 +206,21 @@ void FlightComponent::run_control(GncOutputs& out) {
   }
 }
 
-bool FlightComponent::replace_plan(const core::Result<std::vector<control::Impulse>>& impulses) {
-  if (impulses.ok()) {
-    queue_.clear();
-    const auto added = queue_.add(estimate_->t, estimate_->chief_mean, *impulses, mass_kg_, config_.buffer);
-    if (added.ok()) {
-      ++telemetry_.plans;
-      consecutive_failures_ = 0;
-      return true;
-    }
+bool FlightComponent::replace_plan(std::span<const control::Impulse> impulses) {
+  queue_.clear();
+  if (queue_.add(estimate_->t, estimate_->chief_mean, impulses, mass_kg_, config_.buffer).ok()) {
+    ++telemetry_.plans;
+    consecutive_failures_ = 0;
+    return true;
   }
-  ++telemetry_.planning_failures;
-  ++consecutive_failures_;
+  planning_failed();
   return false;
 }
 
-namespace {
-core::Result<std::vector<control::Impulse>> impulses_of(const core::Result<control::ManeuverPlan>& plan) {
-  if (!plan.ok()) return plan.error();
-  return plan->impulses;
+void FlightComponent::planning_failed() {
+  ++telemetry_.planning_failures;
+  ++consecutive_failures_;
 }
-}  // namespace
 
 void FlightComponent::run_standby() {
   if (!queue_.empty()) return;
@@ -240,18 +237,21 @@ void FlightComponent::run_standby() {
   control::ClosedFormSettings settings;
   settings.earliest_burn = config_.burn_latency_s;
   const double tf = config_.standby_keeping.plan_orbits * chief_period_s();
-  replace_plan(impulses_of(control::plan_closed_form(estimate_->chief_mean, estimate_->roe_mean, target, tf, settings,
-                                                     config_.gravity)));
+  if (control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, target, tf, settings, config_.gravity).ok()) {
+    replace_plan(plan_.impulses);
+  } else {
+    planning_failed();
+  }
 }
 
 bool FlightComponent::start_transfer(const astro::RelativeOrbitalElements& target) {
-  auto waypoints = control::transfer_waypoints(estimate_->roe_mean, target, config_.transfer.waypoints);
-  if (!waypoints.ok() || waypoints->empty() || waypoints->size() > static_cast<std::size_t>(kMaxWaypoints)) {
-    ++telemetry_.planning_failures;
-    ++consecutive_failures_;
+  // At most kMaxWaypoints legs (reserved): more would mean a degenerate geometry.
+  const auto legs = control::transfer_waypoints_into(waypoints_, estimate_->roe_mean, target, config_.transfer.waypoints);
+  if (!legs.ok() || waypoints_.empty() || *legs > kMaxWaypoints) {
+    waypoints_.clear();
+    planning_failed();
     return false;
   }
-  waypoints_.assign(waypoints->begin(), waypoints->end());
   leg_ = 0;
   leg_planned_ = false;
   return true;
@@ -265,8 +265,13 @@ bool FlightComponent::plan_leg() {
   settings.normal_burns = config_.transfer.normal_burns;
   leg_end_ = estimate_->t + tf;
   leg_planned_ = true;
-  return replace_plan(impulses_of(control::plan_closed_form(estimate_->chief_mean, estimate_->roe_mean,
-                                                            waypoints_[leg_], tf, settings, config_.gravity)));
+  if (!control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, waypoints_[leg_], tf, settings,
+                                      config_.gravity)
+           .ok()) {
+    planning_failed();
+    return false;
+  }
+  return replace_plan(plan_.impulses);
 }
 
 void FlightComponent::run_transfer() {
@@ -279,8 +284,7 @@ void FlightComponent::run_transfer() {
       }
       const auto next = next_observation(estimate_->chief_mean, estimate_->t, 1, config_.science, config_.gravity);
       if (!next.ok()) {
-        ++telemetry_.planning_failures;
-        ++consecutive_failures_;
+        planning_failed();
         return;
       }
       target = next->roe_target;
@@ -304,8 +308,7 @@ bool FlightComponent::schedule_observation(GncOutputs& out) {
   const auto next = next_observation(estimate_->chief_mean, estimate_->t, observations_done_ + 1, config_.science,
                                      config_.gravity);
   if (!next.ok()) {
-    ++telemetry_.planning_failures;
-    ++consecutive_failures_;
+    planning_failed();
     return false;
   }
   if (!mpc_started_) mpc_epoch_ = estimate_->t;
@@ -320,10 +323,7 @@ bool FlightComponent::schedule_observation(GncOutputs& out) {
   const astro::RoeStm phi = astro::j2_roe_stm(chief_ls, window, config_.gravity);
   const astro::RelativeOrbitalElements roe_ls = phi.partialPivLu().solve(next->roe_target);
   const core::GpsTime handover = next->aligned - window;
-  if (!mpc_.set_target(roe_ls, handover.seconds_since(mpc_epoch_)).ok()) {
-    ++telemetry_.planning_failures;
-    ++consecutive_failures_;
-  }
+  if (!mpc_.set_target(roe_ls, handover.seconds_since(mpc_epoch_)).ok()) planning_failed();
   mpc_started_ = true;
   last_mpc_ = now_ - 2.0 * config_.science.mpc_period_s;  // plan at once
   ls_planned_ = false;
@@ -356,16 +356,13 @@ void FlightComponent::science_mpc() {
   if (since(last_mpc_) < config_.science.mpc_period_s) return;
   last_mpc_ = now_;
   const double t = estimate_->t.seconds_since(mpc_epoch_);
-  const auto step = mpc_.step(t, estimate_->chief_mean, estimate_->roe_mean, estimate_->roe_covariance);
-  if (!step.ok()) {
-    ++telemetry_.planning_failures;
-    ++consecutive_failures_;
+  if (!mpc_.step_into(mpc_step_, t, estimate_->chief_mean, estimate_->roe_mean, estimate_->roe_covariance).ok()) {
+    planning_failed();
     return;
   }
-  if (!step->replanned) return;
-  std::vector<control::Impulse> impulses = step->remaining;
-  for (auto& impulse : impulses) impulse.t -= t;  // since the estimate time, the queue's epoch
-  replace_plan(impulses);
+  if (!mpc_step_.replanned) return;
+  for (auto& impulse : mpc_step_.remaining) impulse.t -= t;  // since the estimate time, the queue's epoch
+  replace_plan(mpc_step_.remaining);
 }
 
 void FlightComponent::science_fine_control() {
@@ -393,14 +390,14 @@ void FlightComponent::science_fine_control() {
     replan_last_burn(target, burns[0], to_aligned);
     return;
   }
-  const auto plan = control::plan_least_squares(estimate_->chief_mean, estimate_->roe_mean, target, to_aligned,
-                                                std::span<const double>(burns, static_cast<std::size_t>(count)),
-                                                config_.science.least_squares, config_.gravity);
-  if (!plan.ok()) {
-    replace_plan(plan.error());
+  if (!control::plan_least_squares_into(ls_plan_, estimate_->chief_mean, estimate_->roe_mean, target, to_aligned,
+                                        std::span<const double>(burns, static_cast<std::size_t>(count)),
+                                        config_.science.least_squares, config_.gravity)
+           .ok()) {
+    planning_failed();
     return;
   }
-  replace_plan(plan->plan.impulses);
+  replace_plan(ls_plan_.plan.impulses);
 }
 
 // One burn left: three unknowns cannot fix the six ROE, so the burn minimises the alignment
@@ -419,10 +416,11 @@ void FlightComponent::replan_last_burn(const astro::RelativeOrbitalElements& tar
   const Eigen::Matrix3d normal = m.transpose() * m;
   const Eigen::LDLT<Eigen::Matrix3d> ldlt(normal);
   if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) {
-    replace_plan(core::Error{"last_burn", "singular geometry"});
+    planning_failed();
     return;
   }
-  replace_plan(std::vector<control::Impulse>{control::Impulse{t_burn, ldlt.solve(m.transpose() * miss)}});
+  single_[0] = control::Impulse{t_burn, ldlt.solve(m.transpose() * miss)};
+  replace_plan(single_);
 }
 
 astro::RelativeOrbitalElements FlightComponent::drag_drift(double to_aligned) const {
@@ -443,11 +441,12 @@ void FlightComponent::run_escape() {
     const auto escape = safety::plan_escape(estimate_->chief_mean, estimate_->roe_mean, estimate_->roe_covariance,
                                             config_.burn_latency_s, config_.escape, config_.gravity);
     if (!escape.ok()) {
-      replace_plan(escape.error());
+      planning_failed();
       escape_planned_ = false;  // try again at the next step with a fresh estimate
       return;
     }
-    replace_plan(std::vector<control::Impulse>{escape->impulse});
+    single_[0] = escape->impulse;
+    replace_plan(single_);
     return;
   }
   if (queue_.empty() && queue_.has_released()) enter(Mode::manual);

@@ -26,12 +26,19 @@
 //
 // Robustness: every input is validated (messages.hpp) and a bad one counted and dropped; no
 // exception leaves step(); a planner failure is counted, the previous plan kept, and repeated
-// failures raise gnc_incapable. Storage is sized at creation; the planners themselves still
-// allocate their result vectors when they run (a replanning step), a routine step does not.
+// failures raise gnc_incapable. Memory: storage is sized at creation and the planners write into
+// reserved outputs (plan_closed_form_into, plan_least_squares_into, StochasticMpc::step_into,
+// transfer_waypoints_into, control::ImpulseBuffer), so no step allocates, replanning included
+// (tests: RoutineStepAllocatesNothing, PlanningStepsAllocateNothing); only an error builds its
+// message text.
 
+#include <array>
 #include <memory>
 #include <optional>
+#include <span>
 
+#include "control/closed_form_planner.hpp"
+#include "control/least_squares_planner.hpp"
 #include "control/stochastic_mpc.hpp"
 #include "core/status.hpp"
 #include "gnc/differential_drag_estimator.hpp"
@@ -77,8 +84,10 @@ class FlightComponent {
   void science_fine_control();
   void science_mpc();
   void replan_last_burn(const astro::RelativeOrbitalElements& target, double t_burn, double to_aligned);
-  /// Buffers `impulses` (times since now) replacing what is queued; counts the plan or failure.
-  bool replace_plan(const core::Result<std::vector<control::Impulse>>& impulses);
+  /// Buffers `impulses` (times since the estimate) replacing what is queued; counts the plan or
+  /// the failure.
+  bool replace_plan(std::span<const control::Impulse> impulses);
+  void planning_failed();
   double chief_period_s() const;
   /// The mean-ROE change at `to_aligned` s (since the estimate) that the estimated differential
   /// drag produces from now on (midpoint quadrature of Phi Gamma a_T).
@@ -88,6 +97,11 @@ class FlightComponent {
   GncConfig config_;
   control::StochasticMpc mpc_;
   ManeuverQueue queue_;
+  // Planner outputs with their capacity reserved at creation, so replanning allocates nothing.
+  control::ManeuverPlan plan_;
+  control::LeastSquaresPlan ls_plan_;
+  control::MpcStep mpc_step_;
+  std::array<control::Impulse, 1> single_{};
   Mode mode_ = Mode::manual;
   bool active_ = true;
   double mass_kg_ = 0.0;

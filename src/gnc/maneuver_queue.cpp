@@ -9,7 +9,7 @@ ManeuverQueue::ManeuverQueue(int capacity) : capacity_(static_cast<std::size_t>(
 }
 
 core::Result<int> ManeuverQueue::add(core::GpsTime epoch, const astro::KeplerianElements& chief_mean_epoch,
-                                     const std::vector<control::Impulse>& impulses, double mass_kg,
+                                     std::span<const control::Impulse> impulses, double mass_kg,
                                      const control::BufferSettings& settings) {
   if (next_ > 0) {  // compact: released pieces are gone for good
     pieces_.erase(pieces_.begin(), pieces_.begin() + static_cast<std::ptrdiff_t>(next_));
@@ -17,15 +17,16 @@ core::Result<int> ManeuverQueue::add(core::GpsTime epoch, const astro::Keplerian
   }
   int added = 0;
   for (const control::Impulse& impulse : impulses) {
-    const auto buffered = control::buffer_impulse(chief_mean_epoch, impulse, mass_kg, settings);
-    if (!buffered.ok()) return buffered.error();
-    if (pieces_.size() + buffered->pieces.size() > capacity_) return core::Error{"queue", "more pieces than its capacity"};
-    for (const control::Impulse& piece : buffered->pieces) {
+    if (auto ok = buffer_.buffer(chief_mean_epoch, impulse, mass_kg, settings); !ok) return ok.error();
+    const auto& pieces = buffer_.result().pieces;
+    if (pieces_.size() + pieces.size() > capacity_) return core::Error{"queue", "more pieces than its capacity"};
+    for (const control::Impulse& piece : pieces) {
       pieces_.push_back({epoch + piece.t, piece.dv_rtn});
       ++added;
     }
   }
-  std::stable_sort(pieces_.begin(), pieces_.end(), [](const QueuedPiece& a, const QueuedPiece& b) { return a.t < b.t; });
+  // std::sort, not stable_sort: the latter takes a temporary buffer from the heap.
+  std::sort(pieces_.begin(), pieces_.end(), [](const QueuedPiece& a, const QueuedPiece& b) { return a.t < b.t; });
   return added;
 }
 

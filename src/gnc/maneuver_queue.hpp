@@ -10,6 +10,7 @@
 // Impulses are in the deputy convention (the OSC's velocity change, chief RTN); the component
 // flips the sign when the DSC is the one firing.
 
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -38,7 +39,7 @@ class ManeuverQueue {
   /// chief_mean_epoch the chief's mean elements there) for a spacecraft of `mass_kg` and appends
   /// the pieces, sorted by time. Errors: the buffer's, or "queue" when the capacity is exceeded.
   core::Result<int> add(core::GpsTime epoch, const astro::KeplerianElements& chief_mean_epoch,
-                        const std::vector<control::Impulse>& impulses, double mass_kg,
+                        std::span<const control::Impulse> impulses, double mass_kg,
                         const control::BufferSettings& settings);
   /// The next piece if its time has come (t >= piece time) and `spacing` seconds have passed since
   /// the last release.
@@ -53,6 +54,7 @@ class ManeuverQueue {
   [[nodiscard]] core::GpsTime last_release() const { return last_release_; }
 
  private:
+  control::ImpulseBuffer buffer_;
   std::vector<QueuedPiece> pieces_;
   std::size_t next_ = 0;
   std::size_t capacity_ = 0;

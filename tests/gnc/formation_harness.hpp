@@ -1,7 +1,8 @@
 #pragma once
 // Test support: navigation solutions of a formation given by mean elements, advanced by the
 // secular J2 model (astro::propagate_mean_j2) and converted to osculating Cartesian states, so
-// the flight component sees the relative orbit it is meant to see (no noise).
+// the flight component sees the relative orbit it is meant to see (no noise). Maneuvers of the
+// deputy can be applied (apply_deputy_dv), so a closed loop can run.
 
 #include <cmath>
 #include <numbers>
@@ -28,11 +29,20 @@ class FormationHarness {
     deputy_ = astro::deputy_from_roe(chief_mean, roe_m / chief_mean.a).value();
   }
 
+  /// An impulse of the deputy at t_s, GCRF [m/s]: its mean elements restart from the new state.
+  void apply_deputy_dv(double t_s, const Eigen::Vector3d& dv_gcrf) {
+    core::StateVector x = state(deputy_, t_s - deputy_epoch_s_);
+    x.v += dv_gcrf;
+    const auto osc = astro::cartesian_to_keplerian(x.r, x.v).value();
+    deputy_ = astro::mean_from_osculating(osc).value();
+    deputy_epoch_s_ = t_s;
+  }
+
   [[nodiscard]] NavigationSolution navigation(double t_s) const {
     NavigationSolution out;
     out.t = t0_ + t_s;
     out.chief_gcrf = state(chief_, t_s);
-    out.deputy_gcrf = state(deputy_, t_s);
+    out.deputy_gcrf = state(deputy_, t_s - deputy_epoch_s_);
     out.relative_covariance_rtn.setZero();
     out.relative_covariance_rtn.diagonal() << 3.3e-5, 3.3e-5, 3.3e-5, 8.3e-10, 8.3e-10, 8.3e-10;  // 1 cm, 50 um/s 3D
     return out;
@@ -53,6 +63,7 @@ class FormationHarness {
   }
 
   astro::KeplerianElements chief_, deputy_;
+  double deputy_epoch_s_ = 0.0;  // time of deputy_ since t0 [s]
   core::GpsTime t0_;
 };
 

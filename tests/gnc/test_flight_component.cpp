@@ -182,4 +182,35 @@ TEST(FlightComponent, RoutineStepAllocatesNothing) {
   EXPECT_EQ(allocations, 0);
 }
 
+// Flight-code memory rule, planning included: standby, the transfer to science, the science
+// MPC and least-squares loop, an observation and the return, in closed loop with the analytic
+// formation (the OSC's maneuvers applied), allocate nothing after the first step. (The first
+// step may: its safety check is the first.)
+TEST(FlightComponent, PlanningStepsAllocateNothing) {
+  auto c = make(Spacecraft::osc, true);
+  // Start on the science orbit guidance will pick, so the transfer is one leg.
+  ScienceSettings science_settings;
+  science_settings.geometry.north = choose_north_pole(test::mission_chief(), kT0, science_settings, {}).value();
+  const auto first = next_observation(test::mission_chief(), kT0, 1, science_settings, {}).value();
+  test::FormationHarness h(test::mission_chief(), test::mission_chief().a * first.roe_target, kT0);
+  auto in = h.inputs(0.0);
+  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  c.step(in);
+  long allocations = 0;
+  long plans = 0;
+  bool science = false;
+  for (int k = 1; k < 30000 && !(science && c.mode() == Mode::transfer_to_standby); ++k) {
+    auto i = h.inputs(k);
+    if (k == 1) i.command = command(1.0, GroundCommand::Kind::start_science, 1);
+    GncOutputs out;
+    allocations += visors::test::count_allocations([&] { out = c.step(i); });
+    if (out.maneuver) h.apply_deputy_dv(k, Eigen::Quaterniond::Identity() * out.maneuver->dv_body_mps);
+    science = science || out.mode == Mode::science;
+    plans = out.telemetry.plans;
+  }
+  EXPECT_TRUE(science);
+  EXPECT_GT(plans, 5);
+  EXPECT_EQ(allocations, 0);
+}
+
 }  // namespace

@@ -20,10 +20,12 @@ using visors::core::GpsTime;
 
 const GpsTime kT0 = GpsTime::from_seconds(1.4e9);
 
+std::vector<visors::control::Impulse> one_impulse(double t) { return {{t, Eigen::Vector3d(0, 5e-3, 0)}}; }
+
 // A 5 mm/s impulse needs three pieces of at most 0.98 * 2.2e-2 N s / 10.62 kg = 2.03 mm/s.
 TEST(ManeuverQueue, BuffersAnImpulseIntoPieces) {
   ManeuverQueue q;
-  const auto added = q.add(kT0, test::mission_chief(), {{1000.0, Eigen::Vector3d(0, 5e-3, 0)}}, 10.62, {});
+  const auto added = q.add(kT0, test::mission_chief(), one_impulse(1000.0), 10.62, {});
   ASSERT_TRUE(added.ok());
   EXPECT_EQ(q.pending(), 3);
 }
@@ -31,7 +33,7 @@ TEST(ManeuverQueue, BuffersAnImpulseIntoPieces) {
 // Releases respect the 46.5 s plenum refill even when pieces are already due.
 TEST(ManeuverQueue, ReleasesRespectTheRefillSpacing) {
   ManeuverQueue q;
-  ASSERT_TRUE(q.add(kT0, test::mission_chief(), {{0.0, Eigen::Vector3d(0, 5e-3, 0)}}, 10.62, {}).ok());
+  ASSERT_TRUE(q.add(kT0, test::mission_chief(), one_impulse(0.0), 10.62, {}).ok());
   const GpsTime late = kT0 + 1000.0;
   q.pop(late);
   EXPECT_FALSE(q.due(late + 46.0, 46.5));
@@ -39,7 +41,7 @@ TEST(ManeuverQueue, ReleasesRespectTheRefillSpacing) {
 
 TEST(ManeuverQueue, ClearDropsWhatWasNotReleased) {
   ManeuverQueue q;
-  ASSERT_TRUE(q.add(kT0, test::mission_chief(), {{1000.0, Eigen::Vector3d(0, 5e-3, 0)}}, 10.62, {}).ok());
+  ASSERT_TRUE(q.add(kT0, test::mission_chief(), one_impulse(1000.0), 10.62, {}).ok());
   q.clear();
   EXPECT_TRUE(q.empty());
 }
