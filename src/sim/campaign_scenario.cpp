@@ -193,11 +193,12 @@ core::Result<bool> read_links_and_faults(const toml::table& root, CampaignScenar
     s.crosslink_drop_probability = drop;
   }
   if (const toml::table* f = table_at(root, "fault")) {
-    if (auto e = check_keys(*f, "fault", {"impulse_t_s", "impulse_dv_rtn_mps"})) return *e;
+    if (auto e = check_keys(*f, "fault", {"impulse_t_s", "impulse_dv_rtn_mps", "non_gnc_fault_t_s"})) return *e;
     VISORS_TRY(t, number_at(*f, "fault", "impulse_t_s", s.fault.impulse_t_s));
     VISORS_TRY(dv, vector3_at(*f, "fault", "impulse_dv_rtn_mps", s.fault.impulse_dv_rtn_mps));
+    VISORS_TRY(non_gnc, number_at(*f, "fault", "non_gnc_fault_t_s", s.fault.non_gnc_fault_t_s));
     if (dv.norm() > 1.0) return Error{"fault.impulse_dv_rtn_mps", "must be below 1 m/s"};
-    s.fault = FaultSettings{t, dv};
+    s.fault = FaultSettings{t, dv, non_gnc};
   }
   return true;
 }
@@ -318,8 +319,9 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,
                      g.science.mpc_period_s, g.science.least_squares_window_s, g.safety.epsilon, g.safety.q_sigma,
                      g.safety.horizon_orbits, g.safety.check_period, g.escape.da_target, g.science.geometry.north);
-  out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\n\n", s.fault.impulse_t_s,
-                     s.fault.impulse_dv_rtn_mps(0), s.fault.impulse_dv_rtn_mps(1), s.fault.impulse_dv_rtn_mps(2));
+  out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\nnon_gnc_fault_t_s = {:.17g}\n\n",
+                     s.fault.impulse_t_s, s.fault.impulse_dv_rtn_mps(0), s.fault.impulse_dv_rtn_mps(1),
+                     s.fault.impulse_dv_rtn_mps(2), s.fault.non_gnc_fault_t_s);
   out += s.forces_toml;
   return out;
 }

@@ -45,6 +45,10 @@ struct FaultSettings {
   /// disabled when t_s < 0.
   double impulse_t_s = -1.0;
   Eigen::Vector3d impulse_dv_rtn_mps = Eigen::Vector3d::Zero();
+  /// A non-GNC fault reported to the host application at this time (e.g. a bus safe mode of the
+  /// passive spacecraft); disabled when < 0. The host's response (mission paper, FDIR): transfer
+  /// to standby when the formation is in science or transfer, otherwise a role switch.
+  double non_gnc_fault_t_s = -1.0;
 };
 
 struct CampaignScenario {

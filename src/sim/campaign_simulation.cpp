@@ -190,6 +190,8 @@ core::Result<RunResult> run_campaign(const CampaignScenario& s, const std::files
   const auto output_every = static_cast<std::int64_t>(std::llround(s.output_step_s / s.step_s));
   const auto science_step = static_cast<std::int64_t>(std::llround(s.standby_s / s.step_s));
   const auto fault_step = s.fault.impulse_t_s >= 0.0 ? static_cast<std::int64_t>(std::llround(s.fault.impulse_t_s / s.step_s)) : -1;
+  const auto non_gnc_fault_step =
+      s.fault.non_gnc_fault_t_s >= 0.0 ? static_cast<std::int64_t>(std::llround(s.fault.non_gnc_fault_t_s / s.step_s)) : -1;
   double ts = 0.0;
 
   for (std::int64_t k = 0; k <= steps_total; ++k) {
@@ -296,6 +298,21 @@ core::Result<RunResult> run_campaign(const CampaignScenario& s, const std::files
         } else {
           v.incapable_since = -1.0;
         }
+      }
+    }
+    if (k == non_gnc_fault_step) {
+      // Host FDIR for a non-GNC fault (mission paper): back to standby from science or transfer,
+      // else a role switch.
+      Vehicle& active_now = dsc.out.telemetry.active ? dsc : osc;
+      Vehicle& passive_now = dsc.out.telemetry.active ? osc : dsc;
+      const Mode mode_now = active_now.out.mode;
+      if (mode_now == Mode::science || mode_now == Mode::transfer_to_science) {
+        active_now.command = gnc::GroundCommand{t + s.step_s, gnc::GroundCommand::Kind::transfer_to_standby, 0};
+        recorder.event(ts, "sim", "fdir", "non-GNC fault: transfer to standby");
+      } else {
+        active_now.command = gnc::GroundCommand{t + s.step_s, gnc::GroundCommand::Kind::make_passive, 0};
+        passive_now.command = gnc::GroundCommand{t + s.step_s, gnc::GroundCommand::Kind::make_active, 0};
+        recorder.event(ts, "sim", "fdir", "non-GNC fault: role switch");
       }
     }
     if (k == fault_step) {

@@ -130,4 +130,28 @@ impulse_dv_rtn_mps = [0.0, 0.0, 0.02]
   EXPECT_EQ(result->summary["final_mode"].get<std::string>(), "manual");
 }
 
+// Mission paper, FDIR: a non-GNC fault during science makes the host send the formation back to
+// standby (it then runs the transfer to standby on its own).
+TEST(CampaignRun, NonGncFaultDuringScienceReturnsTowardsStandby) {
+  constexpr const char* kFault = R"(
+[formation]
+initial_roe_m = [0.015, 35.09, -34.77, 5.10, -19.09, 2.81]
+[campaign]
+standby_s = 60.0
+observations = 3
+tail_s = 60.0
+[time]
+max_duration_s = 11500.0
+[fault]
+non_gnc_fault_t_s = 11000.0
+)";
+  const auto dir = run_dir("non_gnc");
+  const auto result = run_campaign(campaign_from_toml(kFault).value(), dir);
+  ASSERT_TRUE(result.ok());
+  const std::string events = read(dir / "events.csv");
+  std::filesystem::remove_all(dir);
+  EXPECT_NE(events.find("non-GNC fault: transfer to standby"), std::string::npos);
+  EXPECT_EQ(result->summary["final_mode"].get<std::string>(), "transfer_to_standby");
+}
+
 }  // namespace
