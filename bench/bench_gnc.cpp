@@ -2,9 +2,10 @@
 // of a shortened closed-loop campaign.
 //   BM_FlightComponentStep/standby  one hour of 1 Hz steps in standby (estimate, safety check
 //                                   every 10 s, station-keeping checks and plans)
-//   BM_FlightComponentStep/science  from the science orbit: start_science, one 1.6-orbit transfer
+//   BM_FlightComponentStep/science  from the science orbit guidance picks, in closed loop with the
+//                                   analytic formation: start_science, one 1.6-orbit transfer
 //                                   leg, science mode, the MPC, least squares every 45 s, the
-//                                   last burn and the first observation (12,700 steps)
+//                                   last burn and the first observation (until the transfer back)
 // Each reports median_us, p999_us and max_us over the steps. The full campaign is timed with
 //   /usr/bin/time -v build/apps/visors run   (README "Performance").
 // Run: ninja -C build visors_bench_gnc && build/bench/visors_bench_gnc
@@ -33,27 +34,32 @@ void report(benchmark::State& state, std::vector<double> us) {
 
 void BM_FlightComponentStep(benchmark::State& state) {
   const bool science = state.range(0) == 1;
-  // Standby off its design by 15 m in de (station keeping plans); science: on the paper's
-  // science orbit, the first observation scheduled at once.
-  const auto roe = science ? test::roe_m(0.015, 35.09, -34.77, 5.10, -19.09, 2.81) : test::roe_m(0, 0, 0, 215, 0, 200);
-  test::FormationHarness harness(test::mission_chief(), roe, kT0);
-  const int steps = science ? 12700 : 3600;
-  std::vector<GncInputs> inputs;
-  inputs.reserve(static_cast<std::size_t>(steps));
-  for (int k = 0; k < steps; ++k) inputs.push_back(harness.inputs(k));
+  // Standby off its design by 15 m in de (station keeping plans); science: on the science orbit
+  // guidance picks, so the transfer is one leg.
+  ScienceSettings settings;
+  settings.geometry.north = choose_north_pole(test::mission_chief(), kT0, settings, {}).value();
+  const auto first = next_observation(test::mission_chief(), kT0, 1, settings, {}).value();
+  const Eigen::Matrix<double, 6, 1> roe =
+      science ? Eigen::Matrix<double, 6, 1>(test::mission_chief().a * first.roe_target) : test::roe_m(0, 0, 0, 215, 0, 200);
+  const int steps = science ? 30000 : 3600;
   std::vector<double> us;
+  us.reserve(static_cast<std::size_t>(steps));
   for (auto _ : state) {
-    GncConfig config;
-    auto component = FlightComponent::create(config).value();
-    std::vector<GncInputs> run = inputs;
-    run[0].command = GroundCommand{kT0, GroundCommand::Kind::to_standby, 0};
-    if (science) run[1].command = GroundCommand{kT0 + 1.0, GroundCommand::Kind::start_science, 1};
-    for (const auto& in : run) {
+    test::FormationHarness harness(test::mission_chief(), roe, kT0);
+    auto component = FlightComponent::create(GncConfig{}).value();
+    bool observed = false;
+    for (int k = 0; k < steps && !(observed && component.mode() == Mode::transfer_to_standby); ++k) {
+      GncInputs in = harness.inputs(k);
+      if (k == 0) in.command = GroundCommand{kT0, GroundCommand::Kind::to_standby, 0};
+      if (k == 1 && science) in.command = GroundCommand{kT0 + 1.0, GroundCommand::Kind::start_science, 1};
       const auto t0 = std::chrono::steady_clock::now();
-      benchmark::DoNotOptimize(component.step(in));
+      const GncOutputs out = component.step(in);
       us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+      if (out.maneuver) harness.apply_deputy_dv(k, out.maneuver->dv_body_mps);  // body = GCRF (identity attitude)
+      observed = observed || out.mode == Mode::science;
     }
   }
+  state.counters["steps"] = static_cast<double>(us.size());
   report(state, us);
 }
 BENCHMARK(BM_FlightComponentStep)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kMillisecond);
