@@ -25,6 +25,26 @@ std::string read(const std::filesystem::path& path) {
   return text.str();
 }
 
+// A run from the paper's science orbit with `extra` TOML appended (faults, durations): its summary
+// and event log; the run directory is removed.
+struct FaultRun {
+  nlohmann::json summary;
+  std::string events;
+};
+FaultRun run_from_science_orbit(const std::string& name, const std::string& extra) {
+  const std::string text = std::string(R"(
+[formation]
+initial_roe_m = [0.015, 35.09, -34.77, 5.10, -19.09, 2.81]
+)") + extra;
+  const auto dir = run_dir(name);
+  const auto result = run_campaign(campaign_from_toml(text).value(), dir);
+  FaultRun out;
+  if (result.ok()) out.summary = result->summary;
+  out.events = read(dir / "events.csv");
+  std::filesystem::remove_all(dir);
+  return out;
+}
+
 // Starting on the science orbit (the paper's test-case ROE), one transfer leg, then one attempt.
 constexpr const char* kScience = R"(
 name = "science_leg"
@@ -107,9 +127,7 @@ tail_s = 1500.0
 // cancels most of the delta-i separation) makes the host command the escape, which separates
 // the spacecraft and ends in manual mode.
 TEST(CampaignRun, ForcedViolationEscapesAndEndsInManual) {
-  constexpr const char* kEscape = R"(
-[formation]
-initial_roe_m = [0.015, 35.09, -34.77, 5.10, -19.09, 2.81]
+  const FaultRun run = run_from_science_orbit("escape", R"(
 [campaign]
 standby_s = 60.0
 observations = 3
@@ -119,23 +137,17 @@ max_duration_s = 20000.0
 [fault]
 impulse_t_s = 11000.0
 impulse_dv_rtn_mps = [0.0, 0.0, 0.02]
-)";
-  const auto dir = run_dir("escape");
-  const auto result = run_campaign(campaign_from_toml(kEscape).value(), dir);
-  ASSERT_TRUE(result.ok());
-  const std::string events = read(dir / "events.csv");
-  std::filesystem::remove_all(dir);
-  EXPECT_GE(result->summary["safety_violations"].get<int>(), 1);
-  EXPECT_NE(events.find("escape dv_rtn"), std::string::npos);
-  EXPECT_EQ(result->summary["final_mode"].get<std::string>(), "manual");
+)");
+  ASSERT_FALSE(run.summary.is_null());
+  EXPECT_GE(run.summary["safety_violations"].get<int>(), 1);
+  EXPECT_NE(run.events.find("escape dv_rtn"), std::string::npos);
+  EXPECT_EQ(run.summary["final_mode"].get<std::string>(), "manual");
 }
 
 // Mission paper, FDIR: a non-GNC fault during science makes the host send the formation back to
 // standby (it then runs the transfer to standby on its own).
 TEST(CampaignRun, NonGncFaultDuringScienceReturnsTowardsStandby) {
-  constexpr const char* kFault = R"(
-[formation]
-initial_roe_m = [0.015, 35.09, -34.77, 5.10, -19.09, 2.81]
+  const FaultRun run = run_from_science_orbit("non_gnc", R"(
 [campaign]
 standby_s = 60.0
 observations = 3
@@ -144,14 +156,10 @@ tail_s = 60.0
 max_duration_s = 11500.0
 [fault]
 non_gnc_fault_t_s = 11000.0
-)";
-  const auto dir = run_dir("non_gnc");
-  const auto result = run_campaign(campaign_from_toml(kFault).value(), dir);
-  ASSERT_TRUE(result.ok());
-  const std::string events = read(dir / "events.csv");
-  std::filesystem::remove_all(dir);
-  EXPECT_NE(events.find("non-GNC fault: transfer to standby"), std::string::npos);
-  EXPECT_EQ(result->summary["final_mode"].get<std::string>(), "transfer_to_standby");
+)");
+  ASSERT_FALSE(run.summary.is_null());
+  EXPECT_NE(run.events.find("non-GNC fault: transfer to standby"), std::string::npos);
+  EXPECT_EQ(run.summary["final_mode"].get<std::string>(), "transfer_to_standby");
 }
 
 }  // namespace
