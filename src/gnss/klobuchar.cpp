@@ -1,0 +1,56 @@
+#include "gnss/klobuchar.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/constants.hpp"
+
+namespace visors::gnss {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;  // the document's semicircle-to-radian factor
+constexpr double kDay = 86400.0;
+}  // namespace
+
+core::Result<double> klobuchar_delay_s(const KlobucharCoefficients& c, const KlobucharGeometry& g, core::GpsTime t) {
+  for (int n = 0; n < 4; ++n) {
+    if (!std::isfinite(c.alpha[static_cast<std::size_t>(n)])) return core::Error{"alpha", "must be finite"};
+    if (!std::isfinite(c.beta[static_cast<std::size_t>(n)])) return core::Error{"beta", "must be finite"};
+  }
+  if (!(std::abs(g.latitude) <= 0.5 * kPi)) return core::Error{"lat", "must be in [-pi/2, pi/2] rad"};
+  if (!std::isfinite(g.longitude)) return core::Error{"lon", "must be finite"};
+  if (!std::isfinite(g.azimuth)) return core::Error{"az", "must be finite"};
+  if (!(g.elevation >= 0.0 && g.elevation <= 0.5 * kPi)) return core::Error{"el", "must be in [0, pi/2] rad"};
+
+  // IS-GPS-200 Figure 20-4, in semicircles.
+  const double phi_u = g.latitude / kPi;
+  const double lambda_u = g.longitude / kPi;
+  const double e = g.elevation / kPi;
+  const double psi = 0.0137 / (e + 0.11) - 0.022;                        // Earth angle to the pierce point
+  const double phi_i = std::clamp(phi_u + psi * std::cos(g.azimuth), -0.416, 0.416);
+  const double lambda_i = lambda_u + psi * std::sin(g.azimuth) / std::cos(phi_i * kPi);
+  const double phi_m = phi_i + 0.064 * std::cos((lambda_i - 1.617) * kPi);  // geomagnetic latitude
+  // Local time at the pierce point [s], in [0, 86400): GPS time of day plus the longitude.
+  double local = 4.32e4 * lambda_i + std::fmod(t.seconds_of_week(), kDay);
+  local -= std::floor(local / kDay) * kDay;
+  double amplitude = 0.0, period = 0.0, power = 1.0;
+  for (int n = 0; n < 4; ++n) {
+    amplitude += c.alpha[static_cast<std::size_t>(n)] * power;
+    period += c.beta[static_cast<std::size_t>(n)] * power;
+    power *= phi_m;
+  }
+  amplitude = std::max(amplitude, 0.0);
+  period = std::max(period, 72000.0);
+  const double x = 2.0 * kPi * (local - 50400.0) / period;  // phase [rad]
+  const double obliquity = 1.0 + 16.0 * std::pow(0.53 - e, 3);
+  if (std::abs(x) >= 1.57) return obliquity * 5e-9;  // night-time constant
+  return obliquity * (5e-9 + amplitude * (1.0 - x * x / 2.0 + x * x * x * x / 24.0));
+}
+
+core::Result<double> klobuchar_delay_m(const KlobucharCoefficients& c, const KlobucharGeometry& g, core::GpsTime t) {
+  const auto delay = klobuchar_delay_s(c, g, t);
+  if (!delay.ok()) return delay.error();
+  return *delay * core::kSpeedOfLight;
+}
+
+}  // namespace visors::gnss

@@ -1,0 +1,68 @@
+// The broadcast ionospheric model against IS-GPS-200 (20.3.3.5.2.5, Figure 20-4) evaluated
+// independently: the document's step list written out in Python (/usr/bin/python3, double
+// precision) with the broadcast coefficients of the IGS file brdc1820.10n (2010-07-01, header
+// ION ALPHA / ION BETA). Each case's inputs and the value printed by that script are below.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "gnss/klobuchar.hpp"
+
+namespace {
+
+using visors::gnss::klobuchar_delay_m;
+using visors::gnss::KlobucharCoefficients;
+using visors::gnss::KlobucharGeometry;
+
+const KlobucharCoefficients kBrdc1820{{0.4657e-08, 0.1490e-07, -0.5960e-07, -0.1192e-06},
+                                      {0.8192e+05, 0.8192e+05, -0.6554e+05, -0.5243e+06}};
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// GPS week 1590, day 4 (2010-07-01), plus the time of day.
+visors::core::GpsTime at(double time_of_day) {
+  return visors::core::GpsTime::from_week_seconds(1590, 4 * 86400.0 + time_of_day).value();
+}
+
+double delay(double tod, double lat_deg, double lon_deg, double az_deg, double el_deg) {
+  return klobuchar_delay_m(kBrdc1820, KlobucharGeometry{lat_deg * kDeg, lon_deg * kDeg, az_deg * kDeg, el_deg * kDeg}, at(tod))
+      .value();
+}
+
+// Stanford (37.43 N, 122.17 W), 22:00 GPS = 13:50 local at the pierce point, south at 30 deg.
+TEST(Klobuchar, DaytimeMidLatitude) { EXPECT_NEAR(delay(79200.0, 37.43, -122.17, 180.0, 30.0), 4.67051046595555, 1e-9); }
+
+// Zenith, equator, Greenwich, 12:00: F = 1 + 16 (0.53 - 0.5)^3, cosine 2 h before its peak.
+TEST(Klobuchar, ZenithAtNoon) { EXPECT_NEAR(delay(43200.0, 0.0, 0.0, 0.0, 90.0), 2.778845759341267, 1e-9); }
+
+// Night (the local time of the pierce point is ~01:00): the 5 ns constant times F at 5 deg.
+TEST(Klobuchar, NightTimeConstantAtLowElevation) { EXPECT_NEAR(delay(0.0, 45.0, 10.0, 60.0, 5.0), 4.537037115715541, 1e-9); }
+
+// 78 N looking north: the pierce-point latitude is clamped to 0.416 semicircles.
+TEST(Klobuchar, HighLatitudeClamp) { EXPECT_NEAR(delay(30000.0, 78.0, 15.0, 0.0, 20.0), 3.26177921764685, 1e-9); }
+
+// Property of the model: at night the delay is F * 5 ns whatever the coefficients.
+TEST(Klobuchar, NightDelayIsFTimesFiveNanoseconds) {
+  const double e = 90.0 / 180.0;  // semicircles
+  const double f = 1.0 + 16.0 * std::pow(0.53 - e, 3);
+  EXPECT_NEAR(delay(0.0, 0.0, 0.0, 0.0, 90.0), f * 5e-9 * 299792458.0, 1e-12);
+}
+
+TEST(Klobuchar, ElevationBelowZeroIsRejected) {
+  const auto r = klobuchar_delay_m(kBrdc1820, KlobucharGeometry{0.0, 0.0, 0.0, -0.1}, at(0.0));
+  EXPECT_EQ(r.error().field, "el");
+}
+
+TEST(Klobuchar, LatitudeBeyondThePoleIsRejected) {
+  const auto r = klobuchar_delay_m(kBrdc1820, KlobucharGeometry{2.0, 0.0, 0.0, 0.5}, at(0.0));
+  EXPECT_EQ(r.error().field, "lat");
+}
+
+TEST(Klobuchar, NonFiniteCoefficientIsRejected) {
+  KlobucharCoefficients bad = kBrdc1820;
+  bad.beta[2] = std::nan("");
+  EXPECT_EQ(klobuchar_delay_m(bad, KlobucharGeometry{0.0, 0.0, 0.0, 0.5}, at(0.0)).error().field, "beta");
+}
+
+}  // namespace
