@@ -114,26 +114,30 @@ core::Result<bool> set_up_vehicle(Vehicle& v, const CampaignScenario& s, const S
   return true;
 }
 
-// Truth relative state for the time series: mean ROE (first-order J2 mean elements of both),
-// osculating ROE, RTN position and inertial velocity difference in RTN axes.
-TimeseriesRow truth_row(const core::StateVector& dsc, const core::StateVector& osc, const core::EarthGravityConstants& g) {
+// Truth relative geometry (every step: the minimum separations): RTN position and inertial
+// velocity difference in RTN axes, RN and 3D separations.
+TimeseriesRow truth_geometry(const core::StateVector& dsc, const core::StateVector& osc) {
   TimeseriesRow row;
-  const auto kc = astro::cartesian_to_keplerian(dsc.r, dsc.v, g.mu);
-  const auto kd = astro::cartesian_to_keplerian(osc.r, osc.v, g.mu);
-  if (kc.ok() && kd.ok()) {
-    if (const auto roe = astro::roe_from_keplerian(*kc, *kd); roe.ok()) row.roe_osc_m = kc->a * *roe;
-    const auto mc = astro::mean_from_osculating(*kc, g);
-    const auto md = astro::mean_from_osculating(*kd, g);
-    if (mc.ok() && md.ok()) {
-      if (const auto roe = astro::roe_from_keplerian(*mc, *md); roe.ok()) row.roe_mean_m = mc->a * *roe;
-    }
-  }
   const Eigen::Matrix3d to_rtn = core::gcrf_to_rtn_matrix(dsc);
   row.r_rtn_m = to_rtn * (osc.r - dsc.r);
   row.v_rtn_mps = to_rtn * (osc.v - dsc.v);
   row.sep_3d_m = row.r_rtn_m.norm();
   row.sep_rn_m = std::hypot(row.r_rtn_m(0), row.r_rtn_m(2));
   return row;
+}
+
+// Truth ROE for the time series (output steps only: the mean elements are iterated): osculating,
+// and mean through the first-order J2 mean elements of both spacecraft.
+void add_truth_roe(const core::StateVector& dsc, const core::StateVector& osc, const core::EarthGravityConstants& g,
+                   TimeseriesRow& row) {
+  const auto kc = astro::cartesian_to_keplerian(dsc.r, dsc.v, g.mu);
+  const auto kd = astro::cartesian_to_keplerian(osc.r, osc.v, g.mu);
+  if (!kc.ok() || !kd.ok()) return;
+  if (const auto roe = astro::roe_from_keplerian(*kc, *kd); roe.ok()) row.roe_osc_m = kc->a * *roe;
+  const auto mc = astro::mean_from_osculating(*kc, g);
+  const auto md = astro::mean_from_osculating(*kd, g);
+  if (!mc.ok() || !md.ok()) return;
+  if (const auto roe = astro::roe_from_keplerian(*mc, *md); roe.ok()) row.roe_mean_m = mc->a * *roe;
 }
 
 Eigen::Vector3d relative_velocity_body(const Vehicle& v) {
@@ -340,10 +344,11 @@ core::Result<RunResult> run_campaign(const CampaignScenario& s, const std::files
                                    1e3 * p.result.focus_error_m, ok ? "success" : "failure"));
       }
     }
-    TimeseriesRow row = truth_row(dsc.x_gcrf, osc.x_gcrf, g);
+    TimeseriesRow row = truth_geometry(dsc.x_gcrf, osc.x_gcrf);
     min_sep_rn = std::min(min_sep_rn, row.sep_rn_m);
     min_sep_3d = std::min(min_sep_3d, row.sep_3d_m);
     if (k % output_every == 0) {
+      add_truth_roe(dsc.x_gcrf, osc.x_gcrf, g, row);
       row.t_s = ts;
       row.mode = to_string(active.out.mode);
       row.active = active.name;
