@@ -100,14 +100,19 @@ std::string roe_figure(const RunData& run) {
 std::string ei_vector_figure(const RunData& run) {
   const Timeseries& ts = run.timeseries;
   Figure figure("fig-ei-vectors", kWidth, 400.0, 2);
-  Plot& e = figure.add(Plot("relative eccentricity vector", "a\u03b4e_x [m]", "a\u03b4e_y [m]"));
-  e.curve("osculating", ts.adex_osc, ts.adey_osc, kOsculating).curve("mean", ts.adex_mean, ts.adey_mean, kMean);
-  add_ends(e, ts.adex_mean, ts.adey_mean);
-  e.equal_aspect();
-  Plot& i = figure.add(Plot("relative inclination vector", "a\u03b4i_x [m]", "a\u03b4i_y [m]"));
-  i.curve("osculating", ts.adix_osc, ts.adiy_osc, kOsculating).curve("mean", ts.adix_mean, ts.adiy_mean, kMean);
-  add_ends(i, ts.adix_mean, ts.adiy_mean);
-  i.equal_aspect();
+  // One vector plane: osculating and mean curves, start and end marks, equal scales.
+  const auto plane = [&](const char* title, const char* x_label, const char* y_label, const std::vector<double>& x_osc,
+                         const std::vector<double>& y_osc, const std::vector<double>& x_mean,
+                         const std::vector<double>& y_mean) {
+    Plot& plot = figure.add(Plot(title, x_label, y_label));
+    plot.curve("osculating", x_osc, y_osc, kOsculating).curve("mean", x_mean, y_mean, kMean);
+    add_ends(plot, x_mean, y_mean);
+    plot.equal_aspect();
+  };
+  plane("relative eccentricity vector", "a\u03b4e_x [m]", "a\u03b4e_y [m]", ts.adex_osc, ts.adey_osc, ts.adex_mean,
+        ts.adey_mean);
+  plane("relative inclination vector", "a\u03b4i_x [m]", "a\u03b4i_y [m]", ts.adix_osc, ts.adiy_osc, ts.adix_mean,
+        ts.adiy_mean);
   return wrap("fig-ei-vectors", figure.svg("relative eccentricity and inclination vector planes"),
               "Relative e-vector (a\u03b4e_x, a\u03b4e_y) and i-vector (a\u03b4i_x, a\u03b4i_y) planes, mean "
               "(dark) and osculating (light grey), equal scales; circle: start, cross: end.");
