@@ -1,0 +1,26 @@
+#pragma once
+// Paths of the GNSS reference data (../shared/data/gnss, found through the data search path) and
+// the first usable record of a PRN, for the gnss tests.
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/data_path.hpp"
+
+namespace visors::test {
+
+inline std::filesystem::path gnss_data(const std::string& relative) {
+  const auto path = core::find_data_file("gnss/" + relative);
+  return path.value_or(std::filesystem::path("gnss") / relative);
+}
+
+inline constexpr const char* kBrdc20100701 = "igs-2010-07-01/brdc1820.10n";
+inline constexpr const char* kSp320100701 = "igs-2010-07-01/igs15904.sp3";
+inline constexpr const char* kBrdc20100702 = "igs-2010-07-02/brdc1830.10n";
+inline constexpr const char* kSp320100702 = "igs-2010-07-02/igs15905.sp3";
+inline constexpr const char* kHert2024 = "HERT00GBR_R_20240920000_01D_GN.rnx";
+inline constexpr const char* kNya2024 = "NYA100NOR_S_20241280000_01D_GN.rnx";
+
+}  // namespace visors::test
