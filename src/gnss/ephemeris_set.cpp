@@ -126,13 +126,18 @@ EphemerisSet EphemerisSet::screen(std::span<const BroadcastEphemeris> records, s
 }
 
 const BroadcastEphemeris* EphemerisSet::select(int prn, core::GpsTime t) const {
+  const BroadcastEphemeris* best = nearest(prn, t);
+  return best != nullptr && within_fit_interval(*best, t) ? best : nullptr;
+}
+
+const BroadcastEphemeris* EphemerisSet::nearest(int prn, core::GpsTime t) const {
   if (prn < 1 || prn > kMaxGpsPrn) return nullptr;
   const BroadcastEphemeris* best = nullptr;
   double best_distance = 0.0;
   for (std::size_t k = first_of_prn_[static_cast<std::size_t>(prn)]; k < first_of_prn_[static_cast<std::size_t>(prn) + 1];
        ++k) {
     const ScreenedEphemeris& s = records_[k];
-    if (s.status != RecordStatus::kUsable || !within_fit_interval(s.ephemeris, t)) continue;
+    if (s.status != RecordStatus::kUsable) continue;
     const double distance = std::abs(t.seconds_since(s.ephemeris.toe));
     if (best == nullptr || distance <= best_distance) {  // sorted: on a tie the later transmission wins
       best = &s.ephemeris;

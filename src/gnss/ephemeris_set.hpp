@@ -53,6 +53,9 @@ class EphemerisSet {
 
   /// The record to use at t (file comment), or nullptr when none is usable there.
   [[nodiscard]] const BroadcastEphemeris* select(int prn, core::GpsTime t) const;
+  /// The usable record of `prn` with t_oe nearest t, whether or not t is in its fit interval
+  /// (to build a constellation from a station file that tracked each satellite part of the day).
+  [[nodiscard]] const BroadcastEphemeris* nearest(int prn, core::GpsTime t) const;
 
   /// All records, sorted by PRN then t_oe then transmission time.
   [[nodiscard]] std::span<const ScreenedEphemeris> records() const { return records_; }
