@@ -53,4 +53,24 @@ core::Result<double> klobuchar_delay_m(const KlobucharCoefficients& c, const Klo
   return *delay * core::kSpeedOfLight;
 }
 
+core::Result<double> klobuchar_topside_delay_m(const KlobucharCoefficients& c, const KlobucharGeometry& g,
+                                               double altitude_m, core::GpsTime t, const TopsideIonosphere& topside) {
+  constexpr double kMeanEarthRadius = 6371e3;  // [m]
+  if (!(topside.topside_fraction >= 0.0 && topside.topside_fraction <= 1.0)) {
+    return core::Error{"topside_fraction", "must be in [0, 1]"};
+  }
+  if (!std::isfinite(altitude_m)) return core::Error{"altitude_m", "must be finite"};
+  if (!(topside.shell_height_m > altitude_m)) return core::Error{"shell_height_m", "must be above the receiver's altitude"};
+  if (!(std::abs(g.elevation) <= 0.5 * kPi)) return core::Error{"el", "must be in [-pi/2, pi/2] rad"};
+  KlobucharGeometry zenith = g;
+  zenith.elevation = 0.5 * kPi;
+  const auto zenith_delay = klobuchar_delay_m(c, zenith, t);
+  if (!zenith_delay.ok()) return zenith_delay.error();
+  const double obliquity_at_zenith = 1.0 + 16.0 * std::pow(0.53 - 0.5, 3);
+  const double vertical = topside.topside_fraction * *zenith_delay / obliquity_at_zenith;
+  const double ratio = (kMeanEarthRadius + altitude_m) * std::cos(std::max(g.elevation, 0.0)) /
+                       (kMeanEarthRadius + topside.shell_height_m);
+  return vertical / std::sqrt(1.0 - ratio * ratio);
+}
+
 }  // namespace visors::gnss

@@ -66,3 +66,35 @@ TEST(Klobuchar, NonFiniteCoefficientIsRejected) {
 }
 
 }  // namespace
+
+namespace {
+
+using visors::gnss::klobuchar_topside_delay_m;
+
+// Topside scaling (klobuchar.hpp), evaluated by hand in Python from the zenith-at-noon case:
+// vertical = 0.35 * 2.778845759341267 / (1 + 16 * 0.03^3) = 0.9721760357220115 m; at 30 deg and
+// 500 km with the 1000 km shell, M = 1 / sqrt(1 - (6871 cos 30 / 7371)^2): 1.6472850292723484 m;
+// below the horizon, M(0): 2.685349576290729 m. Azimuth 0 as in the ground case (the zenith pierce
+// point moves with the azimuth by 5e-4 semicircle).
+TEST(KlobucharTopside, ZenithIsTheFractionOfTheVerticalColumn) {
+  const KlobucharGeometry g{0.0, 0.0, 0.0, 90.0 * kDeg};
+  EXPECT_NEAR(klobuchar_topside_delay_m(kBrdc1820, g, 500e3, at(43200.0)).value(), 0.9721760357220115, 1e-12);
+}
+
+TEST(KlobucharTopside, ThinShellMappingAtThirtyDegrees) {
+  const KlobucharGeometry g{0.0, 0.0, 0.0, 30.0 * kDeg};
+  EXPECT_NEAR(klobuchar_topside_delay_m(kBrdc1820, g, 500e3, at(43200.0)).value(), 1.6472850292723484, 1e-12);
+}
+
+TEST(KlobucharTopside, RaysBelowTheHorizontalUseTheHorizontalMapping) {
+  const KlobucharGeometry g{0.0, 0.0, 0.0, -10.0 * kDeg};
+  EXPECT_NEAR(klobuchar_topside_delay_m(kBrdc1820, g, 500e3, at(43200.0)).value(), 2.685349576290729, 1e-12);
+}
+
+TEST(KlobucharTopside, ShellBelowTheReceiverIsRejected) {
+  const auto delay = klobuchar_topside_delay_m(kBrdc1820, {0.0, 0.0, 0.0, 1.0}, 500e3, at(0.0), {0.35, 400e3});
+  ASSERT_FALSE(delay.ok());
+  EXPECT_EQ(delay.error().field, "shell_height_m");
+}
+
+}  // namespace
