@@ -1,0 +1,145 @@
+#pragma once
+// Raw-observable GPS receiver of one spacecraft (ground side of the simulator): single-frequency
+// L1 C/A pseudorange, carrier phase, Doppler and C/N0 at each epoch (1 Hz in the simulator), as the
+// receiver gives them to the flight computer (gnss::GpsMeasurementEpoch), with the truth behind
+// every number for tests and the truth file.
+//
+// Measurement model (navigation-and-dynamics.md 4.3-4.7; RINEX sign conventions):
+//   P   = rho + c (dt_r - dt^j) + I + e_P,                                    e_P ~ N(0, code_sigma_m)
+//   Phi = (rho + c (dt_r - dt^j) - I) / lambda + N + phi_r - phi^j + e_Phi / lambda,  e_Phi ~ N(0, phase_sigma_m)
+//   D   = -(d rho/dt - c d(dt^j)/dt) / lambda + e_D
+// rho: geometric range from the receiver's antenna phase centre at the true reception time
+//      t_r = t_tag - dt_r to the satellite at the transmission time t_r - tau, solved by
+//      iterating tau = |R3(w_E tau) r^j(t_r - tau) - r_r(t_r)| / c in Earth-fixed axes (the
+//      Earth's rotation during the light time; three iterations converge below 1e-12 s);
+// dt_r: receiver clock, a random walk of clock_step_sigma_m per epoch from N(0, initial_clock_sigma_m);
+//      the epoch's time tag is the true time of the pose it is given, the signal is received
+//      dt_r earlier (the pose is carried back along its Earth-fixed velocity: exact to 1e-9 m for
+//      dt_r < 1 ms);
+// dt^j: the satellite's true L1 clock (GpsSatelliteTruth), so the broadcast clock error appears
+//      in the measurements like the orbit error does;
+// I:   the topside Klobuchar delay (gnss::klobuchar_topside_delay_m), on code, advance on phase;
+// N:   an integer drawn when a satellite is acquired (again at each re-acquisition) and changed by
+//      a cycle slip; phi_r, phi^j: constant fractional receiver and satellite phase offsets, so
+//      only double differences are integer (as with a real receiver).
+// Antenna: the phase centre is phase_center_offset_m along the TRUE boresight from the antenna
+// reference point antenna_body_m; the true boresight is body +Z tilted by two angles drawn
+// N(0, mounting_sigma_rad) (about body X, then Y) once per receiver.
+// Tracking: a satellite is visible when its elevation above the antenna plane (true boresight)
+// is at least the mask and the ray clears the Earth's surface by occultation_altitude_m (grazing
+// height of the segment, spherical Earth of WGS-84 equatorial radius). At most `channels`
+// satellites are tracked: a tracked satellite keeps its channel while visible; free channels take
+// the highest visible ones. Lost and re-acquired means a new ambiguity and the loss-of-lock flag.
+// Not modelled: carrier phase wind-up (both spacecraft fly the same attitude profile), multipath,
+// C/N0-dependent noise (C/N0 = 35 + 15 sin(elevation above the antenna plane) dB-Hz is reported),
+// relativistic path delay (Shapiro, < 2 cm, common to both spacecraft).
+
+#include <array>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "core/constants.hpp"
+#include "core/gps_time.hpp"
+#include "core/state_vector.hpp"
+#include "core/status.hpp"
+#include "gnss/gps_measurement.hpp"
+#include "gnss/klobuchar.hpp"
+#include "sim/gps_satellite_truth.hpp"
+#include "sim/random_stream.hpp"
+
+namespace visors::sim {
+
+struct GpsReceiverSettings {
+  double elevation_mask_rad = 5.0 * core::kDegToRad;  // above the antenna plane (issue)
+  int channels = 12;                                  // (issue), at most gnss::kMaxGpsChannels
+  double code_sigma_m = 0.20;                         // pseudorange thermal noise (issue) [m]
+  double phase_sigma_m = 0.002;                       // carrier-phase thermal noise (issue) [m]
+  double doppler_sigma_hz = 0.05;                     // [Hz]
+  double clock_step_sigma_m = 1.0;                    // receiver clock random walk per epoch (issue) [m]
+  double initial_clock_sigma_m = 300.0;               // initial receiver clock offset, 1 us [m]
+  double phase_center_offset_m = 0.0854;              // along the boresight (issue) [m]
+  double mounting_sigma_rad = 30.0 * core::kArcsecToRad;  // boresight tilt per axis (issue)
+  Eigen::Vector3d antenna_body_m = Eigen::Vector3d(0.0, 0.0, 0.1);  // antenna reference point [m]
+  double occultation_altitude_m = 100e3;              // rays must clear the Earth by this [m]
+  double cycle_slip_probability = 0.0;                // per channel and epoch
+  int max_slip_cycles = 10;                           // a slip is +/- 1..max cycles
+  bool ionosphere = true;
+  gnss::KlobucharCoefficients klobuchar;              // the truth ionosphere's coefficients
+  gnss::TopsideIonosphere topside;
+
+  /// Ok, or the offending field by name.
+  [[nodiscard]] core::Result<bool> validate() const;
+};
+
+/// Where the receiver is at an epoch (true values from the truth world).
+struct ReceiverPose {
+  core::GpsTime t;                  // true GPS time of the pose = the epoch's time tag
+  core::StateVector com_itrf;       // centre of mass, Earth-fixed [m, m/s]
+  Eigen::Matrix3d body_to_itrf = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d com_body_m = Eigen::Vector3d::Zero();  // true centre of mass in the body frame [m]
+};
+
+/// The truth behind one channel's measurements.
+struct GpsChannelTruth {
+  int prn = 0;
+  double range_m = 0.0;              // rho
+  double satellite_clock_m = 0.0;    // c dt^j (true L1 clock)
+  double ionosphere_m = 0.0;         // I
+  std::int64_t ambiguity_cycles = 0;  // N
+  double satellite_phase_cycles = 0.0;  // phi^j
+  double elevation_antenna_rad = 0.0;
+  Eigen::Vector3d line_of_sight_itrf = Eigen::Vector3d::Zero();  // receiver -> satellite (unit)
+};
+
+struct GpsReceiverEpoch {
+  gnss::GpsMeasurementEpoch measurement;
+  std::array<GpsChannelTruth, gnss::kMaxGpsChannels> truth{};  // same order as the channels
+  double receiver_clock_m = 0.0;       // c dt_r
+  double receiver_phase_cycles = 0.0;  // phi_r
+  Eigen::Vector3d apc_itrf_m = Eigen::Vector3d::Zero();  // phase centre at the reception time [m]
+  int visible = 0;                     // satellites passing the visibility test (tracked or not)
+};
+
+class GpsReceiver {
+ public:
+  /// Validates the settings and draws the mounting tilts, the phase offset and the initial clock.
+  static core::Result<GpsReceiver> create(const GpsReceiverSettings& settings, RandomStream rng);
+
+  /// The measurements at pose.t (the clock steps first, except at the first epoch). Allocation-
+  /// free; the returned reference is valid until the next call.
+  const GpsReceiverEpoch& measure(const ReceiverPose& pose, const GpsSatelliteTruth& satellites);
+
+  [[nodiscard]] const GpsReceiverSettings& settings() const { return settings_; }
+  /// The true boresight (unit, body frame) and phase centre (body frame) [m].
+  [[nodiscard]] const Eigen::Vector3d& boresight_body() const { return boresight_body_; }
+  [[nodiscard]] Eigen::Vector3d phase_center_body_m() const {
+    return settings_.antenna_body_m + settings_.phase_center_offset_m * boresight_body_;
+  }
+
+ private:
+  struct Track {
+    int prn = 0;  // 0: free channel
+    std::int64_t ambiguity = 0;
+    core::GpsTime lock_start;
+  };
+  struct Candidate {
+    std::size_t index = 0;  // into the satellites
+    double elevation = 0.0;
+    bool visible = false;
+  };
+
+  GpsReceiver(const GpsReceiverSettings& settings, RandomStream rng) : settings_(settings), rng_(std::move(rng)) {}
+  std::int64_t draw_ambiguity();
+
+  GpsReceiverSettings settings_;
+  RandomStream rng_;
+  Eigen::Vector3d boresight_body_ = Eigen::Vector3d::UnitZ();
+  double clock_m_ = 0.0;
+  bool first_epoch_ = true;
+  std::array<Track, gnss::kMaxGpsChannels> tracks_{};
+  std::array<Candidate, 64> candidates_{};
+  GpsReceiverEpoch epoch_;
+};
+
+}  // namespace visors::sim

@@ -1,0 +1,66 @@
+#pragma once
+// The GPS satellites of the truth world (ground side of the simulator): their true orbits and
+// clocks, and the broadcast ephemerides a receiver decodes, which differ from the truth by the
+// broadcast errors.
+//
+// Truth: each satellite's orbit and clock is its record of the constellation (gnss/constellation:
+// a real 2024 record moved to the mission epoch), evaluated with the IS-GPS-200 algorithm.
+// Broadcast: the same record with perturbed elements and clock polynomial, drawn once per run:
+//   radial:       delta a ~ N(0, radial_m), with delta_n corrected so the mean motion, hence the
+//                 along-track position, does not drift; delta (e cos w, e sin w) ~ N(0, radial_m / a)
+//                 each (once-per-revolution radial +/- and along-track +/- 2x);
+//   along-track:  delta M0 ~ N(0, along_m / a);
+//   cross-track:  delta i0 ~ N(0, cross_m / a), delta Omega0 ~ N(0, cross_m / a) / sin i;
+//   clock:        delta a_f0 ~ N(0, clock_m / c), delta a_f1 ~ N(0, clock_drift_sps).
+// The errors are periodic (once per revolution) and bounded, like the broadcast errors of real
+// ephemerides (refreshed every 2 h); defaults 0.4 / 1.0 / 0.6 m and 0.5 m give a ~1.3 m 3D orbit
+// error, the level measured for the 2010 broadcast against IGS (tests/gnss). A broadcast error is
+// common to both spacecraft, so it cancels in single differences except for ~|dr| x baseline /
+// range = 1e-6 m at 40 m.
+// Each satellite also has a constant fractional carrier-phase offset (phi^j_0, cycles), which
+// cancels in double differences only.
+
+#include <span>
+#include <vector>
+
+#include "core/gps_time.hpp"
+#include "core/status.hpp"
+#include "gnss/broadcast_ephemeris.hpp"
+#include "gnss/constellation.hpp"
+#include "sim/random_stream.hpp"
+
+namespace visors::sim {
+
+struct BroadcastErrorSettings {
+  double radial_m = 0.4;            // 1-sigma [m]
+  double along_m = 1.0;             // 1-sigma [m]
+  double cross_m = 0.6;             // 1-sigma [m]
+  double clock_m = 0.5;             // 1-sigma of the clock offset error, c * delta a_f0 [m]
+  double clock_drift_sps = 1e-14;   // 1-sigma of delta a_f1 [s/s] (0.26 m per day)
+
+  /// Ok, or the field (finite, >= 0) by name.
+  [[nodiscard]] core::Result<bool> validate() const;
+};
+
+class GpsSatelliteTruth {
+ public:
+  /// Draws the broadcast errors (file comment) from `rng`, five orbit and two clock numbers per
+  /// satellite in PRN order, plus the phase offset.
+  static core::Result<GpsSatelliteTruth> create(const gnss::GpsConstellation& constellation,
+                                                const BroadcastErrorSettings& errors, RandomStream rng);
+
+  /// The satellites (PRN order): true records, and the broadcast ones at the same index.
+  [[nodiscard]] std::span<const gnss::BroadcastEphemeris> truth() const { return truth_; }
+  [[nodiscard]] std::span<const gnss::BroadcastEphemeris> broadcast() const { return broadcast_; }
+  /// The satellite's constant carrier-phase offset [cycles, in [0, 1)].
+  [[nodiscard]] double phase_offset_cycles(std::size_t index) const { return phase_offset_cycles_[index]; }
+
+  /// True state at GPS time t; the clock is the L1 C/A clock (T_GD applied).
+  [[nodiscard]] gnss::GpsSatelliteState true_state(std::size_t index, core::GpsTime t) const;
+
+ private:
+  std::vector<gnss::BroadcastEphemeris> truth_, broadcast_;
+  std::vector<double> phase_offset_cycles_;
+};
+
+}  // namespace visors::sim

@@ -1,0 +1,328 @@
+// The raw-observable GPS receiver (sim/gps_receiver.hpp) and the satellites' truth and broadcast
+// errors (sim/gps_satellite_truth.hpp).
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gps_test_world.hpp"
+
+namespace visors::sim {
+namespace {
+
+using test::CircularOrbit;
+using test::pose;
+
+class GpsReceiverTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    constellation_ = std::make_unique<gnss::GpsConstellation>(test::mission_constellation());
+    truth_ = std::make_unique<GpsSatelliteTruth>(
+        GpsSatelliteTruth::create(*constellation_, {}, RandomStream(7, "gps.satellites")).value());
+  }
+  static void TearDownTestSuite() {
+    truth_.reset();
+    constellation_.reset();
+  }
+  static GpsReceiverSettings settings() {
+    GpsReceiverSettings s;
+    s.klobuchar = test::nya_klobuchar();
+    return s;
+  }
+  static GpsReceiver receiver(const GpsReceiverSettings& s, const char* name) {
+    return GpsReceiver::create(s, RandomStream(11, name)).value();
+  }
+  static inline std::unique_ptr<gnss::GpsConstellation> constellation_;
+  static inline std::unique_ptr<GpsSatelliteTruth> truth_;
+};
+
+// Independent geometry: the range by iterating on the transmission time in the inertial frame
+// that coincides with the Earth-fixed axes at reception (the satellite's Earth-fixed position at
+// t_t rotated back by w_E (t_r - t_t)), solved by Newton on f(tau) = |r_I(t_r - tau) - r| - c tau
+// with a numerical derivative: a different formulation from the receiver's fixed-point iteration
+// of R3(w_E tau) (navigation-and-dynamics.md 4.5: the two must agree to < 1 mm).
+double inertial_range_m(const GpsSatelliteTruth& truth, std::size_t index, core::GpsTime t_receive,
+                        const Eigen::Vector3d& r_receiver) {
+  const auto f = [&](double tau) {
+    const Eigen::Vector3d r = truth.true_state(index, t_receive - tau).r_ecef_m;
+    const Eigen::Vector3d r_inertial = Eigen::AngleAxisd(-gnss::kGpsEarthRate * tau, Eigen::Vector3d::UnitZ()) * r;
+    return (r_inertial - r_receiver).norm() - gnss::kGpsSpeedOfLight * tau;
+  };
+  double tau = 0.07;
+  for (int k = 0; k < 6; ++k) {
+    const double h = 1e-6;
+    tau -= f(tau) / ((f(tau + h) - f(tau - h)) / (2.0 * h));
+  }
+  return gnss::kGpsSpeedOfLight * tau;
+}
+
+std::size_t index_of(const GpsSatelliteTruth& truth, int prn) {
+  for (std::size_t k = 0; k < truth.truth().size(); ++k) {
+    if (truth.truth()[k].prn == prn) return k;
+  }
+  return truth.truth().size();
+}
+
+TEST_F(GpsReceiverTest, RangeAgreesWithTheInertialFormulation) {
+  GpsReceiver r = receiver(settings(), "rx");
+  const auto& epoch = r.measure(pose(CircularOrbit{}, 100.0), *truth_);
+  ASSERT_GT(epoch.measurement.channel_count, 4);
+  const core::GpsTime t_receive = epoch.measurement.t - epoch.receiver_clock_m / gnss::kGpsSpeedOfLight;
+  for (int k = 0; k < epoch.measurement.channel_count; ++k) {
+    const auto& truth = epoch.truth[static_cast<std::size_t>(k)];
+    const double independent = inertial_range_m(*truth_, index_of(*truth_, truth.prn), t_receive, epoch.apc_itrf_m);
+    EXPECT_NEAR(truth.range_m, independent, 1e-3) << "PRN " << truth.prn;
+  }
+}
+
+// The issue's acceptance: double-differenced carrier phase minus the true geometry is an integer
+// number of wavelengths plus noise of the configured size. Two receivers 40 m apart along the
+// orbit, 1200 epochs; DD noise = 2 x 2 mm = 4 mm (four undifferenced phases) = 0.0210 cycles.
+TEST_F(GpsReceiverTest, DoubleDifferencedPhaseIsIntegerPlusNoise) {
+  GpsReceiverSettings s = settings();
+  GpsReceiver chief = receiver(s, "chief");
+  GpsReceiver deputy = receiver(s, "deputy");
+  CircularOrbit chief_orbit, deputy_orbit;
+  deputy_orbit.along_offset_m = 40.0;
+  std::vector<double> fractions;
+  int integer_mismatches = 0;
+  for (int step = 0; step < 1200; ++step) {
+    const auto& a = chief.measure(pose(chief_orbit, step), *truth_);
+    const auto& b = deputy.measure(pose(deputy_orbit, step), *truth_);
+    // Single differences per PRN tracked by both, with their true geometry (ranges from the
+    // independent inertial formulation) and true ambiguities.
+    struct Sd { double phase_cycles, range_m; std::int64_t ambiguity; };
+    std::map<int, Sd> sd;
+    const core::GpsTime ta = a.measurement.t - a.receiver_clock_m / gnss::kGpsSpeedOfLight;
+    const core::GpsTime tb = b.measurement.t - b.receiver_clock_m / gnss::kGpsSpeedOfLight;
+    for (int i = 0; i < a.measurement.channel_count; ++i) {
+      for (int j = 0; j < b.measurement.channel_count; ++j) {
+        const auto& ma = a.measurement.channels[static_cast<std::size_t>(i)];
+        const auto& mb = b.measurement.channels[static_cast<std::size_t>(j)];
+        if (ma.prn != mb.prn) continue;
+        const std::size_t index = index_of(*truth_, ma.prn);
+        sd[ma.prn] = {mb.carrier_phase_cycles - ma.carrier_phase_cycles,
+                      inertial_range_m(*truth_, index, tb, b.apc_itrf_m) - inertial_range_m(*truth_, index, ta, a.apc_itrf_m),
+                      b.truth[static_cast<std::size_t>(j)].ambiguity_cycles - a.truth[static_cast<std::size_t>(i)].ambiguity_cycles};
+      }
+    }
+    if (sd.size() < 2) continue;
+    const auto reference = sd.begin();
+    for (auto it = std::next(reference); it != sd.end(); ++it) {
+      const double dd = (it->second.phase_cycles - reference->second.phase_cycles) -
+                        (it->second.range_m - reference->second.range_m) / gnss::kL1WavelengthM;
+      const double nearest = std::round(dd);
+      fractions.push_back(dd - nearest);
+      if (static_cast<std::int64_t>(nearest) != it->second.ambiguity - reference->second.ambiguity) ++integer_mismatches;
+    }
+  }
+  ASSERT_GT(fractions.size(), 5000u);
+  double mean = 0.0, square = 0.0;
+  for (double f : fractions) mean += f;
+  mean /= static_cast<double>(fractions.size());
+  for (double f : fractions) square += (f - mean) * (f - mean);
+  const double sigma = std::sqrt(square / static_cast<double>(fractions.size() - 1));
+  const double expected = 2.0 * 0.002 / gnss::kL1WavelengthM;  // 0.0210 cycles
+  EXPECT_EQ(integer_mismatches, 0);
+  // The DD share a reference satellite, so samples are correlated; 5% on sigma and 3 sigma/sqrt(n/ 8)
+  // on the mean are loose enough for any seed and tight enough to catch a 1 mm model error.
+  EXPECT_NEAR(sigma, expected, 0.05 * expected);
+  EXPECT_NEAR(mean, 0.0, 3.0 * expected / std::sqrt(static_cast<double>(fractions.size()) / 8.0));
+}
+
+// Pseudorange minus its model (range + clocks + ionosphere) is the configured 20 cm noise.
+TEST_F(GpsReceiverTest, PseudorangeNoiseHasTheConfiguredSigma) {
+  GpsReceiver r = receiver(settings(), "code");
+  std::vector<double> residuals;
+  for (int step = 0; step < 600; ++step) {
+    const auto& epoch = r.measure(pose(CircularOrbit{}, step), *truth_);
+    for (int k = 0; k < epoch.measurement.channel_count; ++k) {
+      const auto& m = epoch.measurement.channels[static_cast<std::size_t>(k)];
+      const auto& t = epoch.truth[static_cast<std::size_t>(k)];
+      residuals.push_back(m.pseudorange_m - (t.range_m + epoch.receiver_clock_m - t.satellite_clock_m + t.ionosphere_m));
+    }
+  }
+  double mean = 0.0, square = 0.0;
+  for (double x : residuals) mean += x;
+  mean /= static_cast<double>(residuals.size());
+  for (double x : residuals) square += (x - mean) * (x - mean);
+  const double n = static_cast<double>(residuals.size());
+  EXPECT_NEAR(std::sqrt(square / (n - 1.0)), 0.20, 0.20 * 4.0 / std::sqrt(2.0 * n));  // 4 sigma of a sample sigma
+  EXPECT_NEAR(mean, 0.0, 4.0 * 0.20 / std::sqrt(n));
+}
+
+// Code minus phase removes geometry and clocks: (P - lambda Phi) = 2 I - lambda (N + phi_r - phi^j)
+// + noise; the ionosphere at 500 km is a few decimetres at most here.
+TEST_F(GpsReceiverTest, IonosphereDelaysCodeAndAdvancesPhase) {
+  GpsReceiver r = receiver(settings(), "iono");
+  const auto& epoch = r.measure(pose(CircularOrbit{}, 0.0), *truth_);
+  for (int k = 0; k < epoch.measurement.channel_count; ++k) {
+    const auto& m = epoch.measurement.channels[static_cast<std::size_t>(k)];
+    const auto& t = epoch.truth[static_cast<std::size_t>(k)];
+    const double ambiguity_m = gnss::kL1WavelengthM * (static_cast<double>(t.ambiguity_cycles) + epoch.receiver_phase_cycles -
+                                                      t.satellite_phase_cycles);
+    const double cmc = m.pseudorange_m - gnss::kL1WavelengthM * m.carrier_phase_cycles + ambiguity_m;
+    EXPECT_NEAR(cmc, 2.0 * t.ionosphere_m, 1.0) << "PRN " << t.prn;  // 5 sigma of the 0.2 m code noise
+    EXPECT_GT(t.ionosphere_m, 0.0);
+    EXPECT_LT(t.ionosphere_m, 5.0);
+  }
+}
+
+// Visibility over one orbit (5677 s, every 10 s): zenith antenna, and the antenna tilted 90 deg
+// (about the velocity: one half-space of the sky cut off by the Earth's limb). Digest sanity
+// band (navigation-and-dynamics.md 4.8): 8-12 satellites above 5 deg with a zenith boresight,
+// roughly half with a 90 deg tilt. Measured here (31-satellite constellation of 2024): see the
+// bounds' comments.
+TEST_F(GpsReceiverTest, VisibilityOverAnOrbitZenithAndTilted) {
+  for (const double tilt : {0.0, 0.5 * core::kPi}) {
+    GpsReceiver r = receiver(settings(), "visibility");
+    double visible_sum = 0.0, tracked_sum = 0.0;
+    int samples = 0, max_tracked = 0;
+    for (double t = 0.0; t < 5677.0; t += 10.0, ++samples) {
+      const auto& epoch = r.measure(pose(CircularOrbit{}, t, tilt), *truth_);
+      visible_sum += epoch.visible;
+      tracked_sum += epoch.measurement.channel_count;
+      max_tracked = std::max(max_tracked, epoch.measurement.channel_count);
+    }
+    const double visible = visible_sum / samples;
+    EXPECT_LE(max_tracked, 12);
+    if (tilt == 0.0) {
+      EXPECT_GE(visible, 9.0);
+      EXPECT_LE(visible, 14.0);
+      EXPECT_GE(tracked_sum / samples, 9.0);
+    } else {
+      EXPECT_GE(visible, 4.0);
+      EXPECT_LE(visible, 9.0);
+    }
+    std::printf("tilt %.0f deg: mean visible %.2f, tracked %.2f\n", tilt / core::kDegToRad, visible, tracked_sum / samples);
+  }
+}
+
+// A satellite that sets and rises again (two orbits, every 10 s) is re-acquired with the
+// loss-of-lock flag, lock time 0 and a new integer ambiguity; continuing tracks keep theirs.
+TEST_F(GpsReceiverTest, ReacquisitionStartsANewAmbiguity) {
+  GpsReceiver r = receiver(settings(), "reacquire");
+  struct Seen { int step; std::int64_t ambiguity; };
+  std::map<int, Seen> last;
+  int reacquisitions = 0, continued = 0;
+  for (int step = 0; step < 1136; ++step) {
+    const auto& epoch = r.measure(pose(CircularOrbit{}, 10.0 * step), *truth_);
+    for (int k = 0; k < epoch.measurement.channel_count; ++k) {
+      const auto& m = epoch.measurement.channels[static_cast<std::size_t>(k)];
+      const std::int64_t n = epoch.truth[static_cast<std::size_t>(k)].ambiguity_cycles;
+      const auto seen = last.find(m.prn);
+      if (seen != last.end() && seen->second.step == step - 1) {
+        EXPECT_FALSE(m.loss_of_lock);
+        EXPECT_EQ(n, seen->second.ambiguity);
+        ++continued;
+      } else {
+        EXPECT_TRUE(m.loss_of_lock);
+        EXPECT_EQ(m.lock_time_s, 0.0);
+        if (seen != last.end()) {
+          EXPECT_NE(n, seen->second.ambiguity);
+          ++reacquisitions;
+        }
+      }
+      last[m.prn] = {step, n};
+    }
+  }
+  EXPECT_GT(reacquisitions, 5);
+  EXPECT_GT(continued, 5000);
+}
+
+TEST_F(GpsReceiverTest, CycleSlipsChangeTheAmbiguityAndSetTheFlag) {
+  GpsReceiverSettings s = settings();
+  s.cycle_slip_probability = 1.0;
+  s.max_slip_cycles = 3;
+  GpsReceiver r = receiver(s, "slips");
+  std::map<int, std::int64_t> previous;
+  for (int step = 0; step < 20; ++step) {
+    const auto& epoch = r.measure(pose(CircularOrbit{}, step), *truth_);
+    for (int k = 0; k < epoch.measurement.channel_count; ++k) {
+      const int prn = epoch.truth[static_cast<std::size_t>(k)].prn;
+      const std::int64_t n = epoch.truth[static_cast<std::size_t>(k)].ambiguity_cycles;
+      EXPECT_TRUE(epoch.measurement.channels[static_cast<std::size_t>(k)].loss_of_lock);
+      if (previous.count(prn)) {
+        const std::int64_t jump = std::abs(n - previous[prn]);
+        EXPECT_GE(jump, 1);
+        EXPECT_LE(jump, 3);
+      }
+      previous[prn] = n;
+    }
+  }
+}
+
+// The receiver clock is a random walk of 1 m per epoch (issue): the increments' sigma.
+TEST_F(GpsReceiverTest, ClockIsARandomWalkOfOneMetrePerStep) {
+  GpsReceiver r = receiver(settings(), "clock");
+  std::vector<double> steps;
+  double previous = r.measure(pose(CircularOrbit{}, 0.0), *truth_).receiver_clock_m;
+  for (int step = 1; step < 2000; ++step) {
+    const double now = r.measure(pose(CircularOrbit{}, step), *truth_).receiver_clock_m;
+    steps.push_back(now - previous);
+    previous = now;
+  }
+  double square = 0.0;
+  for (double x : steps) square += x * x;
+  const double n = static_cast<double>(steps.size());
+  EXPECT_NEAR(std::sqrt(square / n), 1.0, 4.0 / std::sqrt(2.0 * n));
+}
+
+// Antenna: phase centre 8.54 cm along the true boresight, tilted by the mounting error (30 arcsec
+// per axis, so the tilt is below 5 x 30 x sqrt(2) arcsec for any seed).
+TEST_F(GpsReceiverTest, PhaseCentreIsAlongTheTiltedBoresight) {
+  const GpsReceiver r = receiver(settings(), "antenna");
+  EXPECT_NEAR((r.phase_center_body_m() - r.settings().antenna_body_m).norm(), 0.0854, 1e-12);
+  const double tilt = std::acos(std::clamp(r.boresight_body().z(), -1.0, 1.0));
+  EXPECT_GT(tilt, 0.0);
+  EXPECT_LT(tilt, 5.0 * 30.0 * std::sqrt(2.0) * core::kArcsecToRad);
+}
+
+TEST_F(GpsReceiverTest, MeasurementsPassTheFlightValidation) {
+  GpsReceiver r = receiver(settings(), "valid");
+  for (int step = 0; step < 100; ++step) {
+    const auto& epoch = r.measure(pose(CircularOrbit{}, 10.0 * step), *truth_);
+    const auto valid = gnss::validate(epoch.measurement);
+    ASSERT_TRUE(valid.ok()) << valid.error().describe();
+  }
+}
+
+TEST_F(GpsReceiverTest, BadSettingsAreNamed) {
+  GpsReceiverSettings s = settings();
+  s.channels = 13;
+  EXPECT_EQ(GpsReceiver::create(s, RandomStream(1, "x")).error().field, "channels");
+  s = settings();
+  s.code_sigma_m = -1.0;
+  EXPECT_EQ(GpsReceiver::create(s, RandomStream(1, "x")).error().field, "code_sigma_m");
+  BroadcastErrorSettings e;
+  e.along_m = std::nan("");
+  EXPECT_EQ(GpsSatelliteTruth::create(*constellation_, e, RandomStream(1, "x")).error().field, "along_m");
+}
+
+// Broadcast errors: periodic and bounded, ~1.3 m 3D RMS with the defaults (0.4 / 1.0 / 0.6 m and
+// the eccentricity-vector terms), no drift over a day (the mean motion is kept).
+TEST_F(GpsReceiverTest, BroadcastErrorsAreMetreLevelAndDoNotDrift) {
+  double first_hours = 0.0, last_hours = 0.0;
+  int n_first = 0, n_last = 0;
+  for (std::size_t j = 0; j < truth_->truth().size(); ++j) {
+    for (double t = 0.0; t <= 86400.0; t += 900.0) {
+      const core::GpsTime at = test::kMissionEpoch + t;
+      const double error = (gnss::broadcast_state(truth_->broadcast()[j], at).r_ecef_m - truth_->true_state(j, at).r_ecef_m).norm();
+      if (t < 43200.0) {
+        first_hours += error * error;
+        ++n_first;
+      } else {
+        last_hours += error * error;
+        ++n_last;
+      }
+    }
+  }
+  const double rms_first = std::sqrt(first_hours / n_first), rms_last = std::sqrt(last_hours / n_last);
+  EXPECT_GT(rms_first, 0.8);
+  EXPECT_LT(rms_first, 2.0);
+  EXPECT_NEAR(rms_last, rms_first, 0.3 * rms_first);
+}
+
+}  // namespace
+}  // namespace visors::sim
