@@ -149,3 +149,41 @@ TEST(RinexNav, MissingFile) {
 
 }  // namespace
 }  // namespace visors::gnss::files
+
+namespace visors::gnss::files {
+namespace {
+
+// Writing brdc1820.10n as RINEX 3.05 and reading it back gives every record again, to the
+// 12-digit mantissa of the format (relative 5e-13) and exactly for the integers and times.
+TEST(RinexNav, Rinex3WriteReadRoundTrip) {
+  const auto original = read_rinex_navigation(test::gnss_data(test::kBrdc20100701));
+  ASSERT_TRUE(original.ok());
+  test::TempFile file("", ".rnx");
+  ASSERT_TRUE(write_rinex3_navigation(file.path(), *original, "visors test").ok());
+  const auto again = read_rinex_navigation(file.path());
+  ASSERT_TRUE(again.ok()) << again.error().describe();
+  EXPECT_DOUBLE_EQ(again->version, 3.05);
+  ASSERT_EQ(again->records.size(), original->records.size());
+  EXPECT_EQ(again->leap_seconds, 15);
+  EXPECT_DOUBLE_EQ(again->ionosphere->beta[2], original->ionosphere->beta[2]);
+  const auto close = [](double a, double b) { return std::abs(a - b) <= 5e-13 * std::abs(b) + 1e-300; };
+  for (std::size_t k = 0; k < original->records.size(); ++k) {
+    const auto& a = original->records[k];
+    const auto& b = again->records[k];
+    EXPECT_EQ(a.prn, b.prn);
+    EXPECT_EQ(a.toc, b.toc);
+    EXPECT_EQ(a.toe, b.toe);
+    EXPECT_EQ(a.transmission, b.transmission);
+    EXPECT_EQ(a.iode, b.iode);
+    EXPECT_EQ(a.iodc, b.iodc);
+    EXPECT_EQ(a.health, b.health);
+    for (const auto& [x, y] : {std::pair{a.af0_s, b.af0_s}, {a.sqrt_a, b.sqrt_a}, {a.eccentricity, b.eccentricity},
+                               {a.m0_rad, b.m0_rad}, {a.omega0_rad, b.omega0_rad}, {a.omega_dot_radps, b.omega_dot_radps},
+                               {a.cuc_rad, b.cuc_rad}, {a.crs_m, b.crs_m}, {a.tgd_s, b.tgd_s}, {a.i0_rad, b.i0_rad}}) {
+      EXPECT_TRUE(close(y, x)) << k << ": " << x << " vs " << y;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace visors::gnss::files

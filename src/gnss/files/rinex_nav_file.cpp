@@ -1,6 +1,8 @@
 #include "gnss/files/rinex_nav_file.hpp"
 
 #include <array>
+#include <cstdio>
+#include <fstream>
 #include <cmath>
 #include <string>
 
@@ -264,7 +266,70 @@ class NavigationReader {
   bool rinex3_ = false;
 };
 
+// One D19.12 field (RINEX 3.05 Table A6), e.g. " 1.234567890123E-05".
+std::string value_field(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%19.12E", value);
+  return text;
+}
+
+std::string fmt_leap(int seconds) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%6d", seconds);
+  return text;
+}
+
+std::string header_line(const std::string& content, const char* label) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%-60.60s%-20s", content.c_str(), label);
+  return text;
+}
+
+std::string record_text(const BroadcastEphemeris& e) {
+  const core::CalendarTime c = e.toc.calendar(core::TimeScale::kGps);
+  char epoch[40];
+  std::snprintf(epoch, sizeof epoch, "G%02d %04d %02d %02d %02d %02d %02d", e.prn, c.year, c.month, c.day, c.hour, c.minute,
+                c.second);
+  const double transmission_sow = e.toe.seconds_of_week() + e.transmission.seconds_since(e.toe);
+  const double rows[7][4] = {
+      {static_cast<double>(e.iode), e.crs_m, e.delta_n_radps, e.m0_rad},
+      {e.cuc_rad, e.eccentricity, e.cus_rad, e.sqrt_a},
+      {e.toe.seconds_of_week(), e.cic_rad, e.omega0_rad, e.cis_rad},
+      {e.i0_rad, e.crc_m, e.omega_rad, e.omega_dot_radps},
+      {e.idot_radps, 1.0, static_cast<double>(e.toe.week()), 0.0},
+      {e.ura_m, static_cast<double>(e.health), e.tgd_s, static_cast<double>(e.iodc)},
+      {transmission_sow, e.fit_interval_h, 0.0, 0.0}};
+  std::string text = std::string(epoch) + value_field(e.af0_s) + value_field(e.af1_sps) + value_field(e.af2_sps2) + "\n";
+  for (int row = 0; row < 7; ++row) {
+    text += "    ";
+    for (int k = 0; k < (row == 6 ? 2 : 4); ++k) text += value_field(rows[row][k]);
+    text += "\n";
+  }
+  return text;
+}
+
 }  // namespace
+
+core::Result<bool> write_rinex3_navigation(const std::filesystem::path& path, const NavigationFile& file,
+                                           const std::string& program) {
+  std::ofstream out(path);
+  if (!out) return core::Error{path.string(), "cannot open the RINEX navigation file for writing"};
+  out << header_line("     3.05           N: GNSS NAV DATA    G: GPS", "RINEX VERSION / TYPE") << "\n";
+  out << header_line(program, "PGM / RUN BY / DATE") << "\n";
+  if (file.ionosphere) {
+    for (const bool alpha : {true, false}) {
+      const auto& v = alpha ? file.ionosphere->alpha : file.ionosphere->beta;
+      char content[64];
+      std::snprintf(content, sizeof content, "%s %12.4E%12.4E%12.4E%12.4E", alpha ? "GPSA" : "GPSB", v[0], v[1], v[2], v[3]);
+      out << header_line(content, "IONOSPHERIC CORR") << "\n";
+    }
+  }
+  if (file.leap_seconds) out << header_line(fmt_leap(*file.leap_seconds), "LEAP SECONDS") << "\n";
+  out << header_line("", "END OF HEADER") << "\n";
+  for (const auto& record : file.records) out << record_text(record);
+  if (!out) return core::Error{path.string(), "write failed"};
+  return true;
+}
 
 core::Result<NavigationFile> read_rinex_navigation(const std::filesystem::path& path) {
   auto file = TextFile::open(path, "RINEX navigation file");

@@ -39,4 +39,11 @@ struct NavigationFile {
 /// is not a number, a missing required value, an invalid epoch.
 core::Result<NavigationFile> read_rinex_navigation(const std::filesystem::path& path);
 
+/// Writes `file.records` as a RINEX 3.05 GPS navigation file (values in D19.12 with 'E'
+/// exponents, the header's GPSA/GPSB and LEAP SECONDS when present), so simulated broadcast
+/// ephemerides can be processed by other GNSS software; read back by read_rinex_navigation to the
+/// 12 significant digits of the format. Error (the path) when the file cannot be written.
+core::Result<bool> write_rinex3_navigation(const std::filesystem::path& path, const NavigationFile& file,
+                                           const std::string& program);
+
 }  // namespace visors::gnss::files
