@@ -97,6 +97,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--out", run_out, "run directory")->capture_default_str();
 
+  std::string gnss_scenario = "scenarios/gnss_sim.toml";
+  std::string gnss_out = "out/gnss";
+  auto* gnss_sim = app.add_subcommand(
+      "gnss-sim", "raw GPS measurements of both spacecraft: RINEX 3 observation and navigation files, truth files");
+  gnss_sim->add_option("scenario", gnss_scenario, "scenario TOML (a path, or relative to VISORS_DATA_PATH and data/)")
+      ->capture_default_str();
+  gnss_sim->add_option("--out", gnss_out, "output folder")->capture_default_str();
+
   std::string report_dir;
   auto* report = app.add_subcommand(
       "report", "render DIR/report.html (self-contained HTML, inline SVG) from a run directory");
@@ -110,6 +118,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : kExitBadInput;
   }
   if (tool->parsed()) return run_tool(tool_name);
+  if (gnss_sim->parsed()) return visors::run::run_gnss_sim_command(gnss_scenario, gnss_out);
   if (preview->parsed()) return visors::preview::run_preview_command(scenario, out_dir);
   if (propagate->parsed()) {
     return visors::propagate::run_propagate_command(propagate_scenario, propagate_out);

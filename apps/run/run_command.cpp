@@ -10,6 +10,7 @@
 #include "core/data_path.hpp"
 #include "report/report.hpp"
 #include "sim/campaign_simulation.hpp"
+#include "sim/gnss_simulation.hpp"
 
 namespace visors::run {
 namespace {
@@ -31,21 +32,27 @@ void show_progress(const sim::RunProgress& p) {
 
 }  // namespace
 
-int run_campaign_command(const std::string& scenario_path, const std::string& out_dir) {
+std::optional<sim::CampaignScenario> load_scenario(const std::string& scenario_path, const char* command) {
   const auto path = core::find_data_file(scenario_path);
   if (!path) {
-    fmt::print(stderr, "visors run: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n", scenario_path);
-    return kExitBadInput;
+    fmt::print(stderr, "{}: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n", command, scenario_path);
+    return std::nullopt;
   }
   std::ifstream in(*path);
   std::stringstream text;
   text << in.rdbuf();
   auto scenario = sim::campaign_from_toml(text.str());
   if (!scenario.ok()) {
-    fmt::print(stderr, "visors run: {}: {}\n", path->string(), scenario.error().describe());
-    return kExitBadInput;
+    fmt::print(stderr, "{}: {}: {}\n", command, path->string(), scenario.error().describe());
+    return std::nullopt;
   }
-  fmt::print("visors run: {} ({}), seed {}\n", scenario->name, path->string(), scenario->seed);
+  fmt::print("{}: {} ({}), seed {}\n", command, scenario->name, path->string(), scenario->seed);
+  return std::move(scenario).value();
+}
+
+int run_campaign_command(const std::string& scenario_path, const std::string& out_dir) {
+  const auto scenario = load_scenario(scenario_path, "visors run");
+  if (!scenario) return kExitBadInput;
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   auto result = sim::run_campaign(*scenario, out_dir, terminal ? std::function<void(const sim::RunProgress&)>(show_progress)
                                                                : std::function<void(const sim::RunProgress&)>());
@@ -70,6 +77,31 @@ int run_campaign_command(const std::string& scenario_path, const std::string& ou
     return kExitFailed;
   }
   fmt::print("  run directory {}\n  report {}\n", result->dir.string(), report->string());
+  return 0;
+}
+
+int run_gnss_sim_command(const std::string& scenario_path, const std::string& out_dir) {
+  const auto scenario = load_scenario(scenario_path, "visors gnss-sim");
+  if (!scenario) return kExitBadInput;
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  auto result = sim::run_gnss_simulation(*scenario, out_dir,
+                                         terminal ? std::function<void(const sim::RunProgress&)>(show_progress)
+                                                  : std::function<void(const sim::RunProgress&)>());
+  if (terminal) fmt::print(stderr, "\n");
+  if (!result.ok()) {
+    fmt::print(stderr, "visors gnss-sim: {}\n", result.error().describe());
+    return result.error().field.rfind("gnss", 0) == 0 ? kExitBadInput : kExitFailed;
+  }
+  const auto& s = result->summary;
+  fmt::print("  {} epochs ({:.0f} s) in {:.1f} s; receivers {:.1f} us per epoch for both spacecraft\n",
+             s["epochs"].get<long>(), s["duration_s"].get<double>(), s["wall_s"].get<double>(),
+             s["receiver_us_per_epoch_two_spacecraft"].get<double>());
+  for (const char* name : {"dsc", "osc"}) {
+    const auto& r = s["receivers"][name];
+    fmt::print("  {}: {:.2f} satellites visible, {:.2f} tracked on average, {} acquisitions and slips\n", name,
+               r["mean_visible"].get<double>(), r["mean_tracked"].get<double>(), r["acquisitions_and_slips"].get<long>());
+  }
+  fmt::print("  output {}\n", result->dir.string());
   return 0;
 }
 

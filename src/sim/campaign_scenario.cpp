@@ -260,7 +260,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (!parsed.ok()) return parsed.error();
   const toml::table& root = parsed.value();
   if (auto e = check_keys(root, "", {"name", "seed", "time", "chief", "formation", "campaign", "navigation", "propulsion",
-                                     "dsc", "osc", "crosslink", "forces", "gnc", "fault"})) {
+                                     "dsc", "osc", "crosslink", "forces", "gnc", "fault", "gnss"})) {
     return *e;
   }
   CampaignScenario s = default_campaign();
@@ -275,6 +275,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   }
   if (auto ok = read_spacecraft(root, "dsc", s.dsc); !ok) return ok.error();
   if (auto ok = read_spacecraft(root, "osc", s.osc); !ok) return ok.error();
+  if (auto ok = read_gnss_settings(root, s.gnss); !ok) return ok.error();
   if (const toml::table* forces = table_at(root, "forces")) {
     auto config = dynamics::force_model_config_from_toml(forces, "forces");
     if (!config.ok()) return config.error();
@@ -322,6 +323,7 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\nnon_gnc_fault_t_s = {:.17g}\n\n",
                      s.fault.impulse_t_s, s.fault.impulse_dv_rtn_mps(0), s.fault.impulse_dv_rtn_mps(1),
                      s.fault.impulse_dv_rtn_mps(2), s.fault.non_gnc_fault_t_s);
+  out += gnss_settings_to_toml(s.gnss);
   out += s.forces_toml;
   return out;
 }

@@ -16,6 +16,7 @@
 #include "core/status.hpp"
 #include "dynamics/force_model_config.hpp"
 #include "gnc/gnc_config.hpp"
+#include "sim/gnss_settings.hpp"
 #include "sim/propulsion.hpp"
 
 namespace visors::sim {
@@ -77,6 +78,7 @@ struct CampaignScenario {
   double integration_step_s = 1.0;  // truth RK4 step (<= step_s) [s]
   FaultSettings fault;
   gnc::GncConfig gnc;  // shared by both components (self, role and mass are set per spacecraft)
+  GnssSettings gnss;   // GPS constellation and receivers (visors gnss-sim)
 };
 
 /// The default scenario (the mission test case).

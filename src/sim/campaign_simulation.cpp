@@ -20,6 +20,8 @@
 #include "sim/attitude_profile.hpp"
 #include "sim/crosslink.hpp"
 #include "sim/drag_area.hpp"
+#include "sim/formation_initial_state.hpp"
+#include "sim/truth_dynamics.hpp"
 #include "sim/ideal_navigation.hpp"
 #include "sim/propulsion.hpp"
 #include "sim/run_recorder.hpp"
@@ -39,8 +41,7 @@ constexpr double kRoleSwitchAfter = 60.0;
 struct Vehicle {
   Spacecraft id = Spacecraft::dsc;
   std::string_view name;
-  std::unique_ptr<dynamics::ForceModel> forces;  // the propagator keeps a pointer: never moves
-  std::optional<dynamics::OrbitPropagator> propagator;
+  TruthDynamics truth;  // force model and propagator
   core::StateVector x_gcrf;
   std::optional<Propulsion> propulsion;
   std::optional<AttitudeProfile> attitude;
@@ -65,25 +66,12 @@ struct PendingObservation {
   bool done = false;
 };
 
-core::Result<core::StateVector> initial_state(const astro::KeplerianElements& mean, const core::EarthGravityConstants& g) {
-  const auto osc = astro::osculating_from_mean(mean, g);
-  if (!osc.ok()) return osc.error();
-  return astro::cartesian_from_keplerian(*osc, g.mu);
-}
-
 core::Result<bool> set_up_vehicle(Vehicle& v, const CampaignScenario& s, const SpacecraftSettings& sc, bool active,
                                   const core::StateVector& x0) {
   const std::string prefix(v.name);
-  dynamics::SpacecraftProperties props{sc.mass_kg, 0.35, sc.cd, sc.srp_area_m2, sc.cr};
-  auto forces = dynamics::ForceModel::create(s.forces, props);
-  if (!forces.ok()) return core::Error{"forces (" + prefix + ")", forces.error().describe()};
-  v.forces = std::make_unique<dynamics::ForceModel>(std::move(forces).value());
-  dynamics::PropagatorSettings ps;
-  ps.integrator = dynamics::IntegratorKind::kRk4Fixed;
-  ps.step = s.integration_step_s;
-  auto propagator = dynamics::OrbitPropagator::create(*v.forces, ps);
-  if (!propagator.ok()) return propagator.error();
-  v.propagator.emplace(std::move(propagator).value());
+  auto dynamics = make_truth_dynamics(s, sc, prefix);
+  if (!dynamics.ok()) return dynamics.error();
+  v.truth = std::move(dynamics).value();
   v.x_gcrf = x0;
   auto propulsion = Propulsion::create(s.propulsion, sc.mass_kg, sc.propellant_kg, RandomStream(s.seed, prefix + ".propulsion"));
   if (!propulsion.ok()) return core::Error{prefix + "." + propulsion.error().field, propulsion.error().message};
@@ -140,13 +128,6 @@ void add_truth_roe(const core::StateVector& dsc, const core::StateVector& osc, c
   if (const auto roe = astro::roe_from_keplerian(*mc, *md); roe.ok()) row.roe_mean_m = mc->a * *roe;
 }
 
-Eigen::Vector3d relative_velocity_body(const Vehicle& v) {
-  // Velocity relative to the co-rotating atmosphere, in the body frame (drag area).
-  const Eigen::Vector3d omega(0.0, 0.0, core::kEarthRotationRate);
-  const Eigen::Vector3d v_rel = v.x_gcrf.v - omega.cross(v.x_gcrf.r);
-  return v.q_body_to_gcrf.conjugate() * v_rel.normalized();
-}
-
 std::string vector_text(const Eigen::Vector3d& x, double scale) {
   return fmt::format("[{:.4f}, {:.4f}, {:.4f}]", scale * x(0), scale * x(1), scale * x(2));
 }
@@ -162,12 +143,8 @@ core::Result<RunResult> run_campaign(const CampaignScenario& s, const std::files
   RunRecorder recorder = std::move(recorder_result).value();
 
   // ---- Initial states: chief mean elements, deputy from the initial mean ROE.
-  auto x_dsc = initial_state(s.chief_mean, g);
-  if (!x_dsc.ok()) return core::Error{"chief", x_dsc.error().describe()};
-  const auto deputy_mean = astro::deputy_from_roe(s.chief_mean, s.initial_roe_m / s.chief_mean.a);
-  if (!deputy_mean.ok()) return core::Error{"formation.initial_roe_m", deputy_mean.error().describe()};
-  auto x_osc = initial_state(*deputy_mean, g);
-  if (!x_osc.ok()) return core::Error{"formation.initial_roe_m", x_osc.error().describe()};
+  const auto initial = initial_formation_state(s);
+  if (!initial.ok()) return initial.error();
 
   std::array<Vehicle, 2> vehicles;
   Vehicle& dsc = vehicles[0];
@@ -176,10 +153,10 @@ core::Result<RunResult> run_campaign(const CampaignScenario& s, const std::files
   dsc.name = "dsc";
   osc.id = Spacecraft::osc;
   osc.name = "osc";
-  if (auto ok = set_up_vehicle(dsc, s, s.dsc, s.active == "dsc", *x_dsc); !ok) return ok.error();
-  if (auto ok = set_up_vehicle(osc, s, s.osc, s.active == "osc", *x_osc); !ok) return ok.error();
+  if (auto ok = set_up_vehicle(dsc, s, s.dsc, s.active == "dsc", initial->dsc_gcrf); !ok) return ok.error();
+  if (auto ok = set_up_vehicle(osc, s, s.osc, s.active == "osc", initial->osc_gcrf); !ok) return ok.error();
   for (Vehicle& v : vehicles) {
-    for (const auto& warning : v.forces->warnings()) recorder.event(0.0, v.name, "warning", warning);
+    for (const auto& warning : v.truth.forces->warnings()) recorder.event(0.0, v.name, "warning", warning);
   }
 
   const AlignmentRequirements requirements;
@@ -208,7 +185,7 @@ core::Result<RunResult> run_campaign(const CampaignScenario& s, const std::files
     for (Vehicle& v : vehicles) {
       const Eigen::Vector3d sun_unit = (sun_gcrf - v.x_gcrf.r).normalized();
       v.q_body_to_gcrf = v.attitude->body_to_gcrf(ts, v.x_gcrf.r, v.x_gcrf.v, sun_unit);
-      v.forces->set_drag_area(v.drag.projected_area_m2(relative_velocity_body(v)));
+      v.truth.forces->set_drag_area(v.drag.projected_area_m2(air_velocity_body_unit(v.x_gcrf, v.q_body_to_gcrf)));
     }
 
     // ---- Ground timeline.
@@ -372,7 +349,7 @@ core::Result<RunResult> run_campaign(const CampaignScenario& s, const std::files
 
     // ---- Truth propagation to the next step.
     for (Vehicle& v : vehicles) {
-      auto next = v.propagator->propagate_to(t, v.x_gcrf, t + s.step_s);
+      auto next = v.truth.propagator->propagate_to(t, v.x_gcrf, t + s.step_s);
       if (!next.ok()) return core::Error{std::string(v.name) + " truth", next.error().describe()};
       v.x_gcrf = *next;
     }

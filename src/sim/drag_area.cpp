@@ -56,4 +56,10 @@ Eigen::Vector3d fibonacci_sphere_direction(int index, int count) {
   return {rho * std::cos(phi), rho * std::sin(phi), z};
 }
 
+Eigen::Vector3d air_velocity_body_unit(const core::StateVector& x_gcrf, const Eigen::Quaterniond& q_body_to_gcrf) {
+  const Eigen::Vector3d omega(0.0, 0.0, core::kEarthRotationRate);
+  const Eigen::Vector3d v_air = x_gcrf.v - omega.cross(x_gcrf.r);
+  return q_body_to_gcrf.conjugate() * v_air.normalized();
+}
+
 }  // namespace visors::sim

@@ -23,6 +23,9 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "core/state_vector.hpp"
 
 namespace visors::sim {
 
@@ -52,6 +55,10 @@ class DragArea {
  private:
   std::vector<Plate> plates_;
 };
+
+/// Unit velocity relative to the atmosphere co-rotating with the Earth, in the body frame (the
+/// direction projected_area_m2 wants).
+Eigen::Vector3d air_velocity_body_unit(const core::StateVector& x_gcrf, const Eigen::Quaterniond& q_body_to_gcrf);
 
 /// Direction `index` of `count` on the Fibonacci sphere (golden-angle spiral, equal-area bands).
 Eigen::Vector3d fibonacci_sphere_direction(int index, int count);

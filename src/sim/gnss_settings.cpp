@@ -1,0 +1,138 @@
+#include "sim/gnss_settings.hpp"
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+#include "core/gps_time.hpp"
+#include "core/toml_fields.hpp"
+
+namespace visors::sim {
+
+using core::Error;
+using namespace core::toml_fields;
+
+namespace {
+
+core::Result<bool> read_receiver(const toml::table& table, GpsReceiverSettings& r) {
+  const std::string sec = "gnss.receiver";
+  if (auto e = check_keys(table, sec,
+                          {"elevation_mask_deg", "channels", "code_sigma_m", "phase_sigma_m", "doppler_sigma_hz",
+                           "clock_step_sigma_m", "initial_clock_sigma_m", "phase_center_offset_m", "mounting_sigma_arcsec",
+                           "antenna_body_m", "occultation_altitude_m", "cycle_slip_probability", "max_slip_cycles",
+                           "ionosphere", "topside_fraction", "shell_height_m"})) {
+    return *e;
+  }
+  VISORS_TRY(mask, number_at(table, sec, "elevation_mask_deg", r.elevation_mask_rad / core::kDegToRad));
+  VISORS_TRY(channels, integer_at(table, sec, "channels", r.channels));
+  VISORS_TRY(code, number_at(table, sec, "code_sigma_m", r.code_sigma_m));
+  VISORS_TRY(phase, number_at(table, sec, "phase_sigma_m", r.phase_sigma_m));
+  VISORS_TRY(doppler, number_at(table, sec, "doppler_sigma_hz", r.doppler_sigma_hz));
+  VISORS_TRY(clock_step, number_at(table, sec, "clock_step_sigma_m", r.clock_step_sigma_m));
+  VISORS_TRY(clock0, number_at(table, sec, "initial_clock_sigma_m", r.initial_clock_sigma_m));
+  VISORS_TRY(pco, number_at(table, sec, "phase_center_offset_m", r.phase_center_offset_m));
+  VISORS_TRY(mounting, number_at(table, sec, "mounting_sigma_arcsec", r.mounting_sigma_rad / core::kArcsecToRad));
+  VISORS_TRY(antenna, vector3_at(table, sec, "antenna_body_m", r.antenna_body_m));
+  VISORS_TRY(occultation, number_at(table, sec, "occultation_altitude_m", r.occultation_altitude_m));
+  VISORS_TRY(slip, number_at(table, sec, "cycle_slip_probability", r.cycle_slip_probability));
+  VISORS_TRY(slip_size, integer_at(table, sec, "max_slip_cycles", r.max_slip_cycles));
+  VISORS_TRY(ionosphere, bool_at(table, sec, "ionosphere", r.ionosphere));
+  VISORS_TRY(fraction, number_at(table, sec, "topside_fraction", r.topside.topside_fraction));
+  VISORS_TRY(shell, number_at(table, sec, "shell_height_m", r.topside.shell_height_m));
+  if (channels < 1 || channels > 12) return Error{sec + ".channels", "must be in 1..12"};
+  if (slip_size < 1 || slip_size > 1000000) return Error{sec + ".max_slip_cycles", "must be in 1..1000000"};
+  GpsReceiverSettings out = r;
+  out.elevation_mask_rad = mask * core::kDegToRad;
+  out.channels = static_cast<int>(channels);
+  out.code_sigma_m = code;
+  out.phase_sigma_m = phase;
+  out.doppler_sigma_hz = doppler;
+  out.clock_step_sigma_m = clock_step;
+  out.initial_clock_sigma_m = clock0;
+  out.phase_center_offset_m = pco;
+  out.mounting_sigma_rad = mounting * core::kArcsecToRad;
+  out.antenna_body_m = antenna;
+  out.occultation_altitude_m = occultation;
+  out.cycle_slip_probability = slip;
+  out.max_slip_cycles = static_cast<int>(slip_size);
+  out.ionosphere = ionosphere;
+  out.topside.topside_fraction = fraction;
+  out.topside.shell_height_m = shell;
+  if (auto valid = out.validate(); !valid) return Error{sec + "." + valid.error().field, valid.error().message};
+  r = out;
+  return true;
+}
+
+core::Result<bool> read_errors(const toml::table& table, BroadcastErrorSettings& b) {
+  const std::string sec = "gnss.broadcast_errors";
+  if (auto e = check_keys(table, sec, {"radial_m", "along_m", "cross_m", "clock_m", "clock_drift_sps"})) return *e;
+  VISORS_TRY(radial, number_at(table, sec, "radial_m", b.radial_m));
+  VISORS_TRY(along, number_at(table, sec, "along_m", b.along_m));
+  VISORS_TRY(cross, number_at(table, sec, "cross_m", b.cross_m));
+  VISORS_TRY(clock, number_at(table, sec, "clock_m", b.clock_m));
+  VISORS_TRY(drift, number_at(table, sec, "clock_drift_sps", b.clock_drift_sps));
+  const BroadcastErrorSettings out{radial, along, cross, clock, drift};
+  if (auto valid = out.validate(); !valid) return Error{sec + "." + valid.error().field, valid.error().message};
+  b = out;
+  return true;
+}
+
+}  // namespace
+
+core::Result<bool> read_gnss_settings(const toml::table& root, GnssSettings& s) {
+  const toml::table* g = root.get_as<toml::table>("gnss");
+  if (g == nullptr) return true;
+  const std::string sec = "gnss";
+  if (auto e = check_keys(*g, sec, {"nav_file", "source_time_gps", "duration_s", "rinex", "attitude", "receiver",
+                                    "broadcast_errors"})) {
+    return *e;
+  }
+  VISORS_TRY(nav, string_at(*g, sec, "nav_file", s.nav_file));
+  VISORS_TRY(source, string_at(*g, sec, "source_time_gps", s.source_time_gps));
+  VISORS_TRY(duration, number_at(*g, sec, "duration_s", s.duration_s));
+  VISORS_TRY(rinex, bool_at(*g, sec, "rinex", s.rinex));
+  VISORS_TRY(attitude, string_at(*g, sec, "attitude", s.attitude));
+  if (nav.empty()) return Error{"gnss.nav_file", "must name a RINEX navigation file"};
+  if (auto t = core::GpsTime::parse(source, core::TimeScale::kGps); !t) {
+    return Error{"gnss.source_time_gps", t.error().describe()};
+  }
+  if (!(duration >= 0.0 && duration <= 30.0 * 86400.0)) return Error{"gnss.duration_s", "must be in [0, 2592000] s"};
+  if (attitude != "nominal" && attitude != "observation") {
+    return Error{"gnss.attitude", "must be \"nominal\" or \"observation\", got \"" + attitude + "\""};
+  }
+  GnssSettings out = s;
+  out.nav_file = nav;
+  out.source_time_gps = source;
+  out.duration_s = duration;
+  out.rinex = rinex;
+  out.attitude = attitude;
+  if (const toml::table* r = g->get_as<toml::table>("receiver")) {
+    if (auto ok = read_receiver(*r, out.receiver); !ok) return ok.error();
+  }
+  if (const toml::table* b = g->get_as<toml::table>("broadcast_errors")) {
+    if (auto ok = read_errors(*b, out.broadcast_errors); !ok) return ok.error();
+  }
+  s = out;
+  return true;
+}
+
+std::string gnss_settings_to_toml(const GnssSettings& s) {
+  const auto& r = s.receiver;
+  const auto& b = s.broadcast_errors;
+  std::string out = fmt::format("[gnss]\nnav_file = \"{}\"\nsource_time_gps = \"{}\"\nduration_s = {:.17g}\nrinex = {}\nattitude = \"{}\"\n\n",
+                                s.nav_file, s.source_time_gps, s.duration_s, s.rinex, s.attitude);
+  out += fmt::format(
+      "[gnss.receiver]\nelevation_mask_deg = {:.17g}\nchannels = {}\ncode_sigma_m = {:.17g}\nphase_sigma_m = {:.17g}\n"
+      "doppler_sigma_hz = {:.17g}\nclock_step_sigma_m = {:.17g}\ninitial_clock_sigma_m = {:.17g}\n"
+      "phase_center_offset_m = {:.17g}\nmounting_sigma_arcsec = {:.17g}\nantenna_body_m = [{:.17g}, {:.17g}, {:.17g}]\n"
+      "occultation_altitude_m = {:.17g}\ncycle_slip_probability = {:.17g}\nmax_slip_cycles = {}\nionosphere = {}\n"
+      "topside_fraction = {:.17g}\nshell_height_m = {:.17g}\n\n",
+      r.elevation_mask_rad / core::kDegToRad, r.channels, r.code_sigma_m, r.phase_sigma_m, r.doppler_sigma_hz,
+      r.clock_step_sigma_m, r.initial_clock_sigma_m, r.phase_center_offset_m, r.mounting_sigma_rad / core::kArcsecToRad,
+      r.antenna_body_m.x(), r.antenna_body_m.y(), r.antenna_body_m.z(), r.occultation_altitude_m, r.cycle_slip_probability,
+      r.max_slip_cycles, r.ionosphere, r.topside.topside_fraction, r.topside.shell_height_m);
+  out += fmt::format("[gnss.broadcast_errors]\nradial_m = {:.17g}\nalong_m = {:.17g}\ncross_m = {:.17g}\nclock_m = {:.17g}\nclock_drift_sps = {:.17g}\n\n",
+                     b.radial_m, b.along_m, b.cross_m, b.clock_m, b.clock_drift_sps);
+  return out;
+}
+
+}  // namespace visors::sim

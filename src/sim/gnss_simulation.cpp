@@ -1,0 +1,237 @@
+#include "sim/gnss_simulation.hpp"
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "astro/sun_moon.hpp"
+#include "core/data_path.hpp"
+#include "core/earth_frames.hpp"
+#include "core/eop.hpp"
+#include "gnss/constellation.hpp"
+#include "gnss/ephemeris_set.hpp"
+#include "gnss/files/rinex_nav_file.hpp"
+#include "gnss/gps_constants.hpp"
+#include "sim/attitude_profile.hpp"
+#include "sim/drag_area.hpp"
+#include "sim/formation_initial_state.hpp"
+#include "sim/gps_receiver.hpp"
+#include "sim/gps_satellite_truth.hpp"
+#include "sim/spacecraft_geometry.hpp"
+#include "sim/truth_dynamics.hpp"
+
+namespace visors::sim {
+
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* f) const {
+    if (f != nullptr) std::fclose(f);
+  }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+core::Result<File> open_output(const std::filesystem::path& path) {
+  File f(std::fopen(path.string().c_str(), "w"));
+  if (!f) return core::Error{path.string(), "cannot open for writing"};
+  return f;
+}
+
+struct Craft {
+  std::string name;
+  TruthDynamics truth;
+  core::StateVector x_gcrf;
+  DragArea drag = DragArea::visors_6u();
+  std::optional<SpacecraftGeometry> geometry;
+  std::optional<GpsReceiver> receiver;
+  double visible_sum = 0.0, tracked_sum = 0.0;
+  std::int64_t acquisitions = 0;
+};
+
+struct World {
+  gnss::files::NavigationFile nav;
+  std::optional<GpsSatelliteTruth> satellites;
+  std::optional<core::EopTable> eop;
+};
+
+core::Result<World> load_world(const CampaignScenario& s) {
+  World w;
+  const auto path = core::find_data_file(s.gnss.nav_file);
+  if (!path) return core::Error{"gnss.nav_file", "'" + s.gnss.nav_file + "' not found (nor in the data search path)"};
+  auto nav = gnss::files::read_rinex_navigation(*path);
+  if (!nav.ok()) return core::Error{"gnss.nav_file", nav.error().describe()};
+  w.nav = std::move(nav).value();
+  if (s.gnss.receiver.ionosphere && !w.nav.ionosphere) {
+    return core::Error{"gnss.nav_file", "has no GPS ionosphere coefficients (needed by gnss.receiver.ionosphere = true)"};
+  }
+  const auto set = gnss::EphemerisSet::screen(w.nav.records, w.nav.record_lines);
+  const auto source = core::GpsTime::parse(s.gnss.source_time_gps, core::TimeScale::kGps);
+  if (!source.ok()) return core::Error{"gnss.source_time_gps", source.error().describe()};
+  auto constellation = gnss::GpsConstellation::from_broadcast(set, *source, s.t0);
+  if (!constellation.ok()) return core::Error{"gnss.nav_file", constellation.error().describe()};
+  auto satellites = GpsSatelliteTruth::create(*constellation, s.gnss.broadcast_errors, RandomStream(s.seed, "gps.satellites"));
+  if (!satellites.ok()) return core::Error{"gnss.broadcast_errors." + satellites.error().field, satellites.error().message};
+  w.satellites.emplace(std::move(satellites).value());
+  if (!s.forces.earth_frame.eop.empty()) {
+    if (const auto eop_path = core::find_data_file(s.forces.earth_frame.eop)) {
+      auto table = core::EopTable::load(*eop_path);
+      if (!table.ok()) return core::Error{"forces.earth_frame.eop", table.error().describe()};
+      w.eop.emplace(std::move(table).value());
+    }
+  }
+  return w;
+}
+
+core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftSettings& sc, const core::StateVector& x0,
+                          const gnss::KlobucharCoefficients& ionosphere) {
+  auto truth = make_truth_dynamics(s, sc, c.name);
+  if (!truth.ok()) return truth.error();
+  c.truth = std::move(truth).value();
+  c.x_gcrf = x0;
+  RandomStream geometry_rng(s.seed, c.name + ".geometry");  // the same draw as `visors run`
+  c.geometry.emplace(SpacecraftGeometry::draw(GeometrySettings{}, geometry_rng));
+  GpsReceiverSettings settings = s.gnss.receiver;
+  settings.klobuchar = ionosphere;
+  auto receiver = GpsReceiver::create(settings, RandomStream(s.seed, c.name + ".gps"));
+  if (!receiver.ok()) return core::Error{"gnss.receiver." + receiver.error().field, receiver.error().message};
+  c.receiver.emplace(std::move(receiver).value());
+  return true;
+}
+
+void write_truth_row(std::FILE* f, double t_s, const Craft& c, const GpsReceiverEpoch& e) {
+  const auto& r = c.x_gcrf.r;
+  const auto& v = c.x_gcrf.v;
+  std::fprintf(f, "%.3f,%s,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%d,%d\n", t_s, c.name.c_str(), r.x(), r.y(), r.z(),
+               v.x(), v.y(), v.z(), e.apc_itrf_m.x(), e.apc_itrf_m.y(), e.apc_itrf_m.z(), e.receiver_clock_m, e.visible,
+               e.measurement.channel_count);
+}
+
+void write_channel_rows(std::FILE* f, double t_s, const Craft& c, const GpsReceiverEpoch& e) {
+  for (int k = 0; k < e.measurement.channel_count; ++k) {
+    const GpsChannelTruth& t = e.truth[static_cast<std::size_t>(k)];
+    std::fprintf(f, "%.3f,%s,%d,%.4f,%.4f,%.4f,%lld,%.6f,%.6f,%.4f\n", t_s, c.name.c_str(), t.prn, t.range_m,
+                 t.satellite_clock_m, t.ionosphere_m, static_cast<long long>(t.ambiguity_cycles), t.satellite_phase_cycles,
+                 e.receiver_phase_cycles, t.elevation_antenna_rad / core::kDegToRad);
+  }
+}
+
+}  // namespace
+
+core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const std::filesystem::path& out_dir,
+                                                const std::function<void(const RunProgress&)>& progress) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec) return core::Error{out_dir.string(), "cannot create the output directory: " + ec.message()};
+  {
+    std::ofstream scenario_file(out_dir / "scenario.toml");
+    scenario_file << campaign_to_toml(s);
+    if (!scenario_file) return core::Error{(out_dir / "scenario.toml").string(), "cannot write"};
+  }
+
+  auto world = load_world(s);
+  if (!world.ok()) return world.error();
+  const GpsSatelliteTruth& satellites = *world->satellites;
+  const auto initial = initial_formation_state(s);
+  if (!initial.ok()) return initial.error();
+  const gnss::KlobucharCoefficients ionosphere = world->nav.ionosphere.value_or(gnss::KlobucharCoefficients{});
+  std::array<Craft, 2> crafts;
+  crafts[0].name = "dsc";
+  crafts[1].name = "osc";
+  if (auto ok = set_up(crafts[0], s, s.dsc, initial->dsc_gcrf, ionosphere); !ok) return ok.error();
+  if (auto ok = set_up(crafts[1], s, s.osc, initial->osc_gcrf, ionosphere); !ok) return ok.error();
+
+  if (s.gnss.rinex) {
+    gnss::files::NavigationFile broadcast;
+    broadcast.version = 3.05;
+    broadcast.ionosphere = world->nav.ionosphere;
+    broadcast.leap_seconds = s.t0.gps_minus_utc();
+    broadcast.records.assign(satellites.broadcast().begin(), satellites.broadcast().end());
+    if (auto ok = gnss::files::write_rinex3_navigation(out_dir / "brdc.rnx", broadcast, "visors gnss-sim"); !ok) {
+      return ok.error();
+    }
+  }
+  auto truth_csv = open_output(out_dir / "truth.csv");
+  if (!truth_csv.ok()) return truth_csv.error();
+  auto channels_csv = open_output(out_dir / "channels_truth.csv");
+  if (!channels_csv.ok()) return channels_csv.error();
+  std::fprintf(truth_csv->get(),
+               "t_s,spacecraft,x_gcrf_m,y_gcrf_m,z_gcrf_m,vx_gcrf_mps,vy_gcrf_mps,vz_gcrf_mps,x_apc_itrf_m,y_apc_itrf_m,"
+               "z_apc_itrf_m,receiver_clock_m,visible,tracked\n");
+  std::fprintf(channels_csv->get(),
+               "t_s,spacecraft,prn,range_m,satellite_clock_m,ionosphere_m,ambiguity_cycles,satellite_phase_cycles,"
+               "receiver_phase_cycles,elevation_antenna_deg\n");
+
+  const auto steps = static_cast<std::int64_t>(std::floor(s.gnss.duration_s / s.step_s + 1e-9));
+  const bool observation_attitude = s.gnss.attitude == "observation";
+  double measure_wall_s = 0.0;
+  for (std::int64_t k = 0; k <= steps; ++k) {
+    const double t_s = static_cast<double>(k) * s.step_s;
+    const core::GpsTime t = s.t0 + t_s;
+    core::EarthOrientation eop;
+    if (world->eop) {
+      if (auto at = world->eop->at(t); at.ok()) eop = *at;
+    }
+    const Eigen::Matrix3d gcrf_to_itrf = core::gcrf_to_itrf_matrix(t, eop);
+    const Eigen::Vector3d omega(0.0, 0.0, core::earth_rotation_rate(eop));
+    const Eigen::Vector3d sun_gcrf = astro::sun_position_gcrf(t);
+    for (Craft& c : crafts) {
+      const Eigen::Vector3d sun_unit = (sun_gcrf - c.x_gcrf.r).normalized();
+      const Eigen::Quaterniond q = observation_attitude
+                                       ? AttitudeProfile::observation_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit)
+                                       : AttitudeProfile::nominal_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit);
+      c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
+      ReceiverPose pose;
+      pose.t = t;
+      pose.com_itrf.r = gcrf_to_itrf * c.x_gcrf.r;
+      pose.com_itrf.v = gcrf_to_itrf * c.x_gcrf.v - omega.cross(pose.com_itrf.r);
+      pose.body_to_itrf = gcrf_to_itrf * q.toRotationMatrix();
+      pose.com_body_m = c.geometry->com_body_m();
+      const auto measure_start = std::chrono::steady_clock::now();
+      const GpsReceiverEpoch& epoch = c.receiver->measure(pose, satellites);
+      measure_wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - measure_start).count();
+      c.visible_sum += epoch.visible;
+      c.tracked_sum += epoch.measurement.channel_count;
+      for (int j = 0; j < epoch.measurement.channel_count; ++j) {
+        if (epoch.measurement.channels[static_cast<std::size_t>(j)].loss_of_lock) ++c.acquisitions;
+      }
+      write_truth_row(truth_csv->get(), t_s, c, epoch);
+      write_channel_rows(channels_csv->get(), t_s, c, epoch);
+    }
+    if (progress && k % 60 == 0) {
+      progress({t_s, s.gnss.duration_s,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count()});
+    }
+    if (k == steps) break;
+    for (Craft& c : crafts) {
+      auto next = c.truth.propagator->propagate_to(t, c.x_gcrf, t + s.step_s);
+      if (!next.ok()) return core::Error{c.name + " truth", next.error().describe()};
+      c.x_gcrf = *next;
+    }
+  }
+
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double epochs = static_cast<double>(steps + 1);
+  nlohmann::json summary;
+  summary["epochs"] = steps + 1;
+  summary["duration_s"] = s.gnss.duration_s;
+  summary["satellites"] = satellites.truth().size();
+  summary["wall_s"] = wall;
+  summary["receiver_us_per_epoch_two_spacecraft"] = 1e6 * measure_wall_s / epochs;
+  for (const Craft& c : crafts) {
+    summary["receivers"][c.name] = {{"mean_visible", c.visible_sum / epochs},
+                                    {"mean_tracked", c.tracked_sum / epochs},
+                                    {"acquisitions_and_slips", c.acquisitions}};
+  }
+  std::ofstream summary_file(out_dir / "summary.json");
+  summary_file << summary.dump(2) << "\n";
+  if (!summary_file) return core::Error{(out_dir / "summary.json").string(), "cannot write"};
+  return GnssRunResult{summary, out_dir};
+}
+
+}  // namespace visors::sim

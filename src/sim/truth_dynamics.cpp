@@ -1,0 +1,23 @@
+#include "sim/truth_dynamics.hpp"
+
+#include <string>
+
+namespace visors::sim {
+
+core::Result<TruthDynamics> make_truth_dynamics(const CampaignScenario& s, const SpacecraftSettings& sc,
+                                                std::string_view name) {
+  TruthDynamics d;
+  const dynamics::SpacecraftProperties props{sc.mass_kg, 0.35, sc.cd, sc.srp_area_m2, sc.cr};
+  auto forces = dynamics::ForceModel::create(s.forces, props);
+  if (!forces.ok()) return core::Error{"forces (" + std::string(name) + ")", forces.error().describe()};
+  d.forces = std::make_unique<dynamics::ForceModel>(std::move(forces).value());
+  dynamics::PropagatorSettings ps;
+  ps.integrator = dynamics::IntegratorKind::kRk4Fixed;
+  ps.step = s.integration_step_s;
+  auto propagator = dynamics::OrbitPropagator::create(*d.forces, ps);
+  if (!propagator.ok()) return propagator.error();
+  d.propagator.emplace(std::move(propagator).value());
+  return d;
+}
+
+}  // namespace visors::sim

@@ -1,0 +1,25 @@
+#pragma once
+// The truth force model and propagator of one spacecraft of a scenario (the [forces] model with
+// the spacecraft's mass, Cd, Cr and SRP area; fixed-step RK4 at integration_step_s).
+
+#include <memory>
+#include <optional>
+#include <string_view>
+
+#include "core/status.hpp"
+#include "dynamics/force_model.hpp"
+#include "dynamics/orbit_propagator.hpp"
+#include "sim/campaign_scenario.hpp"
+
+namespace visors::sim {
+
+struct TruthDynamics {
+  std::unique_ptr<dynamics::ForceModel> forces;  // the propagator keeps a pointer: never moves
+  std::optional<dynamics::OrbitPropagator> propagator;
+};
+
+/// Errors name "forces (<name>)" or the propagator setting.
+core::Result<TruthDynamics> make_truth_dynamics(const CampaignScenario& scenario, const SpacecraftSettings& spacecraft,
+                                                std::string_view name);
+
+}  // namespace visors::sim
