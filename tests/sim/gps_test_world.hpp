@@ -2,13 +2,14 @@
 // A small truth world for the GPS receiver tests: the mission-epoch constellation (moved from the
 // 2024 NYA1 navigation file), its broadcast errors, and receiver poses on a circular 500 km,
 // 97.4 deg orbit in a simplified Earth frame (the inertial frame rotated at the GPS Earth rate
-// about z from the mission epoch: exact enough for measurement geometry tests).
+// about z from the mission epoch: exact enough for measurement geometry tests). Also used by
+// bench/bench_gnss.cpp, so it does not depend on GoogleTest.
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
-#include <gtest/gtest.h>
 
 #include "core/constants.hpp"
 #include "core/data_path.hpp"
@@ -24,9 +25,9 @@ inline const core::GpsTime kMissionEpoch = core::GpsTime::from_week_seconds(2334
 
 inline gnss::GpsConstellation mission_constellation() {
   const auto path = core::find_data_file("gnss/NYA100NOR_S_20241280000_01D_GN.rnx");
-  EXPECT_TRUE(path.has_value());
-  const auto nav = gnss::files::read_rinex_navigation(path.value_or("missing"));
-  EXPECT_TRUE(nav.ok()) << nav.error().describe();
+  if (!path) throw std::runtime_error("gnss/NYA100NOR_S_20241280000_01D_GN.rnx not in the data search path");
+  const auto nav = gnss::files::read_rinex_navigation(*path);
+  if (!nav.ok()) throw std::runtime_error(nav.error().describe());
   const auto set = gnss::EphemerisSet::screen(nav->records, nav->record_lines);
   return gnss::GpsConstellation::from_broadcast(set, core::GpsTime::from_week_seconds(2313, 2 * 86400.0 + 43200.0).value(),
                                                 kMissionEpoch)
