@@ -1,0 +1,381 @@
+#include "gnss/files/rinex_obs_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gnss/files/text_file.hpp"
+#include "gnss/gps_constants.hpp"
+
+namespace visors::gnss::files {
+
+namespace {
+
+constexpr std::size_t kMaxTypesPerLine = 13;  // SYS / # / OBS TYPES: 13 codes per line
+constexpr std::size_t kValueWidth = 16;       // F14.3 + LLI + SSI
+
+void header_line(std::FILE* f, const std::string& content, const char* label) {
+  std::fprintf(f, "%-60.60s%-20s\n", content.c_str(), label);
+}
+
+std::string fields(std::initializer_list<std::pair<const std::string*, int>> parts) {
+  std::string out;
+  for (const auto& [text, width] : parts) {
+    std::string field = text->substr(0, static_cast<std::size_t>(width));
+    field.resize(static_cast<std::size_t>(width), ' ');
+    out += field;
+  }
+  return out;
+}
+
+std::string vector_fields(const Eigen::Vector3d& v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%14.4f%14.4f%14.4f", v.x(), v.y(), v.z());
+  return text;
+}
+
+std::string epoch_text(core::GpsTime t) {
+  const core::CalendarTime c = t.calendar(core::TimeScale::kGps);
+  char text[48];
+  std::snprintf(text, sizeof text, "%04d %02d %02d %02d %02d%11.7f", c.year, c.month, c.day, c.hour, c.minute,
+                c.second + static_cast<double>(c.nanosecond) * 1e-9);
+  return text;
+}
+
+void write_header(std::FILE* f, const ObservationHeader& h) {
+  header_line(f, "     3.05           OBSERVATION DATA    G: GPS", "RINEX VERSION / TYPE");
+  const std::string run_by = "visors";
+  header_line(f, fields({{&h.program, 20}, {&run_by, 20}}), "PGM / RUN BY / DATE");
+  for (const auto& comment : h.comments) header_line(f, comment, "COMMENT");
+  header_line(f, h.marker_name, "MARKER NAME");
+  header_line(f, h.marker_type, "MARKER TYPE");
+  header_line(f, fields({{&h.observer, 20}, {&h.agency, 40}}), "OBSERVER / AGENCY");
+  header_line(f, fields({{&h.receiver_number, 20}, {&h.receiver_type, 20}, {&h.receiver_version, 20}}), "REC # / TYPE / VERS");
+  header_line(f, fields({{&h.antenna_number, 20}, {&h.antenna_type, 20}}), "ANT # / TYPE");
+  header_line(f, vector_fields(h.approx_position_m), "APPROX POSITION XYZ");
+  header_line(f, vector_fields(h.antenna_delta_hen_m), "ANTENNA: DELTA H/E/N");
+  char count[16];
+  std::snprintf(count, sizeof count, "G  %3zu", h.observation_types.size());
+  std::string types = count;
+  for (std::size_t k = 0; k < h.observation_types.size(); ++k) {
+    if (k > 0 && k % kMaxTypesPerLine == 0) {
+      header_line(f, types, "SYS / # / OBS TYPES");
+      types = "      ";
+    }
+    types += " " + h.observation_types[k];
+  }
+  header_line(f, types, "SYS / # / OBS TYPES");
+  char interval[16];
+  std::snprintf(interval, sizeof interval, "%10.3f", h.interval_s);
+  header_line(f, interval, "INTERVAL");
+  const core::CalendarTime c = h.first_observation.calendar(core::TimeScale::kGps);
+  char first[64];
+  std::snprintf(first, sizeof first, "%6d%6d%6d%6d%6d%13.7f     GPS", c.year, c.month, c.day, c.hour, c.minute,
+                c.second + static_cast<double>(c.nanosecond) * 1e-9);
+  header_line(f, first, "TIME OF FIRST OBS");
+  header_line(f, "", "END OF HEADER");
+}
+
+}  // namespace
+
+core::Result<Rinex3ObservationWriter> Rinex3ObservationWriter::open(const std::filesystem::path& path,
+                                                                    const ObservationHeader& header) {
+  if (header.observation_types.empty()) return core::Error{"observation_types", "must not be empty"};
+  for (const auto& type : header.observation_types) {
+    if (type.size() != 3) return core::Error{"observation_types", "'" + type + "' is not a 3-character RINEX 3 code"};
+  }
+  std::FILE* f = std::fopen(path.string().c_str(), "w");
+  if (f == nullptr) return core::Error{path.string(), "cannot open the RINEX observation file for writing"};
+  write_header(f, header);
+  return Rinex3ObservationWriter(path, f, header.observation_types.size());
+}
+
+core::Result<bool> Rinex3ObservationWriter::write(const ObservationEpoch& epoch) {
+  const std::string where = "epoch " + epoch.t.format(core::TimeScale::kGps, 3);
+  if (epoch.flag < 0 || epoch.flag > 1) return core::Error{where + ".flag", "must be 0 or 1"};
+  if (epoch.satellites.size() > 999) return core::Error{where, "more than 999 satellites"};
+  std::string text = "> " + epoch_text(epoch.t);
+  char head[48];
+  std::snprintf(head, sizeof head, "  %1d%3zu", epoch.flag, epoch.satellites.size());
+  text += head;
+  if (epoch.receiver_clock_offset_s) {
+    char clock[32];
+    std::snprintf(clock, sizeof clock, "      %15.12f", *epoch.receiver_clock_offset_s);
+    text += clock;
+  }
+  text += "\n";
+  for (const auto& sat : epoch.satellites) {
+    const std::string name = where + ".G" + std::to_string(sat.prn);
+    if (sat.prn < 1 || sat.prn > kMaxGpsPrn) return core::Error{name, "PRN must be in 1..32"};
+    if (sat.values.size() != types_) return core::Error{name, "has a value count different from the header's types"};
+    char id[8];
+    std::snprintf(id, sizeof id, "G%02d", sat.prn);
+    text += id;
+    for (const auto& v : sat.values) {
+      if (v.lli < 0 || v.lli > 9 || v.ssi < 0 || v.ssi > 9) return core::Error{name, "LLI and SSI must be in 0..9"};
+      char field[32];
+      if (v.value) {
+        if (!(std::abs(*v.value) < 1e10)) return core::Error{name, "value does not fit F14.3 (|v| must be < 1e10)"};
+        std::snprintf(field, sizeof field, "%14.3f", *v.value);
+      } else {
+        std::snprintf(field, sizeof field, "%14s", "");
+      }
+      text += field;
+      text += v.lli == 0 ? ' ' : static_cast<char>('0' + v.lli);
+      text += v.ssi == 0 ? ' ' : static_cast<char>('0' + v.ssi);
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    text += "\n";
+  }
+  if (std::fputs(text.c_str(), file_.get()) < 0) return core::Error{path_.string(), "write failed"};
+  return true;
+}
+
+core::Result<bool> Rinex3ObservationWriter::close() {
+  std::FILE* f = file_.release();
+  if (f == nullptr) return true;
+  const bool ok = std::fflush(f) == 0 && std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !ok) return core::Error{path_.string(), "write failed"};
+  return true;
+}
+
+core::Result<bool> write_rinex3_observations(const std::filesystem::path& path, const ObservationFile& file) {
+  auto opened = Rinex3ObservationWriter::open(path, file.header);
+  if (!opened.ok()) return opened.error();
+  Rinex3ObservationWriter writer = std::move(opened).value();
+  for (const auto& epoch : file.epochs) {
+    if (auto ok = writer.write(epoch); !ok) return ok;
+  }
+  return writer.close();
+}
+
+namespace {
+
+class ObservationReader {
+ public:
+  explicit ObservationReader(TextFile file) : file_(std::move(file)) {}
+
+  core::Result<ObservationFile> read() {
+    if (auto error = read_header()) return *error;
+    std::string line;
+    while (file_.next(line)) {
+      if (trim(line).empty()) continue;
+      if (line[0] != '>') return file_.error("expected an epoch record starting with '>'");
+      if (auto error = read_epoch(line)) return *error;
+    }
+    return std::move(result_);
+  }
+
+ private:
+  std::optional<core::Error> read_header() {
+    std::string line;
+    bool first = true, types_seen = false;
+    while (file_.next(line)) {
+      const std::string_view label = trim(column(line, 60, 20));
+      if (first) {
+        first = false;
+        if (label != "RINEX VERSION / TYPE") return file_.error("the first line must be RINEX VERSION / TYPE");
+        const auto version = parse_number(column(line, 0, 9), "version (columns 1-9)");
+        if (!version || !*version) return file_.error("version (columns 1-9) is not a number");
+        if (**version < 3.0 || **version >= 4.0) return file_.error("version " + std::string(trim(column(line, 0, 9))) + " is not 3.x");
+        if (column(line, 20, 1) != "O") return file_.error("file type (column 21) is not O (observation data)");
+        result_.version = **version;
+        continue;
+      }
+      ObservationHeader& h = result_.header;
+      if (label == "END OF HEADER") {
+        if (!types_seen) return file_.error("no SYS / # / OBS TYPES line for GPS (G)");
+        return std::nullopt;
+      }
+      if (label == "PGM / RUN BY / DATE") h.program = std::string(trim(column(line, 0, 20)));
+      if (label == "COMMENT") h.comments.emplace_back(trim(column(line, 0, 60)));
+      if (label == "MARKER NAME") h.marker_name = std::string(trim(column(line, 0, 60)));
+      if (label == "MARKER TYPE") h.marker_type = std::string(trim(column(line, 0, 20)));
+      if (label == "OBSERVER / AGENCY") {
+        h.observer = std::string(trim(column(line, 0, 20)));
+        h.agency = std::string(trim(column(line, 20, 40)));
+      }
+      if (label == "REC # / TYPE / VERS") {
+        h.receiver_number = std::string(trim(column(line, 0, 20)));
+        h.receiver_type = std::string(trim(column(line, 20, 20)));
+        h.receiver_version = std::string(trim(column(line, 40, 20)));
+      }
+      if (label == "ANT # / TYPE") {
+        h.antenna_number = std::string(trim(column(line, 0, 20)));
+        h.antenna_type = std::string(trim(column(line, 20, 20)));
+      }
+      if (label == "APPROX POSITION XYZ" || label == "ANTENNA: DELTA H/E/N") {
+        auto& target = label == "APPROX POSITION XYZ" ? h.approx_position_m : h.antenna_delta_hen_m;
+        for (int k = 0; k < 3; ++k) {
+          const auto value = parse_number(column(line, 14 * static_cast<std::size_t>(k), 14), std::string(label));
+          if (!value) return file_.error(value.error().describe());
+          target(k) = value->value_or(0.0);
+        }
+      }
+      if (label == "INTERVAL") {
+        const auto value = parse_number(column(line, 0, 10), "INTERVAL (columns 1-10)");
+        if (!value) return file_.error(value.error().describe());
+        h.interval_s = value->value_or(0.0);
+      }
+      if (label == "TIME OF FIRST OBS") {
+        const auto t = first_observation(line);
+        if (!t) return file_.error(t.error().describe());
+        h.first_observation = *t;
+      }
+      if (label == "SYS / # / OBS TYPES") {
+        if (auto error = observation_types(line, types_seen)) return error;
+      }
+    }
+    if (first) return file_.file_error("empty file: not a RINEX observation file");
+    return file_.file_error("no END OF HEADER line: the header is truncated");
+  }
+
+  // Continuation lines have a blank system letter and continue the last system's list.
+  std::optional<core::Error> observation_types(std::string_view line, bool& types_seen) {
+    const char system = line.empty() ? ' ' : line[0];
+    if (system != ' ') {
+      current_system_ = system;
+      const auto count = parse_integer(column(line, 3, 3), "number of types (columns 4-6)");
+      if (!count || !*count || **count < 1) return file_.error("number of types (columns 4-6) must be a positive integer");
+      if (system == 'G') {
+        types_seen = true;
+        announced_types_ = static_cast<std::size_t>(**count);
+        result_.header.observation_types.clear();
+      }
+    }
+    if (current_system_ != 'G') return std::nullopt;
+    for (std::size_t k = 0; k < kMaxTypesPerLine && result_.header.observation_types.size() < announced_types_; ++k) {
+      const std::string_view code = trim(column(line, 7 + 4 * k, 3));
+      if (code.size() != 3) return file_.error("observation type " + std::to_string(k + 1) + " (columns " +
+                                               std::to_string(8 + 4 * k) + "-" + std::to_string(10 + 4 * k) + ") is missing");
+      result_.header.observation_types.emplace_back(code);
+    }
+    return std::nullopt;
+  }
+
+  static core::Result<core::GpsTime> calendar_time(std::string_view line, const std::size_t starts[5], std::size_t widths,
+                                                   std::size_t second_start, std::size_t second_width) {
+    const char* names[] = {"year", "month", "day", "hour", "minute"};
+    int values[5] = {};
+    for (std::size_t k = 0; k < 5; ++k) {
+      const auto value = parse_integer(column(line, starts[k], k == 0 ? 4 : widths), names[k]);
+      if (!value) return value.error();
+      if (!*value) return core::Error{names[k], "is blank"};
+      values[k] = static_cast<int>(**value);
+    }
+    const auto second = parse_number(column(line, second_start, second_width), "second");
+    if (!second) return second.error();
+    if (!*second) return core::Error{"second", "is blank"};
+    const double whole = std::floor(**second);
+    core::CalendarTime c{values[0], values[1], values[2], values[3], values[4], static_cast<int>(whole), 0};
+    c.nanosecond = static_cast<std::int64_t>(std::llround((**second - whole) * 1e9));
+    return core::GpsTime::from_calendar(c, core::TimeScale::kGps);
+  }
+
+  core::Result<core::GpsTime> first_observation(std::string_view line) const {
+    const std::string_view system = trim(column(line, 48, 3));
+    if (!system.empty() && system != "GPS") {
+      return core::Error{"TIME OF FIRST OBS", "time system '" + std::string(system) + "': only GPS is supported"};
+    }
+    const std::size_t starts[5] = {2, 6, 12, 18, 24};
+    auto t = calendar_time(line, starts, 6, 30, 13);
+    if (!t) return core::Error{"TIME OF FIRST OBS", t.error().describe()};
+    return t;
+  }
+
+  std::optional<core::Error> read_epoch(const std::string& line) {
+    // "> 2024 10 01 00 00  0.0000000  0 12      -0.000123456789": 1-based columns 3-6 year,
+    // 8-9, 11-12, 14-15, 17-18, 19-29 second, 32 flag, 33-35 count, 42-56 clock offset.
+    const std::size_t starts[5] = {2, 7, 10, 13, 16};
+    const auto flag = parse_integer(column(line, 31, 1), "epoch flag (column 32)");
+    if (!flag || !*flag) return file_.error("epoch flag (column 32) must be a digit 0-6");
+    const auto count = parse_integer(column(line, 32, 3), "number of satellites (columns 33-35)");
+    if (!count) return file_.error(count.error().describe());
+    if (!*count || **count < 0) return file_.error("number of satellites (columns 33-35) is missing");
+    const auto lines = static_cast<std::size_t>(**count);
+    if (**flag >= 2) return skip(lines);  // event records: special header lines, or cycle-slip records
+    auto t = calendar_time(line, starts, 2, 18, 11);
+    if (!t) return file_.error("epoch record: " + t.error().describe());
+    ObservationEpoch epoch;
+    epoch.t = *t;
+    epoch.flag = static_cast<int>(**flag);
+    const auto clock = parse_number(column(line, 41, 15), "receiver clock offset (columns 42-56)");
+    if (!clock) return file_.error(clock.error().describe());
+    epoch.receiver_clock_offset_s = *clock;
+    std::string record;
+    for (std::size_t k = 0; k < lines; ++k) {
+      if (!file_.next(record)) {
+        return file_.error("the epoch announces " + std::to_string(lines) + " satellites, the file ends after " +
+                           std::to_string(k) + " (truncated)");
+      }
+      if (record.empty() || record[0] != 'G') continue;
+      auto sat = satellite(record);
+      if (!sat) return file_.error(sat.error().describe());
+      epoch.satellites.push_back(std::move(sat).value());
+    }
+    result_.epochs.push_back(std::move(epoch));
+    return std::nullopt;
+  }
+
+  core::Result<SatelliteObservations> satellite(std::string_view record) const {
+    const auto prn = parse_integer(column(record, 1, 2), "satellite number (columns 2-3)");
+    if (!prn) return prn.error();
+    if (!*prn || **prn < 1 || **prn > kMaxGpsPrn) return core::Error{"satellite number (columns 2-3)", "must be in 1..32"};
+    SatelliteObservations sat;
+    sat.prn = static_cast<int>(**prn);
+    for (std::size_t k = 0; k < result_.header.observation_types.size(); ++k) {
+      const std::size_t first = 3 + kValueWidth * k;
+      const std::string name = result_.header.observation_types[k] + " (columns " + std::to_string(first + 1) + "-" +
+                               std::to_string(first + 14) + ")";
+      ObservationValue v;
+      const auto value = parse_number(column(record, first, 14), name);
+      if (!value) return value.error();
+      v.value = *value;
+      const std::string_view lli = column(record, first + 14, 1), ssi = column(record, first + 15, 1);
+      v.lli = (lli.empty() || lli[0] == ' ') ? 0 : lli[0] - '0';
+      v.ssi = (ssi.empty() || ssi[0] == ' ') ? 0 : ssi[0] - '0';
+      if (v.lli < 0 || v.lli > 9 || v.ssi < 0 || v.ssi > 9) return core::Error{name, "LLI / signal strength must be digits"};
+      sat.values.push_back(v);
+    }
+    return sat;
+  }
+
+  std::optional<core::Error> skip(std::size_t lines) {
+    std::string ignored;
+    for (std::size_t k = 0; k < lines; ++k) {
+      if (!file_.next(ignored)) return file_.error("event record announces " + std::to_string(lines) + " lines: truncated");
+    }
+    return std::nullopt;
+  }
+
+  TextFile file_;
+  ObservationFile result_;
+  char current_system_ = ' ';
+  std::size_t announced_types_ = 0;
+};
+
+}  // namespace
+
+core::Result<ObservationFile> read_rinex3_observations(const std::filesystem::path& path) {
+  auto file = TextFile::open(path, "RINEX observation file");
+  if (!file) return file.error();
+  return ObservationReader(std::move(file).value()).read();
+}
+
+ObservationEpoch to_observation_epoch(const GpsMeasurementEpoch& epoch, std::optional<double> receiver_clock_offset_s) {
+  ObservationEpoch out;
+  out.t = epoch.t;
+  out.receiver_clock_offset_s = receiver_clock_offset_s;
+  out.satellites.reserve(static_cast<std::size_t>(epoch.channel_count));
+  for (int k = 0; k < epoch.channel_count; ++k) {
+    const GpsChannelMeasurement& m = epoch.channels[static_cast<std::size_t>(k)];
+    const int ssi = std::clamp(static_cast<int>(m.cn0_dbhz / 6.0), 1, 9);
+    out.satellites.push_back({m.prn,
+                              {{m.pseudorange_m, 0, ssi},
+                               {m.carrier_phase_cycles, m.loss_of_lock ? 1 : 0, ssi},
+                               {m.doppler_hz, 0, ssi},
+                               {m.cn0_dbhz, 0, ssi}}});
+  }
+  return out;
+}
+
+}  // namespace visors::gnss::files
