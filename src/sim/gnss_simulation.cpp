@@ -16,6 +16,7 @@
 #include "gnss/constellation.hpp"
 #include "gnss/ephemeris_set.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
+#include "gnss/files/rinex_obs_file.hpp"
 #include "gnss/gps_constants.hpp"
 #include "sim/attitude_profile.hpp"
 #include "sim/drag_area.hpp"
@@ -49,6 +50,7 @@ struct Craft {
   DragArea drag = DragArea::visors_6u();
   std::optional<SpacecraftGeometry> geometry;
   std::optional<GpsReceiver> receiver;
+  std::optional<gnss::files::Rinex3ObservationWriter> rinex;
   double visible_sum = 0.0, tracked_sum = 0.0;
   std::int64_t acquisitions = 0;
 };
@@ -156,6 +158,22 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
       return ok.error();
     }
   }
+  for (Craft& c : crafts) {
+    if (!s.gnss.rinex) break;
+    gnss::files::ObservationHeader header;
+    header.program = "visors gnss-sim";
+    header.marker_name = c.name == "dsc" ? "DSC" : "OSC";
+    header.comments = {"VISORS " + header.marker_name + " simulated L1 C/A receiver",
+                       "truth: channels_truth.csv, truth.csv; orbits: brdc.rnx"};
+    header.approx_position_m = core::gcrf_to_itrf_matrix(s.t0, core::EarthOrientation{}) * c.x_gcrf.r;
+    header.antenna_delta_xyz_m = s.gnss.receiver.antenna_body_m;  // nominal reference point, body frame
+    header.antenna_boresight_xyz = Eigen::Vector3d::UnitZ();       // nominal boresight
+    header.interval_s = s.step_s;
+    header.first_observation = s.t0;
+    auto writer = gnss::files::Rinex3ObservationWriter::open(out_dir / (c.name + ".rnx"), header);
+    if (!writer.ok()) return writer.error();
+    c.rinex.emplace(std::move(writer).value());
+  }
   auto truth_csv = open_output(out_dir / "truth.csv");
   if (!truth_csv.ok()) return truth_csv.error();
   auto channels_csv = open_output(out_dir / "channels_truth.csv");
@@ -200,6 +218,12 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
       for (int j = 0; j < epoch.measurement.channel_count; ++j) {
         if (epoch.measurement.channels[static_cast<std::size_t>(j)].loss_of_lock) ++c.acquisitions;
       }
+      if (c.rinex) {
+        // No receiver clock offset in the epoch records: a real receiver does not know its own
+        // (it is in truth.csv).
+        const auto written = c.rinex->write(gnss::files::to_observation_epoch(epoch.measurement));
+        if (!written.ok()) return written.error();
+      }
       write_truth_row(truth_csv->get(), t_s, c, epoch);
       write_channel_rows(channels_csv->get(), t_s, c, epoch);
     }
@@ -215,6 +239,11 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
     }
   }
 
+  for (Craft& c : crafts) {
+    if (c.rinex) {
+      if (auto closed = c.rinex->close(); !closed.ok()) return closed.error();
+    }
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   const double epochs = static_cast<double>(steps + 1);
   nlohmann::json summary;

@@ -18,6 +18,8 @@ ObservationFile sample_file() {
   f.header.comments = {"simulated receiver"};
   f.header.approx_position_m = {-1234567.8901, 2345678.9012, -6543210.0987};
   f.header.first_observation = gps("2024-10-01T00:00:00");
+  f.header.antenna_delta_xyz_m = Eigen::Vector3d(0.0, 0.0, 0.1);
+  f.header.antenna_boresight_xyz = Eigen::Vector3d::UnitZ();
   for (int k = 0; k < 3; ++k) {
     ObservationEpoch e;
     e.t = gps("2024-10-01T00:00:00") + static_cast<double>(k);
@@ -49,6 +51,10 @@ TEST(RinexObs, WriteReadRoundTrip) {
   EXPECT_EQ(again->header.observation_types, original.header.observation_types);
   EXPECT_EQ(again->header.first_observation, original.header.first_observation);
   EXPECT_NEAR((again->header.approx_position_m - original.header.approx_position_m).norm(), 0.0, 1e-4);
+  ASSERT_TRUE(again->header.antenna_delta_xyz_m.has_value());
+  EXPECT_DOUBLE_EQ(again->header.antenna_delta_xyz_m->z(), 0.1);
+  ASSERT_TRUE(again->header.antenna_boresight_xyz.has_value());
+  EXPECT_DOUBLE_EQ(again->header.antenna_boresight_xyz->z(), 1.0);
   ASSERT_EQ(again->epochs.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     const auto& a = original.epochs[k];

@@ -53,6 +53,8 @@ void write_header(std::FILE* f, const ObservationHeader& h) {
   header_line(f, fields({{&h.antenna_number, 20}, {&h.antenna_type, 20}}), "ANT # / TYPE");
   header_line(f, vector_fields(h.approx_position_m), "APPROX POSITION XYZ");
   header_line(f, vector_fields(h.antenna_delta_hen_m), "ANTENNA: DELTA H/E/N");
+  if (h.antenna_delta_xyz_m) header_line(f, vector_fields(*h.antenna_delta_xyz_m), "ANTENNA: DELTA X/Y/Z");
+  if (h.antenna_boresight_xyz) header_line(f, vector_fields(*h.antenna_boresight_xyz), "ANTENNA: B.SIGHT XYZ");
   char count[16];
   std::snprintf(count, sizeof count, "G  %3zu", h.observation_types.size());
   std::string types = count;
@@ -203,13 +205,18 @@ class ObservationReader {
         h.antenna_number = std::string(trim(column(line, 0, 20)));
         h.antenna_type = std::string(trim(column(line, 20, 20)));
       }
-      if (label == "APPROX POSITION XYZ" || label == "ANTENNA: DELTA H/E/N") {
-        auto& target = label == "APPROX POSITION XYZ" ? h.approx_position_m : h.antenna_delta_hen_m;
+      if (label == "APPROX POSITION XYZ" || label == "ANTENNA: DELTA H/E/N" || label == "ANTENNA: DELTA X/Y/Z" ||
+          label == "ANTENNA: B.SIGHT XYZ") {
+        Eigen::Vector3d v;
         for (int k = 0; k < 3; ++k) {
           const auto value = parse_number(column(line, 14 * static_cast<std::size_t>(k), 14), std::string(label));
           if (!value) return file_.error(value.error().describe());
-          target(k) = value->value_or(0.0);
+          v(k) = value->value_or(0.0);
         }
+        if (label == "APPROX POSITION XYZ") h.approx_position_m = v;
+        if (label == "ANTENNA: DELTA H/E/N") h.antenna_delta_hen_m = v;
+        if (label == "ANTENNA: DELTA X/Y/Z") h.antenna_delta_xyz_m = v;
+        if (label == "ANTENNA: B.SIGHT XYZ") h.antenna_boresight_xyz = v;
       }
       if (label == "INTERVAL") {
         const auto value = parse_number(column(line, 0, 10), "INTERVAL (columns 1-10)");

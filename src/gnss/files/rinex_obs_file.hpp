@@ -34,6 +34,10 @@ struct ObservationHeader {
   std::string antenna_number, antenna_type = "SIMULATED";
   Eigen::Vector3d approx_position_m = Eigen::Vector3d::Zero();    // APPROX POSITION XYZ [m]
   Eigen::Vector3d antenna_delta_hen_m = Eigen::Vector3d::Zero();  // ANTENNA: DELTA H/E/N [m]
+  /// Vehicle receivers (RINEX 3.05 Table A2): the antenna reference point and the boresight in
+  /// the body frame, "ANTENNA: DELTA X/Y/Z" [m] and "ANTENNA: B.SIGHT XYZ" (unit).
+  std::optional<Eigen::Vector3d> antenna_delta_xyz_m;
+  std::optional<Eigen::Vector3d> antenna_boresight_xyz;
   std::vector<std::string> observation_types = {"C1C", "L1C", "D1C", "S1C"};
   double interval_s = 1.0;
   core::GpsTime first_observation;
