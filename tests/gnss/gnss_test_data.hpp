@@ -3,6 +3,8 @@
 // the first usable record of a PRN, for the gnss tests.
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -22,5 +24,29 @@ inline constexpr const char* kBrdc20100702 = "igs-2010-07-02/brdc1830.10n";
 inline constexpr const char* kSp320100702 = "igs-2010-07-02/igs15905.sp3";
 inline constexpr const char* kHert2024 = "HERT00GBR_R_20240920000_01D_GN.rnx";
 inline constexpr const char* kNya2024 = "NYA100NOR_S_20241280000_01D_GN.rnx";
+
+/// The whole text of a file.
+inline std::string file_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// `text` with its line `number` (1-based) replaced, for malformed-input tests.
+inline std::string with_line(const std::string& text, std::size_t number, const std::string& replacement) {
+  std::istringstream in(text);
+  std::string line, out;
+  for (std::size_t k = 1; std::getline(in, line); ++k) out += (k == number ? replacement : line) + "\n";
+  return out;
+}
+
+/// The first `count` lines of `text`.
+inline std::string first_lines(const std::string& text, std::size_t count) {
+  std::istringstream in(text);
+  std::string line, out;
+  for (std::size_t k = 1; k <= count && std::getline(in, line); ++k) out += line + "\n";
+  return out;
+}
 
 }  // namespace visors::test

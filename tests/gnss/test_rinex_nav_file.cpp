@@ -14,13 +14,6 @@ namespace {
 
 core::GpsTime gps(const char* iso) { return core::GpsTime::parse(iso, core::TimeScale::kGps).value(); }
 
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Reference: the header and first record of brdc1820.10n (lines 4-16, quoted values).
 TEST(RinexNav, Rinex2HeaderAndFirstRecord) {
   const auto nav = read_rinex_navigation(test::gnss_data(test::kBrdc20100701));
@@ -77,13 +70,9 @@ TEST(RinexNav, Rinex305NyaFile) {
 // Malformed copies of brdc1820.10n: each error names the file and the line.
 class RinexNavMalformed : public ::testing::Test {
  protected:
-  void SetUp() override { text_ = file_text(test::gnss_data(test::kBrdc20100701)); }
-  // The text with line `number` (1-based) replaced.
+  void SetUp() override { text_ = test::file_text(test::gnss_data(test::kBrdc20100701)); }
   [[nodiscard]] std::string with_line(std::size_t number, const std::string& replacement) const {
-    std::istringstream in(text_);
-    std::string line, out;
-    for (std::size_t k = 1; std::getline(in, line); ++k) out += (k == number ? replacement : line) + "\n";
-    return out;
+    return test::with_line(text_, number, replacement);
   }
   std::string text_;
 };
@@ -99,10 +88,7 @@ TEST_F(RinexNavMalformed, BadNumberNamesFileLineAndColumns) {
 
 TEST_F(RinexNavMalformed, TruncatedRecordNamesTheLastLine) {
   // Keep the header and 5 lines of the first record.
-  std::istringstream in(text_);
-  std::string line, out;
-  for (int k = 1; k <= 13 && std::getline(in, line); ++k) out += line + "\n";
-  test::TempFile file(out, ".10n");
+  test::TempFile file(test::first_lines(text_, 13), ".10n");
   const auto nav = read_rinex_navigation(file.path());
   ASSERT_FALSE(nav.ok());
   EXPECT_EQ(nav.error().field, file.path().string() + ":13");

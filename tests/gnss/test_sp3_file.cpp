@@ -13,13 +13,6 @@ namespace {
 
 core::GpsTime gps(const char* iso) { return core::GpsTime::parse(iso, core::TimeScale::kGps).value(); }
 
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 class Sp3File : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -87,12 +80,9 @@ TEST_F(Sp3File, InterpolationOutsideTheSpanIsAnError) {
 
 class Sp3Malformed : public ::testing::Test {
  protected:
-  void SetUp() override { text_ = file_text(test::gnss_data(test::kSp320100701)); }
+  void SetUp() override { text_ = test::file_text(test::gnss_data(test::kSp320100701)); }
   [[nodiscard]] std::string with_line(std::size_t number, const std::string& replacement) const {
-    std::istringstream in(text_);
-    std::string line, out;
-    for (std::size_t k = 1; std::getline(in, line); ++k) out += (k == number ? replacement : line) + "\n";
-    return out;
+    return test::with_line(text_, number, replacement);
   }
   std::string text_;
 };
@@ -122,10 +112,7 @@ TEST_F(Sp3Malformed, BadEpochLineNamesTheField) {
 
 TEST_F(Sp3Malformed, MissingEpochsAreReported) {
   // Cut the file after the first two epoch blocks (33 lines each from line 23).
-  std::istringstream in(text_);
-  std::string line, out;
-  for (int k = 1; k <= 88 && std::getline(in, line); ++k) out += line + "\n";
-  test::TempFile file(out, ".sp3");
+  test::TempFile file(test::first_lines(text_, 88), ".sp3");
   const auto orbit = Sp3Orbit::read(file.path());
   ASSERT_FALSE(orbit.ok());
   EXPECT_EQ(orbit.error().field, file.path().string());
