@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 
 #include "gnss/files/text_file.hpp"
 #include "gnss/gps_constants.hpp"
@@ -11,7 +12,8 @@ namespace visors::gnss::files {
 namespace {
 
 constexpr std::size_t kMaxTypesPerLine = 13;  // SYS / # / OBS TYPES: 13 codes per line
-constexpr std::size_t kValueWidth = 16;       // F14.3 + LLI + SSI
+constexpr std::size_t kValueWidth = 16;       // F14.3 + LLI (I1) + SSI (I1)
+constexpr std::int64_t kTickNs = 100;         // the epoch's F11.7 seconds resolve 0.1 us
 
 void header_line(std::FILE* f, const std::string& content, const char* label) {
   std::fprintf(f, "%-60.60s%-20s\n", content.c_str(), label);
@@ -27,34 +29,79 @@ std::string fields(std::initializer_list<std::pair<const std::string*, int>> par
   return out;
 }
 
-std::string vector_fields(const Eigen::Vector3d& v) {
+// printf of one number into exactly `width` characters, or nullopt when it does not fit (or is
+// not finite): a wider field would shift every following column.
+std::optional<std::string> fixed(double value, int width, int decimals) {
+  if (!std::isfinite(value)) return std::nullopt;
   char text[64];
-  std::snprintf(text, sizeof text, "%14.4f%14.4f%14.4f", v.x(), v.y(), v.z());
-  return text;
+  const int n = std::snprintf(text, sizeof text, "%*.*f", width, decimals, value);
+  if (n != width) return std::nullopt;
+  return std::string(text);
+}
+
+std::optional<std::string> vector_fields(const Eigen::Vector3d& v) {
+  std::string out;
+  for (int k = 0; k < 3; ++k) {
+    const auto field = fixed(v(k), 14, 4);
+    if (!field) return std::nullopt;
+    out += *field;
+  }
+  return out;
+}
+
+// The calendar of t rounded to the format's 0.1 us, and the seconds as "ss.sssssss" (width 2 + 8).
+std::pair<core::CalendarTime, std::string> rounded_calendar(core::GpsTime t) {
+  std::int64_t ns = t.nanoseconds();
+  const std::int64_t rest = ((ns % kTickNs) + kTickNs) % kTickNs;
+  ns += rest >= kTickNs / 2 ? kTickNs - rest : -rest;
+  const core::CalendarTime c = core::GpsTime::from_nanoseconds(ns).calendar(core::TimeScale::kGps);
+  char seconds[24];
+  std::snprintf(seconds, sizeof seconds, "%2d.%07lld", c.second, static_cast<long long>(c.nanosecond / kTickNs));
+  return {c, seconds};
 }
 
 std::string epoch_text(core::GpsTime t) {
-  const core::CalendarTime c = t.calendar(core::TimeScale::kGps);
+  const auto [c, seconds] = rounded_calendar(t);
   char text[48];
-  std::snprintf(text, sizeof text, "%04d %02d %02d %02d %02d%11.7f", c.year, c.month, c.day, c.hour, c.minute,
-                c.second + static_cast<double>(c.nanosecond) * 1e-9);
+  std::snprintf(text, sizeof text, "%04d %02d %02d %02d %02d %s", c.year, c.month, c.day, c.hour, c.minute,
+                seconds.c_str());
   return text;
 }
 
-void write_header(std::FILE* f, const ObservationHeader& h) {
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y%m%d %H%M%S UTC", &utc);
+  return text;
+}
+
+std::optional<core::Error> write_header(std::FILE* f, const ObservationHeader& h) {
+  const auto approx = vector_fields(h.approx_position_m);
+  const auto hen = vector_fields(h.antenna_delta_hen_m);
+  const auto xyz = h.antenna_delta_xyz_m ? vector_fields(*h.antenna_delta_xyz_m) : std::optional<std::string>("");
+  const auto sight = h.antenna_boresight_xyz ? vector_fields(*h.antenna_boresight_xyz) : std::optional<std::string>("");
+  if (!approx) return core::Error{"approx_position_m", "does not fit APPROX POSITION XYZ (3F14.4)"};
+  if (!hen) return core::Error{"antenna_delta_hen_m", "does not fit ANTENNA: DELTA H/E/N (3F14.4)"};
+  if (!xyz) return core::Error{"antenna_delta_xyz_m", "does not fit ANTENNA: DELTA X/Y/Z (3F14.4)"};
+  if (!sight) return core::Error{"antenna_boresight_xyz", "does not fit ANTENNA: B.SIGHT XYZ (3F14.4)"};
+  const auto interval = fixed(h.interval_s, 10, 3);
+  if (h.interval_s > 0.0 && !interval) return core::Error{"interval_s", "does not fit INTERVAL (F10.3)"};
+
   header_line(f, "     3.05           OBSERVATION DATA    G: GPS", "RINEX VERSION / TYPE");
-  const std::string run_by = "visors";
-  header_line(f, fields({{&h.program, 20}, {&run_by, 20}}), "PGM / RUN BY / DATE");
+  const std::string date = h.creation_date.empty() ? utc_now() : h.creation_date;
+  header_line(f, fields({{&h.program, 20}, {&h.run_by, 20}, {&date, 20}}), "PGM / RUN BY / DATE");
   for (const auto& comment : h.comments) header_line(f, comment, "COMMENT");
   header_line(f, h.marker_name, "MARKER NAME");
   header_line(f, h.marker_type, "MARKER TYPE");
   header_line(f, fields({{&h.observer, 20}, {&h.agency, 40}}), "OBSERVER / AGENCY");
   header_line(f, fields({{&h.receiver_number, 20}, {&h.receiver_type, 20}, {&h.receiver_version, 20}}), "REC # / TYPE / VERS");
   header_line(f, fields({{&h.antenna_number, 20}, {&h.antenna_type, 20}}), "ANT # / TYPE");
-  header_line(f, vector_fields(h.approx_position_m), "APPROX POSITION XYZ");
-  header_line(f, vector_fields(h.antenna_delta_hen_m), "ANTENNA: DELTA H/E/N");
-  if (h.antenna_delta_xyz_m) header_line(f, vector_fields(*h.antenna_delta_xyz_m), "ANTENNA: DELTA X/Y/Z");
-  if (h.antenna_boresight_xyz) header_line(f, vector_fields(*h.antenna_boresight_xyz), "ANTENNA: B.SIGHT XYZ");
+  header_line(f, *approx, "APPROX POSITION XYZ");
+  header_line(f, *hen, "ANTENNA: DELTA H/E/N");
+  if (h.antenna_delta_xyz_m) header_line(f, *xyz, "ANTENNA: DELTA X/Y/Z");
+  if (h.antenna_boresight_xyz) header_line(f, *sight, "ANTENNA: B.SIGHT XYZ");
   char count[16];
   std::snprintf(count, sizeof count, "G  %3zu", h.observation_types.size());
   std::string types = count;
@@ -66,15 +113,14 @@ void write_header(std::FILE* f, const ObservationHeader& h) {
     types += " " + h.observation_types[k];
   }
   header_line(f, types, "SYS / # / OBS TYPES");
-  char interval[16];
-  std::snprintf(interval, sizeof interval, "%10.3f", h.interval_s);
-  header_line(f, interval, "INTERVAL");
-  const core::CalendarTime c = h.first_observation.calendar(core::TimeScale::kGps);
+  if (h.interval_s > 0.0) header_line(f, *interval, "INTERVAL");
+  const auto [c, seconds] = rounded_calendar(h.first_observation);
   char first[64];
-  std::snprintf(first, sizeof first, "%6d%6d%6d%6d%6d%13.7f     GPS", c.year, c.month, c.day, c.hour, c.minute,
-                c.second + static_cast<double>(c.nanosecond) * 1e-9);
+  std::snprintf(first, sizeof first, "%6d%6d%6d%6d%6d   %s     GPS", c.year, c.month, c.day, c.hour, c.minute,
+                seconds.c_str());
   header_line(f, first, "TIME OF FIRST OBS");
   header_line(f, "", "END OF HEADER");
+  return std::nullopt;
 }
 
 }  // namespace
@@ -82,16 +128,21 @@ void write_header(std::FILE* f, const ObservationHeader& h) {
 core::Result<Rinex3ObservationWriter> Rinex3ObservationWriter::open(const std::filesystem::path& path,
                                                                     const ObservationHeader& header) {
   if (header.observation_types.empty()) return core::Error{"observation_types", "must not be empty"};
+  if (header.observation_types.size() > 999) return core::Error{"observation_types", "more than 999 types"};
   for (const auto& type : header.observation_types) {
-    if (type.size() != 3) return core::Error{"observation_types", "'" + type + "' is not a 3-character RINEX 3 code"};
+    if (type.size() != 3 || type.find(' ') != std::string::npos) {
+      return core::Error{"observation_types", "'" + type + "' is not a 3-character RINEX 3 code"};
+    }
   }
   std::FILE* f = std::fopen(path.string().c_str(), "w");
   if (f == nullptr) return core::Error{path.string(), "cannot open the RINEX observation file for writing"};
-  write_header(f, header);
-  return Rinex3ObservationWriter(path, f, header.observation_types.size());
+  Rinex3ObservationWriter writer(path, f, header.observation_types);
+  if (auto error = write_header(f, header)) return *error;
+  return writer;
 }
 
 core::Result<bool> Rinex3ObservationWriter::write(const ObservationEpoch& epoch) {
+  if (!file_) return core::Error{path_.string(), "write after close"};
   const std::string where = "epoch " + epoch.t.format(core::TimeScale::kGps, 3);
   if (epoch.flag < 0 || epoch.flag > 1) return core::Error{where + ".flag", "must be 0 or 1"};
   if (epoch.satellites.size() > 999) return core::Error{where, "more than 999 satellites"};
@@ -100,28 +151,33 @@ core::Result<bool> Rinex3ObservationWriter::write(const ObservationEpoch& epoch)
   std::snprintf(head, sizeof head, "  %1d%3zu", epoch.flag, epoch.satellites.size());
   text += head;
   if (epoch.receiver_clock_offset_s) {
-    char clock[32];
-    std::snprintf(clock, sizeof clock, "      %15.12f", *epoch.receiver_clock_offset_s);
-    text += clock;
+    const auto clock = fixed(*epoch.receiver_clock_offset_s, 15, 12);
+    if (!clock) return core::Error{where + ".receiver_clock_offset_s", "does not fit F15.12 (|offset| < 10 s)"};
+    text += "      " + *clock;
   }
   text += "\n";
   for (const auto& sat : epoch.satellites) {
-    const std::string name = where + ".G" + std::to_string(sat.prn);
+    const std::string name = where + ".G" + (sat.prn < 10 && sat.prn >= 0 ? "0" : "") + std::to_string(sat.prn);
     if (sat.prn < 1 || sat.prn > kMaxGpsPrn) return core::Error{name, "PRN must be in 1..32"};
-    if (sat.values.size() != types_) return core::Error{name, "has a value count different from the header's types"};
+    if (sat.values.size() != types_) {
+      return core::Error{name, "has " + std::to_string(sat.values.size()) + " values, the header " +
+                                   std::to_string(types_) + " observation types"};
+    }
     char id[8];
     std::snprintf(id, sizeof id, "G%02d", sat.prn);
     text += id;
-    for (const auto& v : sat.values) {
-      if (v.lli < 0 || v.lli > 9 || v.ssi < 0 || v.ssi > 9) return core::Error{name, "LLI and SSI must be in 0..9"};
-      char field[32];
+    for (std::size_t k = 0; k < sat.values.size(); ++k) {
+      const ObservationValue& v = sat.values[k];
+      const std::string value_name = name + "." + types_names_[k];
+      if (v.lli < 0 || v.lli > 7) return core::Error{value_name, "LLI must be in 0..7"};
+      if (v.ssi < 0 || v.ssi > 9) return core::Error{value_name, "signal strength must be in 0..9"};
       if (v.value) {
-        if (!(std::abs(*v.value) < 1e10)) return core::Error{name, "value does not fit F14.3 (|v| must be < 1e10)"};
-        std::snprintf(field, sizeof field, "%14.3f", *v.value);
+        const auto field = fixed(*v.value, 14, 3);
+        if (!field) return core::Error{value_name, "value does not fit F14.3 (must be finite, > -1e9, < 1e10)"};
+        text += *field;
       } else {
-        std::snprintf(field, sizeof field, "%14s", "");
+        text.append(14, ' ');
       }
-      text += field;
       text += v.lli == 0 ? ' ' : static_cast<char>('0' + v.lli);
       text += v.ssi == 0 ? ' ' : static_cast<char>('0' + v.ssi);
     }
@@ -140,14 +196,19 @@ core::Result<bool> Rinex3ObservationWriter::close() {
   return true;
 }
 
-core::Result<bool> write_rinex3_observations(const std::filesystem::path& path, const ObservationFile& file) {
-  auto opened = Rinex3ObservationWriter::open(path, file.header);
+core::Result<bool> write_rinex3_observations(const std::filesystem::path& path, const ObservationHeader& header,
+                                             std::span<const ObservationEpoch> epochs) {
+  auto opened = Rinex3ObservationWriter::open(path, header);
   if (!opened.ok()) return opened.error();
   Rinex3ObservationWriter writer = std::move(opened).value();
-  for (const auto& epoch : file.epochs) {
+  for (const auto& epoch : epochs) {
     if (auto ok = writer.write(epoch); !ok) return ok;
   }
   return writer.close();
+}
+
+core::Result<bool> write_rinex3_observations(const std::filesystem::path& path, const ObservationFile& file) {
+  return write_rinex3_observations(path, file.header, file.epochs);
 }
 
 namespace {
@@ -185,10 +246,18 @@ class ObservationReader {
       }
       ObservationHeader& h = result_.header;
       if (label == "END OF HEADER") {
-        if (!types_seen) return file_.error("no SYS / # / OBS TYPES line for GPS (G)");
+        if (!types_seen) return file_.error("no SYS / # / OBS TYPES line for GPS (G) before END OF HEADER");
+        if (h.observation_types.size() != announced_types_) {
+          return file_.error("SYS / # / OBS TYPES announces " + std::to_string(announced_types_) + " GPS types, " +
+                             std::to_string(h.observation_types.size()) + " are listed");
+        }
         return std::nullopt;
       }
-      if (label == "PGM / RUN BY / DATE") h.program = std::string(trim(column(line, 0, 20)));
+      if (label == "PGM / RUN BY / DATE") {
+        h.program = std::string(trim(column(line, 0, 20)));
+        h.run_by = std::string(trim(column(line, 20, 20)));
+        h.creation_date = std::string(trim(column(line, 40, 20)));
+      }
       if (label == "COMMENT") h.comments.emplace_back(trim(column(line, 0, 60)));
       if (label == "MARKER NAME") h.marker_name = std::string(trim(column(line, 0, 60)));
       if (label == "MARKER TYPE") h.marker_type = std::string(trim(column(line, 0, 20)));
@@ -233,7 +302,7 @@ class ObservationReader {
       }
     }
     if (first) return file_.file_error("empty file: not a RINEX observation file");
-    return file_.file_error("no END OF HEADER line: the header is truncated");
+    return file_.error("the file ends here without an END OF HEADER line: the header is truncated");
   }
 
   // Continuation lines have a blank system letter and continue the last system's list.
@@ -244,6 +313,7 @@ class ObservationReader {
       const auto count = parse_integer(column(line, 3, 3), "number of types (columns 4-6)");
       if (!count || !*count || **count < 1) return file_.error("number of types (columns 4-6) must be a positive integer");
       if (system == 'G') {
+        if (types_seen) return file_.error("a second SYS / # / OBS TYPES line for G");
         types_seen = true;
         announced_types_ = static_cast<std::size_t>(**count);
         result_.header.observation_types.clear();
@@ -269,13 +339,31 @@ class ObservationReader {
       if (!*value) return core::Error{names[k], "is blank"};
       values[k] = static_cast<int>(**value);
     }
-    const auto second = parse_number(column(line, second_start, second_width), "second");
-    if (!second) return second.error();
-    if (!*second) return core::Error{"second", "is blank"};
-    const double whole = std::floor(**second);
-    core::CalendarTime c{values[0], values[1], values[2], values[3], values[4], static_cast<int>(whole), 0};
-    c.nanosecond = static_cast<std::int64_t>(std::llround((**second - whole) * 1e9));
+    core::CalendarTime c{values[0], values[1], values[2], values[3], values[4], 0, 0};
+    if (auto error = seconds(column(line, second_start, second_width), c)) return *error;
     return core::GpsTime::from_calendar(c, core::TimeScale::kGps);
+  }
+
+  // "ss.sssssss" (F11.7 / F13.7) read exactly (no binary rounding) into second and nanosecond;
+  // digits beyond the ninth decimal are ignored.
+  static std::optional<core::Error> seconds(std::string_view field, core::CalendarTime& c) {
+    const std::string_view text = trim(field);
+    if (text.empty()) return core::Error{"second", "is blank"};
+    const std::size_t dot = text.find('.');
+    const std::string_view whole = text.substr(0, dot);
+    const std::string_view fraction = dot == std::string_view::npos ? std::string_view() : text.substr(dot + 1);
+    const auto is_digit = [](char ch) { return ch >= '0' && ch <= '9'; };
+    if (whole.empty() || whole.size() > 2 || !std::all_of(whole.begin(), whole.end(), is_digit) ||
+        !std::all_of(fraction.begin(), fraction.end(), is_digit)) {
+      std::string problem(1, '\'');
+      problem.append(text).append("' is not a number of seconds ss.sssssss");
+      return core::Error{"second", problem};
+    }
+    c.second = std::stoi(std::string(whole));
+    std::int64_t ns = 0;
+    for (std::size_t k = 0; k < 9; ++k) ns = ns * 10 + (k < fraction.size() ? fraction[k] - '0' : 0);
+    c.nanosecond = ns;
+    return std::nullopt;
   }
 
   core::Result<core::GpsTime> first_observation(std::string_view line) const {
@@ -294,10 +382,10 @@ class ObservationReader {
     // 8-9, 11-12, 14-15, 17-18, 19-29 second, 32 flag, 33-35 count, 42-56 clock offset.
     const std::size_t starts[5] = {2, 7, 10, 13, 16};
     const auto flag = parse_integer(column(line, 31, 1), "epoch flag (column 32)");
-    if (!flag || !*flag) return file_.error("epoch flag (column 32) must be a digit 0-6");
+    if (!flag || !*flag || **flag < 0 || **flag > 6) return file_.error("epoch flag (column 32) must be a digit 0-6");
     const auto count = parse_integer(column(line, 32, 3), "number of satellites (columns 33-35)");
     if (!count) return file_.error(count.error().describe());
-    if (!*count || **count < 0) return file_.error("number of satellites (columns 33-35) is missing");
+    if (!*count || **count < 0) return file_.error("number of satellites / records (columns 33-35) is missing");
     const auto lines = static_cast<std::size_t>(**count);
     if (**flag >= 2) return skip(lines);  // event records: special header lines, or cycle-slip records
     auto t = calendar_time(line, starts, 2, 18, 11);
@@ -314,7 +402,16 @@ class ObservationReader {
         return file_.error("the epoch announces " + std::to_string(lines) + " satellites, the file ends after " +
                            std::to_string(k) + " (truncated)");
       }
-      if (record.empty() || record[0] != 'G') continue;
+      const char system = record.empty() ? ' ' : record[0];
+      if (system == '>') {
+        return file_.error("the epoch announces " + std::to_string(lines) + " satellites, the next epoch record "
+                           "starts after " + std::to_string(k) + " (truncated epoch)");
+      }
+      if (std::string_view("GRECJIS").find(system) == std::string_view::npos) {
+        return file_.error("satellite system (column 1) '" + std::string(1, system) +
+                           "' is not one of G R E C J I S: not a satellite record");
+      }
+      if (system != 'G') continue;
       auto sat = satellite(record);
       if (!sat) return file_.error(sat.error().describe());
       epoch.satellites.push_back(std::move(sat).value());
@@ -340,7 +437,14 @@ class ObservationReader {
       const std::string_view lli = column(record, first + 14, 1), ssi = column(record, first + 15, 1);
       v.lli = (lli.empty() || lli[0] == ' ') ? 0 : lli[0] - '0';
       v.ssi = (ssi.empty() || ssi[0] == ' ') ? 0 : ssi[0] - '0';
-      if (v.lli < 0 || v.lli > 9 || v.ssi < 0 || v.ssi > 9) return core::Error{name, "LLI / signal strength must be digits"};
+      if (v.lli < 0 || v.lli > 7) {
+        return core::Error{result_.header.observation_types[k] + " LLI (column " + std::to_string(first + 15) + ")",
+                           "'" + std::string(lli) + "' is not a loss-of-lock indicator 0-7"};
+      }
+      if (v.ssi < 0 || v.ssi > 9) {
+        return core::Error{result_.header.observation_types[k] + " signal strength (column " + std::to_string(first + 16) + ")",
+                           "'" + std::string(ssi) + "' is not a digit 0-9"};
+      }
       sat.values.push_back(v);
     }
     return sat;
@@ -349,7 +453,10 @@ class ObservationReader {
   std::optional<core::Error> skip(std::size_t lines) {
     std::string ignored;
     for (std::size_t k = 0; k < lines; ++k) {
-      if (!file_.next(ignored)) return file_.error("event record announces " + std::to_string(lines) + " lines: truncated");
+      if (!file_.next(ignored)) {
+        return file_.error("the event record announces " + std::to_string(lines) + " lines, the file ends after " +
+                           std::to_string(k) + " (truncated)");
+      }
     }
     return std::nullopt;
   }

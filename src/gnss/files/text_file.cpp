@@ -6,6 +6,20 @@
 
 namespace visors::gnss::files {
 
+namespace {
+
+// "'<text>' is not <what>", built by appending (GCC 12 reports a false -Wrestrict on
+// "'" + std::string(...)).
+std::string not_a(std::string_view text, const char* what) {
+  std::string message(1, '\'');
+  message.append(text);
+  message.append("' is not ");
+  message.append(what);
+  return message;
+}
+
+}  // namespace
+
 core::Result<TextFile> TextFile::open(const std::filesystem::path& path, const std::string& what) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
@@ -53,7 +67,7 @@ core::Result<std::optional<double>> parse_number(std::string_view field, std::st
   double value = 0.0;
   const auto [end, ec] = std::from_chars(begin, normal.data() + normal.size(), value);
   if (ec != std::errc() || end != normal.data() + normal.size() || !std::isfinite(value)) {
-    return core::Error{std::string(name), "'" + std::string(text) + "' is not a number"};
+    return core::Error{std::string(name), not_a(text, "a number")};
   }
   return std::optional<double>(value);
 }
@@ -66,7 +80,7 @@ core::Result<std::optional<long long>> parse_integer(std::string_view field, std
   long long value = 0;
   const auto [end, ec] = std::from_chars(begin, text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size()) {
-    return core::Error{std::string(name), "'" + std::string(text) + "' is not an integer"};
+    return core::Error{std::string(name), not_a(text, "an integer")};
   }
   return std::optional<long long>(value);
 }
