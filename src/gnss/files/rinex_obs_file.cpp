@@ -152,7 +152,7 @@ core::Result<bool> Rinex3ObservationWriter::write(const ObservationEpoch& epoch)
   text += head;
   if (epoch.receiver_clock_offset_s) {
     const auto clock = fixed(*epoch.receiver_clock_offset_s, 15, 12);
-    if (!clock) return core::Error{where + ".receiver_clock_offset_s", "does not fit F15.12 (|offset| < 10 s)"};
+    if (!clock) return core::Error{where + ".receiver_clock_offset_s", "does not fit F15.12 (-10 s < offset < 100 s)"};
     text += "      " + *clock;
   }
   text += "\n";

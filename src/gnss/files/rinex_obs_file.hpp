@@ -65,7 +65,7 @@ struct SatelliteObservations {
 struct ObservationEpoch {
   core::GpsTime t;  // receiver time tag (GPS time scale)
   int flag = 0;     // 0 OK, 1 power failure since the previous epoch
-  std::optional<double> receiver_clock_offset_s;  // F15.12: |offset| < 10 s (negative > -10 s)
+  std::optional<double> receiver_clock_offset_s;  // must fit F15.12: -10 s < offset < 100 s
   std::vector<SatelliteObservations> satellites;
 };
 
