@@ -18,6 +18,13 @@ inline std::filesystem::path gnss_data(const std::string& relative) {
   return path.value_or(std::filesystem::path("gnss") / relative);
 }
 
+inline bool have_gnss_data(const std::string& relative) { return core::find_data_file("gnss/" + relative).has_value(); }
+
+/// Skips the current test when a GNSS data file is not in the data search path (README "Data files").
+#define VISORS_SKIP_WITHOUT_GNSS_DATA(relative)                                                              \
+  if (!visors::test::have_gnss_data(relative))                                                            \
+  GTEST_SKIP() << "gnss/" << (relative) << " not found: set VISORS_DATA_PATH to the shared data folder"
+
 inline constexpr const char* kBrdc20100701 = "igs-2010-07-01/brdc1820.10n";
 inline constexpr const char* kSp320100701 = "igs-2010-07-01/igs15904.sp3";
 inline constexpr const char* kBrdc20100702 = "igs-2010-07-02/brdc1830.10n";

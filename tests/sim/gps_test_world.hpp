@@ -23,8 +23,14 @@ namespace visors::test {
 
 inline const core::GpsTime kMissionEpoch = core::GpsTime::from_week_seconds(2334, 172800.0).value();  // 2024-10-01
 
+inline constexpr const char* kMissionNavFile = "gnss/NYA100NOR_S_20241280000_01D_GN.rnx";
+
+/// Whether the navigation file of the mission constellation is in the data search path (tests
+/// skip without it, README "Data files").
+inline bool have_mission_nav() { return core::find_data_file(kMissionNavFile).has_value(); }
+
 inline gnss::GpsConstellation mission_constellation() {
-  const auto path = core::find_data_file("gnss/NYA100NOR_S_20241280000_01D_GN.rnx");
+  const auto path = core::find_data_file(kMissionNavFile);
   if (!path) throw std::runtime_error("gnss/NYA100NOR_S_20241280000_01D_GN.rnx not in the data search path");
   const auto nav = gnss::files::read_rinex_navigation(*path);
   if (!nav.ok()) throw std::runtime_error(nav.error().describe());

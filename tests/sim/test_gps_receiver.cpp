@@ -17,6 +17,7 @@ using test::pose;
 class GpsReceiverTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
+    if (!test::have_mission_nav()) return;
     constellation_ = std::make_unique<gnss::GpsConstellation>(test::mission_constellation());
     truth_ = std::make_unique<GpsSatelliteTruth>(
         GpsSatelliteTruth::create(*constellation_, {}, RandomStream(7, "gps.satellites")).value());
@@ -24,6 +25,9 @@ class GpsReceiverTest : public ::testing::Test {
   static void TearDownTestSuite() {
     truth_.reset();
     constellation_.reset();
+  }
+  void SetUp() override {
+    if (!test::have_mission_nav()) GTEST_SKIP() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
   }
   static GpsReceiverSettings settings() {
     GpsReceiverSettings s;

@@ -10,6 +10,7 @@ namespace visors::sim {
 namespace {
 
 TEST(GpsReceiverAlloc, MeasureAllocatesNothing) {
+  if (!test::have_mission_nav()) GTEST_SKIP() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
   const gnss::GpsConstellation constellation = test::mission_constellation();
   const auto truth = GpsSatelliteTruth::create(constellation, {}, RandomStream(7, "gps.satellites")).value();
   GpsReceiverSettings settings;
