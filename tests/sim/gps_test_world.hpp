@@ -46,12 +46,15 @@ struct CircularOrbit {
   double radius_m = core::kWgs84SemiMajorAxis + 500e3;
   double inclination_rad = 97.4 * core::kDegToRad;
   double u0_rad = 0.3;
+  double raan_rad = 0.0;
   double along_offset_m = 0.0;
 
   [[nodiscard]] core::StateVector inertial(double t_s) const {
     const double n = std::sqrt(gnss::kGpsMu / (radius_m * radius_m * radius_m));
     const double u = u0_rad + n * t_s + along_offset_m / radius_m;
-    const Eigen::Matrix3d plane = Eigen::AngleAxisd(inclination_rad, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    const Eigen::Matrix3d plane = (Eigen::AngleAxisd(raan_rad, Eigen::Vector3d::UnitZ()) *
+                                   Eigen::AngleAxisd(inclination_rad, Eigen::Vector3d::UnitX()))
+                                      .toRotationMatrix();
     return {plane * Eigen::Vector3d(radius_m * std::cos(u), radius_m * std::sin(u), 0.0),
             plane * Eigen::Vector3d(-radius_m * n * std::sin(u), radius_m * n * std::cos(u), 0.0)};
   }
@@ -62,14 +65,9 @@ inline Eigen::Matrix3d inertial_to_earth(double t_s) {
   return Eigen::AngleAxisd(-gnss::kGpsEarthRate * t_s, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
-/// Body axes: +Z (antenna) along the zenith, +X along the velocity; `tilt_rad` about body X.
-inline sim::ReceiverPose pose(const CircularOrbit& orbit, double t_s, double tilt_rad = 0.0) {
+/// The pose for a given body-to-inertial attitude.
+inline sim::ReceiverPose pose_with_attitude(const CircularOrbit& orbit, double t_s, const Eigen::Matrix3d& body_to_inertial) {
   const core::StateVector x = orbit.inertial(t_s);
-  const Eigen::Vector3d z = x.r.normalized();
-  const Eigen::Vector3d y = z.cross(x.v).normalized();
-  Eigen::Matrix3d body_to_inertial;
-  body_to_inertial << y.cross(z), y, z;
-  body_to_inertial = body_to_inertial * Eigen::AngleAxisd(tilt_rad, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Eigen::Matrix3d to_earth = inertial_to_earth(t_s);
   const Eigen::Vector3d omega(0.0, 0.0, gnss::kGpsEarthRate);
   sim::ReceiverPose p;
@@ -77,6 +75,16 @@ inline sim::ReceiverPose pose(const CircularOrbit& orbit, double t_s, double til
   p.com_itrf = {to_earth * x.r, to_earth * (x.v - omega.cross(x.r))};
   p.body_to_itrf = to_earth * body_to_inertial;
   return p;
+}
+
+/// Body axes: +Z (antenna) along the zenith, +X along the velocity; `tilt_rad` about body X.
+inline sim::ReceiverPose pose(const CircularOrbit& orbit, double t_s, double tilt_rad = 0.0) {
+  const core::StateVector x = orbit.inertial(t_s);
+  const Eigen::Vector3d z = x.r.normalized();
+  const Eigen::Vector3d y = z.cross(x.v).normalized();
+  Eigen::Matrix3d body_to_inertial;
+  body_to_inertial << y.cross(z), y, z;
+  return pose_with_attitude(orbit, t_s, body_to_inertial * Eigen::AngleAxisd(tilt_rad, Eigen::Vector3d::UnitX()).toRotationMatrix());
 }
 
 /// The ionosphere of the 2024 NYA1 file's header (GPSA / GPSB).
