@@ -53,7 +53,6 @@ core::Result<bool> validate(const BroadcastEphemeris& e) {
                                       ", " + std::to_string(b.high) + "]"};
     }
   }
-  if (e.eccentricity >= 0.05) return core::Error{"eccentricity", "must be < 0.05"};
   if (!(e.fit_interval_h > 0.0 && e.fit_interval_h <= 240.0)) return core::Error{"fit_interval_h", "must be in (0, 240] h"};
   return true;
 }

@@ -46,7 +46,7 @@ struct BroadcastEphemeris {
 
 /// Plausibility of the decoded values for a GPS orbit, naming the field: prn in 1..32, every value
 /// finite, sqrt_a in [5000, 5300] m^(1/2) (GPS a = 26,560 km; +/- 2,000 km), eccentricity in
-/// [0, 0.05), i0 in [45, 70] deg, |omega_dot| < 1e-7 rad/s, |delta_n| and |idot| < 1e-7 rad/s,
+/// [0, 0.05], i0 in [45, 70] deg, |omega_dot| < 1e-7 rad/s, |delta_n| and |idot| < 1e-7 rad/s,
 /// |harmonic corrections| below 1e-3 rad / 2,000 m, fit interval > 0. A record failing it was
 /// corrupted between the satellite and the file (GPS orbits never leave these bounds).
 core::Result<bool> validate(const BroadcastEphemeris& eph);

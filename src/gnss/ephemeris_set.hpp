@@ -18,8 +18,8 @@
 // Health and plausibility alone miss the corrupt record of the 2010 IGS file: a healthy-flagged
 // PRN 1 record at 06:00 that is 40,000 km away from the satellite.
 //
-// Selection: among the usable records of the PRN within their fit interval at t, the one with
-// t_oe closest to t; on equal distance, the later transmission. Allocation-free.
+// Selection: the usable record of the PRN with t_oe closest to t (on equal distance, the later
+// transmission), if t is within its fit interval. Allocation-free.
 
 #include <cstddef>
 #include <span>
