@@ -164,31 +164,11 @@ class NavigationReader {
   }
 
   core::Result<core::GpsTime> epoch(std::string_view line) const {
-    // RINEX 2: I2 yy, 4 x (1X I2), F5.1 from column 3; RINEX 3: 1X I4, 5 x (1X I2.2) from column 4.
-    const std::size_t first = rinex3_ ? 4 : 3;
-    const std::size_t year_width = rinex3_ ? 4 : 2;
-    const auto year = parse_integer(column(line, first, year_width), "t_oc year");
-    if (!year) return year.error();
-    std::array<long long, 4> fields{};
-    const char* names[] = {"t_oc month", "t_oc day", "t_oc hour", "t_oc minute"};
-    std::size_t at = first + year_width + 1;
-    for (std::size_t k = 0; k < 4; ++k, at += 3) {
-      const auto value = parse_integer(column(line, at, 2), names[k]);
-      if (!value) return value.error();
-      if (!*value) return core::Error{names[k], "is blank"};
-      fields[k] = **value;
-    }
-    // RINEX 2's F5.1 second includes the separating blank.
-    const auto second = parse_number(rinex3_ ? column(line, at, 2) : column(line, at - 1, 5), "t_oc second");
-    if (!second) return second.error();
-    if (!*year || !*second) return core::Error{"t_oc", "year or second is blank"};
-    long long full_year = **year;
-    if (!rinex3_) full_year += full_year >= 80 ? 1900 : 2000;
-    const double whole = std::floor(**second);
-    core::CalendarTime calendar{static_cast<int>(full_year), static_cast<int>(fields[0]), static_cast<int>(fields[1]),
-                                static_cast<int>(fields[2]), static_cast<int>(fields[3]), static_cast<int>(whole), 0};
-    calendar.nanosecond = static_cast<std::int64_t>(std::llround((**second - whole) * 1e9));
-    auto t = core::GpsTime::from_calendar(calendar, core::TimeScale::kGps);
+    // RINEX 3: A1 I2.2 1X I4 5(1X I2.2); RINEX 2: I2 1X I2.2 4(1X I2) F5.1 (the second's field
+    // includes the separating blank).
+    static constexpr CalendarColumns kRinex3{{4, 4}, {9, 2}, {12, 2}, {15, 2}, {18, 2}, {21, 2}};
+    static constexpr CalendarColumns kRinex2{{3, 2}, {6, 2}, {9, 2}, {12, 2}, {15, 2}, {17, 5}, true};
+    auto t = parse_gps_calendar(line, rinex3_ ? kRinex3 : kRinex2);
     if (!t) return core::Error{"t_oc", t.error().describe()};
     return t;
   }

@@ -329,50 +329,14 @@ class ObservationReader {
     return std::nullopt;
   }
 
-  static core::Result<core::GpsTime> calendar_time(std::string_view line, const std::size_t starts[5], std::size_t widths,
-                                                   std::size_t second_start, std::size_t second_width) {
-    const char* names[] = {"year", "month", "day", "hour", "minute"};
-    int values[5] = {};
-    for (std::size_t k = 0; k < 5; ++k) {
-      const auto value = parse_integer(column(line, starts[k], k == 0 ? 4 : widths), names[k]);
-      if (!value) return value.error();
-      if (!*value) return core::Error{names[k], "is blank"};
-      values[k] = static_cast<int>(**value);
-    }
-    core::CalendarTime c{values[0], values[1], values[2], values[3], values[4], 0, 0};
-    if (auto error = seconds(column(line, second_start, second_width), c)) return *error;
-    return core::GpsTime::from_calendar(c, core::TimeScale::kGps);
-  }
-
-  // "ss.sssssss" (F11.7 / F13.7) read exactly (no binary rounding) into second and nanosecond;
-  // digits beyond the ninth decimal are ignored.
-  static std::optional<core::Error> seconds(std::string_view field, core::CalendarTime& c) {
-    const std::string_view text = trim(field);
-    if (text.empty()) return core::Error{"second", "is blank"};
-    const std::size_t dot = text.find('.');
-    const std::string_view whole = text.substr(0, dot);
-    const std::string_view fraction = dot == std::string_view::npos ? std::string_view() : text.substr(dot + 1);
-    const auto is_digit = [](char ch) { return ch >= '0' && ch <= '9'; };
-    if (whole.empty() || whole.size() > 2 || !std::all_of(whole.begin(), whole.end(), is_digit) ||
-        !std::all_of(fraction.begin(), fraction.end(), is_digit)) {
-      std::string problem(1, '\'');
-      problem.append(text).append("' is not a number of seconds ss.sssssss");
-      return core::Error{"second", problem};
-    }
-    c.second = std::stoi(std::string(whole));
-    std::int64_t ns = 0;
-    for (std::size_t k = 0; k < 9; ++k) ns = ns * 10 + (k < fraction.size() ? fraction[k] - '0' : 0);
-    c.nanosecond = ns;
-    return std::nullopt;
-  }
-
   core::Result<core::GpsTime> first_observation(std::string_view line) const {
     const std::string_view system = trim(column(line, 48, 3));
     if (!system.empty() && system != "GPS") {
       return core::Error{"TIME OF FIRST OBS", "time system '" + std::string(system) + "': only GPS is supported"};
     }
-    const std::size_t starts[5] = {2, 6, 12, 18, 24};
-    auto t = calendar_time(line, starts, 6, 30, 13);
+    // 5I6, F13.7 (RINEX 3.05 Table A1).
+    static constexpr CalendarColumns kFirst{{2, 4}, {6, 6}, {12, 6}, {18, 6}, {24, 6}, {30, 13}};
+    auto t = parse_gps_calendar(line, kFirst);
     if (!t) return core::Error{"TIME OF FIRST OBS", t.error().describe()};
     return t;
   }
@@ -380,7 +344,6 @@ class ObservationReader {
   std::optional<core::Error> read_epoch(const std::string& line) {
     // "> 2024 10 01 00 00  0.0000000  0 12      -0.000123456789": 1-based columns 3-6 year,
     // 8-9, 11-12, 14-15, 17-18, 19-29 second, 32 flag, 33-35 count, 42-56 clock offset.
-    const std::size_t starts[5] = {2, 7, 10, 13, 16};
     const auto flag = parse_integer(column(line, 31, 1), "epoch flag (column 32)");
     if (!flag || !*flag || **flag < 0 || **flag > 6) return file_.error("epoch flag (column 32) must be a digit 0-6");
     const auto count = parse_integer(column(line, 32, 3), "number of satellites (columns 33-35)");
@@ -388,7 +351,8 @@ class ObservationReader {
     if (!*count || **count < 0) return file_.error("number of satellites / records (columns 33-35) is missing");
     const auto lines = static_cast<std::size_t>(**count);
     if (**flag >= 2) return skip(lines);  // event records: special header lines, or cycle-slip records
-    auto t = calendar_time(line, starts, 2, 18, 11);
+    static constexpr CalendarColumns kEpoch{{2, 4}, {7, 2}, {10, 2}, {13, 2}, {16, 2}, {18, 11}};
+    auto t = parse_gps_calendar(line, kEpoch);
     if (!t) return file_.error("epoch record: " + t.error().describe());
     ObservationEpoch epoch;
     epoch.t = *t;

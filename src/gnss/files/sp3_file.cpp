@@ -13,30 +13,7 @@ constexpr double kMissingClock = 999999.0;  // [us]; the file writes 999999.9999
 
 // "*  2010  7  1  0  0  0.00000000" (SP3-d Table 2: year 4-7, month 9-10, day 12-13, hour 15-16,
 // minute 18-19, second 21-31, 1-based columns).
-core::Result<core::GpsTime> epoch_time(std::string_view line) {
-  struct Field {
-    std::size_t first, width;
-    const char* name;
-  };
-  const Field fields[] = {{3, 4, "year (columns 4-7)"},  {8, 2, "month (columns 9-10)"},  {11, 2, "day (columns 12-13)"},
-                          {14, 2, "hour (columns 15-16)"}, {17, 2, "minute (columns 18-19)"}};
-  int values[5] = {};
-  for (std::size_t k = 0; k < 5; ++k) {
-    const auto value = parse_integer(column(line, fields[k].first, fields[k].width), fields[k].name);
-    if (!value) return value.error();
-    if (!*value) return core::Error{fields[k].name, "is blank"};
-    values[k] = static_cast<int>(**value);
-  }
-  const auto second = parse_number(column(line, 20, 11), "second (columns 21-31)");
-  if (!second) return second.error();
-  if (!*second) return core::Error{"second (columns 21-31)", "is blank"};
-  const double whole = std::floor(**second);
-  core::CalendarTime c{values[0], values[1], values[2], values[3], values[4], static_cast<int>(whole), 0};
-  c.nanosecond = static_cast<std::int64_t>(std::llround((**second - whole) * 1e9));
-  auto t = core::GpsTime::from_calendar(c, core::TimeScale::kGps);
-  if (!t) return core::Error{"epoch", t.error().describe()};
-  return t;
-}
+constexpr CalendarColumns kEpochColumns{{3, 4}, {8, 2}, {11, 2}, {14, 2}, {17, 2}, {20, 11}};
 
 }  // namespace
 
@@ -93,7 +70,7 @@ core::Result<Sp3Orbit> Sp3Orbit::read(const std::filesystem::path& path) {
       continue;
     }
     if (line.rfind("* ", 0) == 0) {
-      const auto t = epoch_time(line);
+      const auto t = parse_gps_calendar(line, kEpochColumns);
       if (!t) return file.error("epoch line: " + t.error().describe());
       if (!orbit.epochs_.empty() && *t <= orbit.epochs_.back()) return file.error("epoch is not after the previous one");
       orbit.epochs_.push_back(*t);

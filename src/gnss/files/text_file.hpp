@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/gps_time.hpp"
 #include "core/status.hpp"
 
 namespace visors::gnss::files {
@@ -50,5 +51,19 @@ std::string_view trim(std::string_view text);
 core::Result<std::optional<double>> parse_number(std::string_view field, std::string_view name);
 /// As parse_number, but an integer value.
 core::Result<std::optional<long long>> parse_integer(std::string_view field, std::string_view name);
+
+/// Where the calendar fields of a GPS-time epoch sit on a line (0-based first column, width).
+struct CalendarColumns {
+  struct Field {
+    std::size_t first = 0, width = 0;
+  };
+  Field year, month, day, hour, minute, second;
+  bool two_digit_year = false;  // RINEX 2: yy >= 80 is 19yy, else 20yy
+};
+
+/// The GPS time written in `line` at `columns`. The seconds ("ss.sss...", up to 9 decimals used)
+/// are read as decimal digits, exactly to the nanosecond, not through a binary double. Errors name
+/// the field and its 1-based columns ("month (columns 9-10)"), or "epoch" for an invalid date.
+core::Result<core::GpsTime> parse_gps_calendar(std::string_view line, const CalendarColumns& columns);
 
 }  // namespace visors::gnss::files
