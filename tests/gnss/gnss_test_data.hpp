@@ -56,4 +56,19 @@ inline std::string first_lines(const std::string& text, std::size_t count) {
   return out;
 }
 
+/// Fixture for malformed-input tests: the text of the GNSS data file `Name` (skipped without it),
+/// to be broken one line at a time.
+template <const char* const& Name>
+class MalformedCopy : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    VISORS_SKIP_WITHOUT_GNSS_DATA(Name);
+    text_ = file_text(gnss_data(Name));
+  }
+  [[nodiscard]] std::string with_line(std::size_t number, const std::string& replacement) const {
+    return test::with_line(text_, number, replacement);
+  }
+  std::string text_;
+};
+
 }  // namespace visors::test

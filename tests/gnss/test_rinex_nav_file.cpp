@@ -71,17 +71,7 @@ TEST(RinexNav, Rinex305NyaFile) {
 }
 
 // Malformed copies of brdc1820.10n: each error names the file and the line.
-class RinexNavMalformed : public ::testing::Test {
- protected:
-  void SetUp() override {
-    VISORS_SKIP_WITHOUT_GNSS_DATA(test::kBrdc20100701);
-    text_ = test::file_text(test::gnss_data(test::kBrdc20100701));
-  }
-  [[nodiscard]] std::string with_line(std::size_t number, const std::string& replacement) const {
-    return test::with_line(text_, number, replacement);
-  }
-  std::string text_;
-};
+using RinexNavMalformed = test::MalformedCopy<test::kBrdc20100701>;
 
 TEST_F(RinexNavMalformed, BadNumberNamesFileLineAndColumns) {
   // Line 11 = broadcast orbit 2 of the first record; sqrt(A) garbled.

@@ -80,17 +80,7 @@ TEST_F(Sp3File, InterpolationOutsideTheSpanIsAnError) {
   EXPECT_EQ(r.error().field, "t");
 }
 
-class Sp3Malformed : public ::testing::Test {
- protected:
-  void SetUp() override {
-    VISORS_SKIP_WITHOUT_GNSS_DATA(test::kSp320100701);
-    text_ = test::file_text(test::gnss_data(test::kSp320100701));
-  }
-  [[nodiscard]] std::string with_line(std::size_t number, const std::string& replacement) const {
-    return test::with_line(text_, number, replacement);
-  }
-  std::string text_;
-};
+using Sp3Malformed = test::MalformedCopy<test::kSp320100701>;
 
 TEST_F(Sp3Malformed, TruncatedPositionRecordNamesFileAndLine) {
   test::TempFile file(with_line(24, "PG01  18392.619117   7490.690408"), ".sp3");
