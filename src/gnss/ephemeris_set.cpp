@@ -52,7 +52,7 @@ void mark_inconsistent(std::vector<ScreenedEphemeris>& records, std::size_t begi
   const auto near = [&](std::size_t a, std::size_t b) {
     return std::abs(records[a].ephemeris.toe.seconds_since(records[b].ephemeris.toe)) <= EphemerisSet::kNeighbourWindowS;
   };
-  std::vector<std::string> reasons(records.size());
+  std::vector<std::string> reasons(end - begin);  // of records [begin, end)
   for (std::size_t k : plausible) {
     std::vector<std::size_t> neighbours;
     bool agrees_with_one = false;
@@ -75,12 +75,12 @@ void mark_inconsistent(std::vector<ScreenedEphemeris>& records, std::size_t begi
                            compare(records[neighbours[a]].ephemeris, records[neighbours[b]].ephemeris).agrees();
       }
     }
-    if (neighbours_agree) reasons[k] = std::move(reason);
+    if (neighbours_agree) reasons[k - begin] = std::move(reason);
   }
   for (std::size_t k = begin; k < end; ++k) {
-    if (reasons[k].empty()) continue;
+    if (reasons[k - begin].empty()) continue;
     records[k].status = RecordStatus::kInconsistent;
-    records[k].reason = std::move(reasons[k]);
+    records[k].reason = std::move(reasons[k - begin]);
   }
 }
 
