@@ -4,15 +4,13 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <memory>
 #include <optional>
-
-#include <fmt/format.h>
 
 #include "astro/sun_moon.hpp"
 #include "core/data_path.hpp"
 #include "core/earth_frames.hpp"
 #include "core/eop.hpp"
+#include "core/output_file.hpp"
 #include "gnss/constellation.hpp"
 #include "gnss/ephemeris_set.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
@@ -30,15 +28,8 @@ namespace visors::sim {
 
 namespace {
 
-struct FileCloser {
-  void operator()(std::FILE* f) const {
-    if (f != nullptr) std::fclose(f);
-  }
-};
-using File = std::unique_ptr<std::FILE, FileCloser>;
-
-core::Result<File> open_output(const std::filesystem::path& path) {
-  File f(std::fopen(path.string().c_str(), "w"));
+core::Result<core::OutputFile> open_output(const std::filesystem::path& path) {
+  core::OutputFile f = core::open_output_file(path);
   if (!f) return core::Error{path.string(), "cannot open for writing"};
   return f;
 }

@@ -11,9 +11,9 @@ namespace visors::sim {
 
 namespace {
 
-core::Result<std::FILE*> open_file(const std::filesystem::path& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (f == nullptr) return core::Error{"output file " + path.string(), "cannot be written"};
+core::Result<core::OutputFile> open_file(const std::filesystem::path& path) {
+  core::OutputFile f = core::open_output_file(path);
+  if (!f) return core::Error{"output file " + path.string(), "cannot be written"};
   return f;
 }
 
@@ -48,13 +48,13 @@ core::Result<RunRecorder> RunRecorder::open(const std::filesystem::path& dir, co
   r.dir_ = dir;
   auto ts = open_file(dir / std::string(report::kTimeseriesFile));
   if (!ts.ok()) return ts.error();
-  r.timeseries_.reset(*ts);
+  r.timeseries_ = std::move(ts).value();
   auto obs = open_file(dir / std::string(report::kObservationsFile));
   if (!obs.ok()) return obs.error();
-  r.observations_.reset(*obs);
+  r.observations_ = std::move(obs).value();
   auto ev = open_file(dir / std::string(report::kEventsFile));
   if (!ev.ok()) return ev.error();
-  r.events_.reset(*ev);
+  r.events_ = std::move(ev).value();
   write_header(r.timeseries_.get(), report::kTimeseriesColumns);
   write_header(r.observations_.get(), report::kObservationColumns);
   write_header(r.events_.get(), report::kEventColumns);

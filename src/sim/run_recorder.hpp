@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/output_file.hpp"
 #include "core/status.hpp"
 #include "sim/alignment_metrics.hpp"
 
@@ -49,12 +50,7 @@ class RunRecorder {
   ~RunRecorder() = default;
 
  private:
-  struct Closer {
-    void operator()(std::FILE* f) const {
-      if (f != nullptr) std::fclose(f);
-    }
-  };
-  using File = std::unique_ptr<std::FILE, Closer>;
+  using File = core::OutputFile;
   RunRecorder() = default;
 
   std::filesystem::path dir_;

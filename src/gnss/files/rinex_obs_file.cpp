@@ -134,10 +134,11 @@ core::Result<Rinex3ObservationWriter> Rinex3ObservationWriter::open(const std::f
       return core::Error{"observation_types", "'" + type + "' is not a 3-character RINEX 3 code"};
     }
   }
-  std::FILE* f = std::fopen(path.string().c_str(), "w");
-  if (f == nullptr) return core::Error{path.string(), "cannot open the RINEX observation file for writing"};
-  Rinex3ObservationWriter writer(path, f, header.observation_types);
-  if (auto error = write_header(f, header)) return *error;
+  core::OutputFile f = core::open_output_file(path);
+  if (!f) return core::Error{path.string(), "cannot open the RINEX observation file for writing"};
+  std::FILE* raw = f.get();
+  Rinex3ObservationWriter writer(path, std::move(f), header.observation_types);
+  if (auto error = write_header(raw, header)) return *error;
   return writer;
 }
 

@@ -24,6 +24,7 @@
 #include <Eigen/Core>
 
 #include "core/gps_time.hpp"
+#include "core/output_file.hpp"
 #include "core/status.hpp"
 #include "gnss/gps_measurement.hpp"
 
@@ -91,15 +92,10 @@ class Rinex3ObservationWriter {
   core::Result<bool> close();
 
  private:
-  struct FileCloser {
-    void operator()(std::FILE* f) const {
-      if (f != nullptr) std::fclose(f);
-    }
-  };
-  Rinex3ObservationWriter(std::filesystem::path path, std::FILE* file, std::vector<std::string> types)
-      : path_(std::move(path)), file_(file), types_names_(std::move(types)), types_(types_names_.size()) {}
+  Rinex3ObservationWriter(std::filesystem::path path, core::OutputFile file, std::vector<std::string> types)
+      : path_(std::move(path)), file_(std::move(file)), types_names_(std::move(types)), types_(types_names_.size()) {}
   std::filesystem::path path_;
-  std::unique_ptr<std::FILE, FileCloser> file_;
+  core::OutputFile file_;
   std::vector<std::string> types_names_;  // the header's observation types, for error fields
   std::size_t types_ = 0;
 };
