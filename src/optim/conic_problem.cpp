@@ -10,7 +10,12 @@ std::string size_text(Eigen::Index rows, Eigen::Index cols) {
   return std::to_string(rows) + " x " + std::to_string(cols);
 }
 
-bool all_finite(const Eigen::MatrixXd& m) { return m.size() == 0 || m.allFinite(); }
+// Takes any dense expression by reference: a `const MatrixXd&` parameter would copy every vector
+// passed to it (one heap allocation each; issue 13).
+template <typename Derived>
+bool all_finite(const Eigen::DenseBase<Derived>& m) {
+  return m.size() == 0 || m.allFinite();
+}
 
 }  // namespace
 

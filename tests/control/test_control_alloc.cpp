@@ -1,6 +1,6 @@
 // Flight-code memory rule (CONTRIBUTING "Memory"): after setup, a planner call allocates only the
-// impulse vector it returns (one allocation). This file replaces the global operator new of
-// test_control with a counting one.
+// impulse vector it returns (one allocation). This file counts every heap
+// allocation of test_control (malloc level).
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "control/least_squares_planner.hpp"
 #include "control/mission.hpp"
 #include "control/reachable_set_planner.hpp"
-#include "support/counting_new.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace visors::control {
 namespace {

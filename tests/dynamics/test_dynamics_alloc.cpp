@@ -1,6 +1,6 @@
 // Flight-code memory rule (CONTRIBUTING "Memory"): after construction, a force-model evaluation,
 // a propagation step sequence and a gravity evaluation with its gradient allocate nothing. This
-// file replaces the global operator new of test_dynamics with a counting one.
+// file counts every heap allocation of test_dynamics (malloc level).
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
-#include "support/counting_new.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace visors::dynamics {
 namespace {

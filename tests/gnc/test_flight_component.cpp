@@ -7,7 +7,7 @@
 
 #include "formation_harness.hpp"
 #include "gnc/flight_component.hpp"
-#include "support/counting_new.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace {
 

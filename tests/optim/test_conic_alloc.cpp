@@ -1,5 +1,5 @@
-// solve() allocates nothing (issue 4, CONTRIBUTING "Memory"): this file replaces the global
-// operator new of the test_optim executable with a counting one (support/counting_new.hpp) and
+// solve() allocates nothing (issue 4, CONTRIBUTING "Memory"): this file counts every heap allocation
+// of the test_optim executable (support/allocation_counter.hpp) and
 // checks that no allocation happens between the start and the end of solve(), on an SOCP of the
 // planner's shape, a QP, and an LP that exercises the dense-LU fallback of the KKT solve.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 
 #include "optim/conic_solver.hpp"
 #include "optim/minimum_fuel_problem.hpp"
-#include "support/counting_new.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace {
 

@@ -1,11 +1,11 @@
 // Flight-code memory rule (CONTRIBUTING "Memory"): evaluate_passive_safety allocates nothing.
-// This file replaces the global operator new of test_safety with a counting one
-// (support/counting_new.hpp, to be included in exactly one file of the executable).
+// This file counts every heap allocation of test_safety
+// (support/allocation_counter.hpp, to be included in exactly one file of the executable).
 #include <gtest/gtest.h>
 
 #include "core/constants.hpp"
 #include "safety/passive_safety.hpp"
-#include "support/counting_new.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace visors::safety {
 namespace {

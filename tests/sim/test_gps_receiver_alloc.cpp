@@ -1,10 +1,10 @@
 // The receiver's epoch allocates nothing (its state is preallocated at creation). Kept apart
-// from the other receiver tests: the counting operator new may be replaced in one file only, and
+// from the other receiver tests: the allocation counter may be defined in one file only, and
 // GCC 12 reports a false -Wmismatched-new-delete where std::map nodes meet it in one file.
 #include <gtest/gtest.h>
 
 #include "gps_test_world.hpp"
-#include "support/counting_new.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace visors::sim {
 namespace {
