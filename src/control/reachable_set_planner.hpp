@@ -26,9 +26,15 @@
 //     through its three grid values.
 //  4. Magnitudes: a small primal SOCP min sum ||dv_j|| s.t. sum B_j dv_j = w over those times
 //     only (it also absorbs the direction error of the time quantisation), a Caratheodory
-//     reduction to at most `max_impulses` impulses (a basic solution of the LP in the impulse
-//     scales, cost unchanged), and a minimum-norm correction that makes the linear terminal
-//     error round-off small (the SOCP meets its equality only to its tolerance).
+//     reduction to at most 6 impulses (a basic solution of the LP in the impulse scales, cost
+//     unchanged); below 6, `max_impulses` is a cardinality constraint the convex problem does not
+//     have: 1 = the best single impulse on the grid if it reaches the target (in general it
+//     cannot), 2 = exhaustive search over the grid's pairs of times, 3-5 = greedy elimination from
+//     the optimal support or the best pair, whichever is cheaper. Then a minimum-norm correction
+//     that makes the linear terminal error round-off small (the SOCP meets its equality only to
+//     its tolerance).
+//  5. The plan, rejected (status "solver") if the linear model's terminal state still misses the
+//     target by more than terminal_tolerance_m: never ok with a miss.
 //
 // Digest notes checked here (docs/relative-motion-and-control.md):
 //  * sec. 5.4(a) says the cone multipliers are the primal impulses "up to sign and scaling"; with
@@ -71,7 +77,9 @@ struct ReachableSetSettings {
   /// several violated peaks are added per iteration).
   int working_set_size = 28;
   int anchor_points = 12;
-  /// Caratheodory: in R^6 an optimal plan needs at most 6 impulses.
+  /// Caratheodory: in R^6 an optimal plan needs at most 6 impulses. Fewer is a cardinality
+  /// constraint (step 4 above): 1 reaches only special targets, 2 is exhaustive over the grid
+  /// (grid_points^2 / 2 small solves: ~10 ms at 241), 3-5 greedy.
   int max_impulses = 6;
   /// Contact-time candidates passed to the magnitude SOCP (peaks of h above 1 - contact_tolerance).
   int max_candidates = 16;
@@ -89,6 +97,8 @@ struct ReachableSetSettings {
   /// typical reconfigurations have O(1)). A box constraint that binds means the target is
   /// (practically) unreachable in the window: the cost would exceed ~dual_box n |a w|.
   double dual_box = 1e3;
+  /// Largest accepted terminal miss of a plan in the linear model, |a (roe_f - roe_target)| [m].
+  double terminal_tolerance_m = 1e-3;
   core::EarthGravityConstants gravity{};
   optim::ConicSettings solver{};
 };
@@ -131,8 +141,32 @@ class ReachableSetPlanner {
   ~ReachableSetPlanner();
 
  private:
+  struct Problem;
   struct Workspace;
+  using Effect = Eigen::Matrix<double, 6, 3>;
   explicit ReachableSetPlanner(const ReachableSetSettings& settings);
+
+  // The phases of plan_into, in order (steps of the file comment).
+  core::Result<bool> validate_inputs(const astro::KeplerianElements& chief_mean_t0,
+                                     const astro::RelativeOrbitalElements& roe0,
+                                     const astro::RelativeOrbitalElements& roe_target, double t_earliest,
+                                     double tf) const;
+  void build_grid(Problem& pb, double t_earliest);
+  core::Result<bool> screen_reachability(const Problem& pb) const;
+  core::Result<bool> exchange_iteration(const Problem& pb);
+  void update_working_set();
+  bool is_local_max(int k) const;
+  void collect_candidates(const Problem& pb);
+  void add_candidate(double t, const Effect& b);
+  core::Result<double> solve_fixed_times(const Problem& pb, int m, int skip, std::vector<Eigen::Vector3d>& dv_out);
+  core::Result<bool> solve_magnitudes(const Problem& pb);
+  void reduce_to_six();
+  core::Result<bool> reduce_to_max_impulses(const Problem& pb);
+  core::Result<bool> best_single_impulse(const Problem& pb);
+  core::Result<bool> best_impulse_pair(const Problem& pb, double cost_to_beat);
+  void correct_terminal_residual(const Problem& pb);
+  core::Result<bool> emit_plan(const Problem& pb, const astro::RelativeOrbitalElements& drift,
+                               ManeuverPlan& result) const;
 
   ReachableSetSettings settings_;
   ReachableSetStats stats_;
