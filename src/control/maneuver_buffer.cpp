@@ -40,7 +40,37 @@ struct ImpulseBuffer::Work {
   astro::RelativeOrbitalElements target = astro::RelativeOrbitalElements::Zero();
   Eigen::CompleteOrthogonalDecomposition<Effects> cod;
   PieceVector x;
+  PieceVector householder_workspace;
   Effects rest;
+
+  // x = the minimum-norm solution of (the matrix cod was computed on) x = rhs. With E P = Q [T 0] Z
+  // (complete orthogonal decomposition), x = P Z' [T^-1 Q' rhs; 0]. Written out here because
+  // Eigen's solve() applies Z' with a heap-allocated temporary; this uses the fixed-capacity
+  // workspace, with the same operations in the same order (so the same bits).
+  void solve_min_norm(const Eigen::Matrix<double, 6, 1>& rhs) {
+    const Eigen::Index rank = cod.rank();
+    const Eigen::Index cols = cod.cols();
+    x.resize(cols);
+    if (rank == 0) {
+      x.setZero();
+      return;
+    }
+    Eigen::Matrix<double, 6, 1> c = rhs;
+    c.applyOnTheLeft(cod.matrixQ().setLength(rank).adjoint());
+    x.topRows(rank) = cod.matrixT().topLeftCorner(rank, rank).template triangularView<Eigen::Upper>().solve(c.topRows(rank));
+    if (rank < cols) {
+      x.bottomRows(cols - rank).setZero();
+      householder_workspace.resize(std::max<Eigen::Index>(cols, 1));
+      for (Eigen::Index k = 0; k < rank; ++k) {
+        if (k != rank - 1) x.row(k).swap(x.row(rank - 1));
+        x.middleRows(rank - 1, cols - rank + 1)
+            .applyHouseholderOnTheLeft(cod.matrixQTZ().row(k).tail(cols - rank).adjoint(), cod.zCoeffs()(k),
+                                       householder_workspace.data());
+        if (k != rank - 1) x.row(k).swap(x.row(rank - 1));
+      }
+    }
+    x = cod.colsPermutation() * x;
+  }
 };
 
 ImpulseBuffer::ImpulseBuffer() : work_(std::make_unique<Work>()) {
@@ -75,7 +105,7 @@ core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_me
     w.target = impulse_effect(chief_mean_t0, impulse.t, t_ref, settings.gravity) * impulse.dv_rtn;
     // Minimum-norm solution of effects x = target (full row rank for >= 2 distinct times).
     w.cod.compute(w.effects);
-    w.x = w.cod.solve(w.target);
+    w.solve_min_norm(w.target);
     pieces_.clear();
     bool within_cap = true;
     for (int j = 0; j < count; ++j) {
@@ -108,7 +138,7 @@ core::Result<bool> ImpulseBuffer::buffer(const astro::KeplerianElements& chief_m
     if (j + 1 < n) {
       w.rest = w.effects.rightCols(3 * (n - j - 1));
       w.cod.compute(w.rest);
-      w.x = w.cod.solve(remaining);
+      w.solve_min_norm(remaining);
       for (Eigen::Index k = j + 1; k < n; ++k) pieces_[static_cast<std::size_t>(k)].dv_rtn = w.x.segment<3>(3 * (k - j - 1));
     }
   }

@@ -5,6 +5,7 @@
 
 #include "core/constants.hpp"
 #include "safety/passive_safety.hpp"
+#include "safety/escape_maneuver.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace visors::safety {
@@ -26,6 +27,21 @@ TEST(PassiveSafetyAlloc, EvaluationAllocatesNothing) {
     EXPECT_TRUE(ok);
     EXPECT_EQ(allocations, 0);
   }
+}
+
+// The escape planner (a search over candidate burn times, each with its safety check).
+TEST(PassiveSafetyAlloc, EscapePlanningAllocatesNothing) {
+  const astro::KeplerianElements chief{6378136.3 + 500e3, 0.004, 97.8 * core::kDegToRad,
+                                       157.5 * core::kDegToRad, 90.0 * core::kDegToRad, 0.0};
+  astro::RelativeOrbitalElements roe;
+  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;
+  roe /= chief.a;
+  const RoeCovariance p = RoeCovariance::Identity() / (chief.a * chief.a);
+  bool ok = false;
+  const long allocations =
+      test::count_allocations([&] { ok = plan_escape(chief, roe, p, 0.0, EscapeSettings{}).ok(); });
+  EXPECT_TRUE(ok);
+  EXPECT_EQ(allocations, 0);
 }
 
 }  // namespace
