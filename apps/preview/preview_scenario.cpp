@@ -5,15 +5,15 @@
 #include <fstream>
 
 #include "core/angles.hpp"
-#include "core/toml_fields.hpp"
+#include "config/toml_fields.hpp"
 
 namespace visors::preview {
 namespace {
 
 using core::Error;
 
-using core::toml_fields::check_keys;
-using core::toml_fields::number_at;
+using config::toml_fields::check_keys;
+using config::toml_fields::number_at;
 
 const toml::table* section_of(const toml::table& root, const std::string& name) {
   return root.get_as<toml::table>(name);
@@ -89,7 +89,7 @@ core::Result<std::vector<FormationSpec>> parse_formations(const toml::table& roo
 }  // namespace
 
 core::Result<PreviewScenario> parse_preview_scenario(const std::string& toml_text) {
-  VISORS_TRY(root, core::toml_fields::parse(toml_text));
+  VISORS_TRY(root, config::toml_fields::parse(toml_text));
   if (auto e = check_keys(root, "", {"epoch", "chief", "earth", "run", "formation"})) return *e;
 
   PreviewScenario s;

@@ -9,14 +9,14 @@
 #include "astro/keplerian_elements.hpp"
 #include "core/angles.hpp"
 #include "core/constants.hpp"
-#include "core/toml_fields.hpp"
-#include "dynamics/force_model_toml.hpp"
+#include "config/toml_fields.hpp"
+#include "config/force_model_toml.hpp"
 
 namespace visors::propagate {
 namespace {
 
 using core::Error;
-using namespace core::toml_fields;
+using namespace config::toml_fields;
 
 core::Result<core::GpsTime> read_epoch(const toml::table& root) {
   const toml::table* epoch = root.get_as<toml::table>("epoch");
@@ -131,9 +131,9 @@ core::Result<PropagateScenario> parse_propagate_scenario(const std::string& toml
   s.name = name;
   VISORS_TRY(epoch, read_epoch(root));
   s.epoch = epoch;
-  VISORS_TRY(forces, dynamics::force_model_config_from_toml(root.get_as<toml::table>("forces")));
+  VISORS_TRY(forces, config::force_model_config_from_toml(root.get_as<toml::table>("forces")));
   s.forces = forces;
-  VISORS_TRY(spacecraft, dynamics::spacecraft_from_toml(root.get_as<toml::table>("spacecraft")));
+  VISORS_TRY(spacecraft, config::spacecraft_from_toml(root.get_as<toml::table>("spacecraft")));
   s.spacecraft = spacecraft;
   // Initial elements use the GRACE-field GM, the GM of every shipped gravity model.
   VISORS_TRY(initial, read_initial_state(root, core::EarthGravityConstants{}.mu));

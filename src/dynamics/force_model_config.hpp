@@ -2,7 +2,7 @@
 // Force-model configuration as plain data: which terms, the gravity field and its truncation, the
 // atmosphere, the spacecraft's ballistic properties. Two presets follow the mission paper's
 // Table "dynamics" (ground truth vs on-board numerical model); everything can be overridden from
-// TOML (dynamics/force_model_toml.hpp) or in code.
+// TOML (config/force_model_toml.hpp) or in code.
 
 #include <string>
 

@@ -7,15 +7,15 @@
 
 #include "core/angles.hpp"
 #include "core/constants.hpp"
-#include "core/toml_fields.hpp"
-#include "dynamics/force_model_toml.hpp"
+#include "config/toml_fields.hpp"
+#include "config/force_model_toml.hpp"
 
 namespace visors::sim {
 
 namespace {
 
 using core::Error;
-using namespace core::toml_fields;
+using namespace config::toml_fields;
 
 core::Result<bool> in_range(double value, double lo, double hi, const std::string& field) {
   if (!(value >= lo && value <= hi)) return Error{field, fmt::format("must be in [{}, {}]", lo, hi)};
@@ -277,7 +277,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (auto ok = read_spacecraft(root, "osc", s.osc); !ok) return ok.error();
   if (auto ok = read_gnss_settings(root, s.gnss); !ok) return ok.error();
   if (const toml::table* forces = table_at(root, "forces")) {
-    auto config = dynamics::force_model_config_from_toml(forces, "forces");
+    auto config = config::force_model_config_from_toml(forces, "forces");
     if (!config.ok()) return config.error();
     s.forces = config.value();
     toml::table wrapper;  // printed from the root so nested tables keep their "forces." prefix

@@ -4,12 +4,12 @@
 
 #include "core/constants.hpp"
 #include "core/gps_time.hpp"
-#include "core/toml_fields.hpp"
+#include "config/toml_fields.hpp"
 
 namespace visors::sim {
 
 using core::Error;
-using namespace core::toml_fields;
+using namespace config::toml_fields;
 
 namespace {
 

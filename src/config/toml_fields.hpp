@@ -14,7 +14,10 @@
 
 #include "core/status.hpp"
 
-namespace visors::core::toml_fields {
+namespace visors::config::toml_fields {
+
+using core::Error;
+using core::Result;
 
 /// "section.key" (or "key" when section is empty).
 std::string field_name(const std::string& section, std::string_view key);
@@ -39,7 +42,7 @@ Result<std::string> string_at(const toml::table& table, const std::string& secti
 Result<Eigen::Vector3d> vector3_at(const toml::table& table, const std::string& section,
                                    std::string_view key, std::optional<Eigen::Vector3d> fallback);
 
-}  // namespace visors::core::toml_fields
+}  // namespace visors::config::toml_fields
 
 /// Unwraps a Result into `const auto var`, or returns its error from the enclosing function.
 #define VISORS_TRY(var, expr)                            \

@@ -18,14 +18,14 @@
 #include "core/status.hpp"
 #include "dynamics/force_model_config.hpp"
 
-namespace visors::dynamics {
+namespace visors::config {
 
 /// Reads `forces` (the [forces] table; nullptr: the onboard preset).
-core::Result<ForceModelConfig> force_model_config_from_toml(const toml::table* forces,
+core::Result<dynamics::ForceModelConfig> force_model_config_from_toml(const toml::table* forces,
                                                              const std::string& section = "forces");
 
 /// Reads a [spacecraft] table (nullptr: the defaults); every value must be > 0.
-core::Result<SpacecraftProperties> spacecraft_from_toml(const toml::table* spacecraft,
+core::Result<dynamics::SpacecraftProperties> spacecraft_from_toml(const toml::table* spacecraft,
                                                         const std::string& section = "spacecraft");
 
-}  // namespace visors::dynamics
+}  // namespace visors::config

@@ -1,9 +1,9 @@
-#include "core/toml_fields.hpp"
+#include "config/toml_fields.hpp"
 
 #include <cmath>
 #include <sstream>
 
-namespace visors::core::toml_fields {
+namespace visors::config::toml_fields {
 
 std::string field_name(const std::string& section, std::string_view key) {
   return section.empty() ? std::string(key) : section + "." + std::string(key);
@@ -97,4 +97,4 @@ Result<Eigen::Vector3d> vector3_at(const toml::table& table, const std::string& 
   return v;
 }
 
-}  // namespace visors::core::toml_fields
+}  // namespace visors::config::toml_fields

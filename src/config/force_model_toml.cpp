@@ -1,12 +1,14 @@
-#include "dynamics/force_model_toml.hpp"
+#include "config/force_model_toml.hpp"
 
-#include "core/toml_fields.hpp"
+#include "config/toml_fields.hpp"
 
-namespace visors::dynamics {
+namespace visors::config {
+
+using namespace dynamics;  // the configuration types this reader fills
 namespace {
 
 using core::Error;
-using namespace core::toml_fields;
+using namespace config::toml_fields;
 
 core::Result<GravityConfig> read_gravity(const toml::table& t, const std::string& s, GravityConfig g) {
   if (auto e = check_keys(t, s, {"model", "degree", "order", "allow_embedded_fallback"})) return *e;
@@ -140,4 +142,4 @@ core::Result<SpacecraftProperties> spacecraft_from_toml(const toml::table* space
   return SpacecraftProperties{mass, drag_area, cd, srp_area, cr};
 }
 
-}  // namespace visors::dynamics
+}  // namespace visors::config
