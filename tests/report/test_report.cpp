@@ -135,3 +135,14 @@ TEST(ReportCommand, WritesTheReportAndRejectsABadDirectory) {
 
 }  // namespace
 }  // namespace visors::report
+
+// The check itself can fail: a frame-only path, a legend swatch, a single point and marker arcs do
+// not count as data (the old check accepted any path whose attributes held an "l").
+TEST(ReportChecks, DrawsDataNeedsDistinctPlottedPoints) {
+  EXPECT_FALSE(visors::test::draws_data("<svg><path d=\"M0 0L10 0\" fill=\"none\"/></svg>"));
+  EXPECT_FALSE(visors::test::draws_data("<svg><path class=\"series\" d=\"M5.0 5.0h0.1\" fill=\"none\"/></svg>"));
+  EXPECT_FALSE(visors::test::draws_data("<svg><path class=\"series\" d=\"M1.0 2.0a3 3 0 1 0 6 0a3 3 0 1 0 -6 0\"/></svg>"));
+  EXPECT_FALSE(visors::test::draws_data("<svg><path class=\"series\" d=\"M1.0 2.0L1.0 2.0L1.0 2.0\"/></svg>"));
+  EXPECT_TRUE(visors::test::draws_data("<svg><path class=\"series\" d=\"M1.0 2.0L3.0 4.0L5.0 1.0\" fill=\"none\"/></svg>"));
+  EXPECT_TRUE(visors::test::draws_data("<svg><polyline points=\"1,2 3,4 5,6\"/></svg>"));
+}
