@@ -11,13 +11,14 @@
 namespace visors::safety {
 namespace {
 
+// The mission chief and the paper's science orbit (a*dROE in m), 1 m sigma per element.
+const astro::KeplerianElements chief{6378136.3 + 500e3, 0.004, 97.8 * core::kDegToRad,
+                                     157.5 * core::kDegToRad, 90.0 * core::kDegToRad, 0.0};
+const astro::RelativeOrbitalElements roe =
+    (astro::RelativeOrbitalElements() << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72).finished() / chief.a;
+const RoeCovariance p = RoeCovariance::Identity() / (chief.a * chief.a);
+
 TEST(PassiveSafetyAlloc, EvaluationAllocatesNothing) {
-  const astro::KeplerianElements chief{6378136.3 + 500e3, 0.004, 97.8 * core::kDegToRad,
-                                       157.5 * core::kDegToRad, 90.0 * core::kDegToRad, 0.0};
-  astro::RelativeOrbitalElements roe;
-  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;
-  roe /= chief.a;
-  const RoeCovariance p = RoeCovariance::Identity() / (chief.a * chief.a);
   for (const SafetyPlane plane : {SafetyPlane::kRadialNormal, SafetyPlane::kThreeDimensional}) {
     PassiveSafetySettings s;
     s.plane = plane;
@@ -31,12 +32,6 @@ TEST(PassiveSafetyAlloc, EvaluationAllocatesNothing) {
 
 // The escape planner (a search over candidate burn times, each with its safety check).
 TEST(PassiveSafetyAlloc, EscapePlanningAllocatesNothing) {
-  const astro::KeplerianElements chief{6378136.3 + 500e3, 0.004, 97.8 * core::kDegToRad,
-                                       157.5 * core::kDegToRad, 90.0 * core::kDegToRad, 0.0};
-  astro::RelativeOrbitalElements roe;
-  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;
-  roe /= chief.a;
-  const RoeCovariance p = RoeCovariance::Identity() / (chief.a * chief.a);
   bool ok = false;
   const long allocations =
       test::count_allocations([&] { ok = plan_escape(chief, roe, p, 0.0, EscapeSettings{}).ok(); });
