@@ -1,8 +1,12 @@
 #include "run/run_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -50,6 +54,22 @@ std::optional<sim::CampaignScenario> load_scenario(const std::string& scenario_p
   return std::move(scenario).value();
 }
 
+// The run's "warning" events (data files not found and the embedded defaults used instead), each
+// message once, on stderr: a fallback must not be visible only in the event log.
+void print_warnings(const std::filesystem::path& dir) {
+  std::ifstream events(dir / "events.csv");
+  std::vector<std::string> seen;
+  for (std::string line; std::getline(events, line);) {
+    const std::size_t kind = line.find(",warning,");
+    if (kind == std::string::npos) continue;
+    std::string message = line.substr(kind + 9);
+    if (message.size() >= 2 && message.front() == '"' && message.back() == '"') message = message.substr(1, message.size() - 2);
+    if (std::find(seen.begin(), seen.end(), message) != seen.end()) continue;
+    seen.push_back(message);
+    fmt::print(stderr, "  warning: {}\n", message);
+  }
+}
+
 int run_campaign_command(const std::string& scenario_path, const std::string& out_dir) {
   const auto scenario = load_scenario(scenario_path, "visors run");
   if (!scenario) return kExitBadInput;
@@ -61,6 +81,7 @@ int run_campaign_command(const std::string& scenario_path, const std::string& ou
     fmt::print(stderr, "visors run: {}\n", result.error().describe());
     return kExitFailed;
   }
+  print_warnings(result->dir);
   const auto& s = result->summary;
   fmt::print("  simulated {:.0f} s in {:.1f} s ({:.0f}x real time)\n", s["simulated_s"].get<double>(), s["wall_s"].get<double>(),
              s["simulated_s"].get<double>() / std::max(1e-9, s["wall_s"].get<double>()));
