@@ -37,7 +37,7 @@ void BM_FlightComponentStep(benchmark::State& state) {
   // Standby off its design by 15 m in de (station keeping plans); science: on the science orbit
   // guidance picks, so the transfer is one leg.
   ScienceSettings settings;
-  settings.geometry.north = choose_north_pole(test::mission_chief(), kT0, settings, {}).value();
+  settings.geometry.north = choose_north_pole(test::mission_chief(), kT0, settings, settings.geometry, {}).value();
   const auto first = next_observation(test::mission_chief(), kT0, 1, settings, {}).value();
   const Eigen::Matrix<double, 6, 1> roe =
       science ? Eigen::Matrix<double, 6, 1>(test::mission_chief().a * first.roe_target) : test::roe_m(0, 0, 0, 215, 0, 200);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <Eigen/Geometry>
 
@@ -85,18 +86,18 @@ core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_m
   return out;
 }
 
-core::Result<std::vector<RelativeOrbitalElements>> transfer_waypoints(const RelativeOrbitalElements& from,
-                                                                      const RelativeOrbitalElements& to,
-                                                                      const TransferSettings& settings) {
-  std::vector<RelativeOrbitalElements> waypoints;
-  if (auto ok = transfer_waypoints_into(waypoints, from, to, settings); !ok) return ok.error();
-  return waypoints;
-}
+namespace {
 
-core::Result<int> transfer_waypoints_into(std::vector<RelativeOrbitalElements>& waypoints,
-                                          const RelativeOrbitalElements& from, const RelativeOrbitalElements& to,
-                                          const TransferSettings& settings) {
-  waypoints.clear();
+// The transfer's geometry in polar form: e and i magnitudes at both ends, the common phase and
+// its change, and the number of legs the step limits need.
+struct TransferLegs {
+  double rho_e0 = 0.0, rho_i0 = 0.0, rho_e1 = 0.0, rho_i1 = 0.0;
+  double phase0 = 0.0, dphase = 0.0;
+  int legs = 1;
+};
+
+core::Result<TransferLegs> transfer_legs(const RelativeOrbitalElements& from, const RelativeOrbitalElements& to,
+                                         const TransferSettings& settings) {
   if (!from.allFinite()) return core::Error{"from", "must be finite"};
   if (!to.allFinite()) return core::Error{"to", "must be finite"};
   if (!(settings.max_phase_step > 0.0)) return core::Error{"max_phase_step", "must be > 0"};
@@ -108,20 +109,29 @@ core::Result<int> transfer_waypoints_into(std::vector<RelativeOrbitalElements>& 
   const Eigen::Vector2d i1 = polar(to[roe::kDix], to[roe::kDiy]);
   if (e0[0] == 0.0 || i0[0] == 0.0) return core::Error{"from", "needs non-zero e and i vectors"};
   if (e1[0] == 0.0 || i1[0] == 0.0) return core::Error{"to", "needs non-zero e and i vectors"};
+  TransferLegs out;
+  out.rho_e0 = e0[0];
+  out.rho_i0 = i0[0];
+  out.rho_e1 = e1[0];
+  out.rho_i1 = i1[0];
   // One common phase: the mean of the e and i phases at each end (they are equal for a parallel
   // configuration; the target's 0.4 deg difference is absorbed by the last leg).
-  const double phase0 = e0[1] + 0.5 * std::remainder(i0[1] - e0[1], core::kTwoPi);
+  out.phase0 = e0[1] + 0.5 * std::remainder(i0[1] - e0[1], core::kTwoPi);
   const double phase1 = e1[1] + 0.5 * std::remainder(i1[1] - e1[1], core::kTwoPi);
-  const double dphase = std::remainder(phase1 - phase0, core::kTwoPi);
+  out.dphase = std::remainder(phase1 - out.phase0, core::kTwoPi);
   const double log_ratio = std::max(std::abs(std::log(e1[0] / e0[0])), std::abs(std::log(i1[0] / i0[0])));
-  const int legs = std::max({1, static_cast<int>(std::ceil(std::abs(dphase) / settings.max_phase_step)),
-                             static_cast<int>(std::ceil(log_ratio / std::log(settings.max_size_ratio)))});
-  if (waypoints.capacity() < static_cast<std::size_t>(legs)) waypoints.reserve(static_cast<std::size_t>(legs));
-  for (int k = 1; k < legs; ++k) {
-    const double f = static_cast<double>(k) / legs;
-    const double phase = phase0 + f * dphase;
-    const double rho_e = e0[0] * std::pow(e1[0] / e0[0], f);
-    const double rho_i = i0[0] * std::pow(i1[0] / i0[0], f);
+  out.legs = std::max({1, static_cast<int>(std::ceil(std::abs(out.dphase) / settings.max_phase_step)),
+                       static_cast<int>(std::ceil(log_ratio / std::log(settings.max_size_ratio)))});
+  return out;
+}
+
+void fill_waypoints(std::vector<RelativeOrbitalElements>& waypoints, const RelativeOrbitalElements& from,
+                    const RelativeOrbitalElements& to, const TransferLegs& g) {
+  for (int k = 1; k < g.legs; ++k) {
+    const double f = static_cast<double>(k) / g.legs;
+    const double phase = g.phase0 + f * g.dphase;
+    const double rho_e = g.rho_e0 * std::pow(g.rho_e1 / g.rho_e0, f);
+    const double rho_i = g.rho_i0 * std::pow(g.rho_i1 / g.rho_i0, f);
     RelativeOrbitalElements w = RelativeOrbitalElements::Zero();
     w[roe::kDlambda] = from[roe::kDlambda] + f * (to[roe::kDlambda] - from[roe::kDlambda]);
     w[roe::kDex] = rho_e * std::cos(phase);
@@ -131,7 +141,33 @@ core::Result<int> transfer_waypoints_into(std::vector<RelativeOrbitalElements>& 
     waypoints.push_back(w);
   }
   waypoints.push_back(to);
-  return legs;
+}
+
+}  // namespace
+
+core::Result<std::vector<RelativeOrbitalElements>> transfer_waypoints(const RelativeOrbitalElements& from,
+                                                                      const RelativeOrbitalElements& to,
+                                                                      const TransferSettings& settings) {
+  const auto legs = transfer_legs(from, to, settings);
+  if (!legs.ok()) return legs.error();
+  std::vector<RelativeOrbitalElements> waypoints;
+  waypoints.reserve(static_cast<std::size_t>(legs->legs));
+  fill_waypoints(waypoints, from, to, *legs);
+  return waypoints;
+}
+
+core::Result<int> transfer_waypoints_into(std::vector<RelativeOrbitalElements>& waypoints,
+                                          const RelativeOrbitalElements& from, const RelativeOrbitalElements& to,
+                                          const TransferSettings& settings) {
+  waypoints.clear();
+  const auto legs = transfer_legs(from, to, settings);
+  if (!legs.ok()) return legs.error();
+  if (static_cast<std::size_t>(legs->legs) > waypoints.capacity()) {
+    return core::Error{"waypoints", std::to_string(legs->legs) + " legs exceed the capacity " +
+                                        std::to_string(waypoints.capacity()) + " (a degenerate geometry?)"};
+  }
+  fill_waypoints(waypoints, from, to, *legs);
+  return legs->legs;
 }
 
 }  // namespace visors::control

@@ -71,8 +71,8 @@ core::Result<std::vector<astro::RelativeOrbitalElements>> transfer_waypoints(
     const astro::RelativeOrbitalElements& from, const astro::RelativeOrbitalElements& to,
     const TransferSettings& settings = {});
 
-/// The same into `waypoints` (cleared and refilled; allocates only if its capacity is below the
-/// number of legs, which it returns).
+/// The same into `waypoints` (cleared and refilled, never allocating); returns the number of
+/// legs. Error "waypoints" when they would exceed its capacity (reserve it beforehand).
 core::Result<int> transfer_waypoints_into(std::vector<astro::RelativeOrbitalElements>& waypoints,
                                           const astro::RelativeOrbitalElements& from,
                                           const astro::RelativeOrbitalElements& to,

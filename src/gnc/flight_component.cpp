@@ -16,16 +16,6 @@
 
 namespace visors::gnc {
 
-namespace {
-
-// Without a navigation solution for this long the component stops planning and reports itself
-// GNC incapable [s].
-constexpr double kMaxEstimateAge = 10.0;
-constexpr int kMaxWaypoints = 64;
-constexpr int kQueueCapacity = 4096;
-
-}  // namespace
-
 core::Result<FlightComponent> FlightComponent::create(const GncConfig& config) {
   const auto valid = validate(config);
   if (!valid.ok()) return valid.error();
@@ -35,8 +25,13 @@ core::Result<FlightComponent> FlightComponent::create(const GncConfig& config) {
 }
 
 FlightComponent::FlightComponent(const GncConfig& config, control::StochasticMpc mpc)
-    : config_(config), mpc_(std::move(mpc)), queue_(kQueueCapacity), active_(config.active), mass_kg_(config.mass_kg) {
-  waypoints_.reserve(kMaxWaypoints);
+    : config_(config),
+      mpc_(std::move(mpc)),
+      queue_(config.maneuver_queue_capacity),
+      active_(config.active),
+      mass_kg_(config.mass_kg),
+      geometry_(config.science.geometry) {
+  waypoints_.reserve(static_cast<std::size_t>(config.transfer.max_waypoints));
   plan_.impulses.reserve(control::kMaxClosedFormImpulses);
   ls_plan_.plan.impulses.reserve(control::kMaxLeastSquaresBurns);
   mpc_step_.remaining.reserve(static_cast<std::size_t>(config.science.mpc.planner.max_impulses));
@@ -61,7 +56,7 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
   out.star_tracker_power = mode_ == Mode::science;
   out.lrf_power = mode_ == Mode::science;
   out.passive_safety_violated = safety_violated_ && mode_ != Mode::manual && mode_ != Mode::escape;
-  const bool stale = !estimate_ || since(last_navigation_) > kMaxEstimateAge;
+  const bool stale = !estimate_ || since(last_navigation_) > config_.max_estimate_age_s;
   out.gnc_incapable = stale || consecutive_failures_ >= config_.max_planning_failures;
   telemetry_.t = now_;
   telemetry_.mode = mode_;
@@ -192,7 +187,7 @@ double FlightComponent::chief_period_s() const {
 }
 
 void FlightComponent::run_control(GncOutputs& out) {
-  if (!estimate_ || since(last_navigation_) > kMaxEstimateAge) return;
+  if (!estimate_ || since(last_navigation_) > config_.max_estimate_age_s) return;
   switch (mode_) {
     case Mode::manual: break;
     case Mode::standby: run_standby(); break;
@@ -242,9 +237,9 @@ void FlightComponent::run_standby() {
 }
 
 bool FlightComponent::start_transfer(const astro::RelativeOrbitalElements& target) {
-  // At most kMaxWaypoints legs (reserved): more would mean a degenerate geometry.
+  // At most transfer.max_waypoints legs (reserved; the planner refuses more rather than grow it).
   const auto legs = control::transfer_waypoints_into(waypoints_, estimate_->roe_mean, target, config_.transfer.waypoints);
-  if (!legs.ok() || waypoints_.empty() || *legs > kMaxWaypoints) {
+  if (!legs.ok() || waypoints_.empty()) {
     waypoints_.clear();
     planning_failed();
     return false;
@@ -276,10 +271,10 @@ void FlightComponent::run_transfer() {
     astro::RelativeOrbitalElements target;
     if (mode_ == Mode::transfer_to_science) {
       if (config_.science.choose_pole) {
-        const auto north = choose_north_pole(estimate_->chief_mean, estimate_->t, config_.science, config_.gravity);
-        if (north.ok()) config_.science.geometry.north = *north;
+        const auto north = choose_north_pole(estimate_->chief_mean, estimate_->t, config_.science, geometry_, config_.gravity);
+        if (north.ok()) geometry_.north = *north;
       }
-      const auto next = next_observation(estimate_->chief_mean, estimate_->t, 1, config_.science, config_.gravity);
+      const auto next = next_observation(estimate_->chief_mean, estimate_->t, 1, config_.science, geometry_, config_.gravity);
       if (!next.ok()) {
         planning_failed();
         return;
@@ -302,7 +297,7 @@ void FlightComponent::run_transfer() {
 }
 
 bool FlightComponent::schedule_observation(GncOutputs& out) {
-  const auto next = next_observation(estimate_->chief_mean, estimate_->t, observations_done_ + 1, config_.science,
+  const auto next = next_observation(estimate_->chief_mean, estimate_->t, observations_done_ + 1, config_.science, geometry_,
                                      config_.gravity);
   if (!next.ok()) {
     planning_failed();
@@ -423,10 +418,10 @@ void FlightComponent::replan_last_burn(const astro::RelativeOrbitalElements& tar
 astro::RelativeOrbitalElements FlightComponent::drag_drift(double to_aligned) const {
   astro::RelativeOrbitalElements drift = astro::RelativeOrbitalElements::Zero();
   if (!drag_.valid() || !(to_aligned > 0.0)) return drift;
-  constexpr int kNodes = 24;
-  const double h = to_aligned / kNodes;
+  const int nodes = config_.science.drag_drift_nodes;
+  const double h = to_aligned / nodes;
   const Eigen::Vector3d dv_rtn(0.0, drag_.along_track_mps2() * h, 0.0);
-  for (int k = 0; k < kNodes; ++k) {
+  for (int k = 0; k < nodes; ++k) {
     drift += control::impulse_effect(estimate_->chief_mean, (k + 0.5) * h, to_aligned, config_.gravity) * dv_rtn;
   }
   return drift;

@@ -125,6 +125,9 @@ class FlightComponent {
   core::GpsTime leg_end_;
   bool leg_planned_ = false;
   // Science.
+  /// The observation geometry of the campaign: config.science.geometry with the pole chosen at
+  /// the start of the transfer to science (the configuration itself is never changed).
+  control::ScienceGeometry geometry_;
   int observations_planned_ = 0;
   int observations_done_ = 0;
   std::optional<ScheduledObservation> observation_;

@@ -1,6 +1,7 @@
 #include "gnc/gnc_config.hpp"
 
 #include <cmath>
+#include <string>
 
 namespace visors::gnc {
 
@@ -25,6 +26,9 @@ core::Result<GncConfig> validate(const GncConfig& config) {
     return core::Error{"transfer.normal_burns", "must be 1 or 2"};
   }
   if (!(config.transfer.end_margin_s >= 0.0)) return core::Error{"transfer.end_margin_s", "must be >= 0"};
+  if (config.transfer.max_waypoints < 1 || config.transfer.max_waypoints > kMaxTransferWaypoints) {
+    return core::Error{"transfer.max_waypoints", "must be in [1, " + std::to_string(kMaxTransferWaypoints) + "]"};
+  }
   const auto& sc = config.science;
   if (!positive(sc.least_squares_window_s)) return core::Error{"science.least_squares_window_s", "must be > 0"};
   for (int k = 0; k < 3; ++k) {
@@ -46,10 +50,17 @@ core::Result<GncConfig> validate(const GncConfig& config) {
   if (!(sc.slew_margin_rad >= 0.0 && sc.slew_margin_rad <= core::kPi)) {
     return core::Error{"science.slew_margin_rad", "must be in [0, pi]"};
   }
+  if (sc.drag_drift_nodes < 1 || sc.drag_drift_nodes > kMaxDragDriftNodes) {
+    return core::Error{"science.drag_drift_nodes", "must be in [1, " + std::to_string(kMaxDragDriftNodes) + "]"};
+  }
   if (auto ok = safety::validate(config.safety); !ok) return core::Error{"safety." + ok.error().field, ok.error().message};
   if (auto ok = safety::validate(config.escape); !ok) return core::Error{"escape." + ok.error().field, ok.error().message};
   if (!(config.burn_latency_s >= 0.0)) return core::Error{"burn_latency_s", "must be >= 0"};
   if (config.max_planning_failures < 1) return core::Error{"max_planning_failures", "must be >= 1"};
+  if (!positive(config.max_estimate_age_s)) return core::Error{"max_estimate_age_s", "must be > 0"};
+  if (config.maneuver_queue_capacity < 1 || config.maneuver_queue_capacity > kMaxManeuverQueuePieces) {
+    return core::Error{"maneuver_queue_capacity", "must be in [1, " + std::to_string(kMaxManeuverQueuePieces) + "]"};
+  }
   return config;
 }
 

@@ -38,7 +38,12 @@ struct TransferSettings {
   int normal_burns = 2;
   /// The last allowed burn of a leg is this long before the leg end [s].
   double end_margin_s = 60.0;
+  /// Capacity of the waypoint list, reserved at creation (1..kMaxTransferWaypoints): a transfer
+  /// needing more legs is a planning failure (a degenerate geometry; the paper's transfers take
+  /// 4-8 legs).
+  int max_waypoints = 64;
 };
+inline constexpr int kMaxTransferWaypoints = 1024;
 
 /// The MPC's execution-error model set to the simulated actuator (magnitude 5 % 1-sigma, the
 /// paper's lower bound; floor one impulse quantum, 6e-5 N s / 10.6 kg = 6 um/s), so the
@@ -79,12 +84,17 @@ struct ScienceSettings {
   double observation_duration_s = 10.0;  // [s] (requirement: 10 s windows)
   double slew_rate_rad_s = 1.5 * core::kPi / 180.0;  // [rad/s] (paper: 1.5 deg/s)
   double slew_settle_s = 30.0;                       // settling after the slew [s] (ours)
+  /// Midpoint-rule nodes of the differential-drag drift to the aligned time (FlightComponent::
+  /// drag_drift; 1..kMaxDragDriftNodes). 24 nodes over the <= 900 s window make the quadrature
+  /// error negligible against the drag estimate's own.
+  int drag_drift_nodes = 24;
   /// Added to the predicted slew angle when timing the slew command [rad]. The slew from the
   /// nominal attitude (+Z at zenith, +X towards the Sun's projection on the horizontal plane) to
   /// the observation attitude (+X at the Sun) is a rotation by the Sun's elevation, near zero at
   /// the TN-plane alignment.
   double slew_margin_rad = 5.0 * core::kPi / 180.0;
 };
+inline constexpr int kMaxDragDriftNodes = 1000;
 
 struct GncConfig {
   Spacecraft self = Spacecraft::osc;
@@ -102,7 +112,14 @@ struct GncConfig {
   double burn_latency_s = 10.0;
   /// Consecutive planning failures after which "GNC incapable" is raised.
   int max_planning_failures = 3;
+  /// Without a navigation solution for this long the component stops planning and reports
+  /// itself GNC incapable [s].
+  double max_estimate_age_s = 10.0;
+  /// Capacity of the maneuver queue in thruster pieces, reserved at creation
+  /// (1..kMaxManeuverQueuePieces): a plan that would need more is refused (planning failure).
+  int maneuver_queue_capacity = 4096;
 };
+inline constexpr int kMaxManeuverQueuePieces = 1 << 20;
 
 /// Checks every field (names as in the struct, e.g. "standby_keeping.de_deadband_m").
 core::Result<GncConfig> validate(const GncConfig& config);

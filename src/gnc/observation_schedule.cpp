@@ -35,18 +35,19 @@ core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chi
 
 core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                                     int index, const ScienceSettings& settings,
+                                                    const control::ScienceGeometry& geometry,
                                                     const core::EarthGravityConstants& gravity) {
   // science_orbit returns the first crossing after its t0; start the search at now + min_lead
   // (the chief propagated there by the secular J2 rates, as the planners do).
   const astro::KeplerianElements chief_from = astro::propagate_mean_j2(chief_mean, settings.min_lead_s, gravity);
   const core::GpsTime from = now + settings.min_lead_s;
-  const auto orbit = control::science_orbit(chief_from, from, settings.geometry, gravity);
+  const auto orbit = control::science_orbit(chief_from, from, geometry, gravity);
   if (!orbit.ok()) return orbit.error();
   // Aligned at the middle of the window: the relative acceleration (~n^2 f) then moves the
   // payloads half as far, and changes their velocity half as much, as when aligned at its start.
   const core::GpsTime aligned = from + orbit->t_obs;
   const auto roe = aligned_mean_roe(astro::propagate_mean_j2(chief_from, orbit->t_obs, gravity), aligned,
-                                    settings.geometry, gravity);
+                                    geometry, gravity);
   if (!roe.ok()) return roe.error();
   ScheduledObservation out;
   out.index = index;
@@ -58,19 +59,26 @@ core::Result<ScheduledObservation> next_observation(const astro::KeplerianElemen
   return out;
 }
 
+core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
+                                                    int index, const ScienceSettings& settings,
+                                                    const core::EarthGravityConstants& gravity) {
+  return next_observation(chief_mean, now, index, settings, settings.geometry, gravity);
+}
+
 core::Result<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
-                                     const ScienceSettings& settings, const core::EarthGravityConstants& gravity) {
+                                     const ScienceSettings& settings, const control::ScienceGeometry& geometry,
+                                     const core::EarthGravityConstants& gravity) {
   bool parallel[2] = {false, false};
   for (int pole = 0; pole < 2; ++pole) {
-    ScienceSettings candidate = settings;
-    candidate.geometry.north = pole == 1;
-    const auto next = next_observation(chief_mean, now, 1, candidate, gravity);
+    control::ScienceGeometry candidate = geometry;
+    candidate.north = pole == 1;
+    const auto next = next_observation(chief_mean, now, 1, settings, candidate, gravity);
     if (!next.ok()) return next.error();
     const auto& roe = next->roe_target;
     parallel[pole] = roe(astro::roe::kDex) * roe(astro::roe::kDix) + roe(astro::roe::kDey) * roe(astro::roe::kDiy) > 0.0;
   }
   if (parallel[0] != parallel[1]) return parallel[1];
-  return settings.geometry.north;
+  return geometry.north;
 }
 
 }  // namespace visors::gnc

@@ -35,8 +35,15 @@ core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chi
                                                               const control::ScienceGeometry& geometry,
                                                               const core::EarthGravityConstants& gravity);
 
-/// The first observation opportunity at least settings.min_lead_s after `now`. chief_mean: the
-/// chief's mean elements at `now`. Errors: those of control::science_orbit ("geometry" ...).
+/// The first observation opportunity at least settings.min_lead_s after `now`, for the
+/// observation `geometry` (the flight component's, whose pole it chose; settings.geometry is not
+/// read). chief_mean: the chief's mean elements at `now`. Errors: those of
+/// control::science_orbit ("geometry" ...).
+core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
+                                                    int index, const ScienceSettings& settings,
+                                                    const control::ScienceGeometry& geometry,
+                                                    const core::EarthGravityConstants& gravity);
+/// The same with settings.geometry.
 core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                                     int index, const ScienceSettings& settings,
                                                     const core::EarthGravityConstants& gravity);
@@ -45,9 +52,10 @@ core::Result<ScheduledObservation> next_observation(const astro::KeplerianElemen
 /// (de . di > 0), like the standby orbit and the mission paper's science orbit, so the transfer
 /// never has to turn an e/i-separated orbit inside out (the paper's pathological case:
 /// antiparallel science vectors against a parallel standby). If both or neither pole qualifies,
-/// settings.geometry.north is kept.
+/// geometry.north is kept. Returns true for the north pole.
 core::Result<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
-                                     const ScienceSettings& settings, const core::EarthGravityConstants& gravity);
+                                     const ScienceSettings& settings, const control::ScienceGeometry& geometry,
+                                     const core::EarthGravityConstants& gravity);
 
 /// Slew plus settling time commanded before an observation whose slew is `angle_rad` [s]:
 /// (angle + margin) / rate + settling.

@@ -9,26 +9,97 @@
 // (to_standby at t0, start_science after standby_s); when the active spacecraft reports a
 // passive-safety violation the host commands it to escape; when the active spacecraft reports
 // GNC incapable for a minute, the host switches roles (the other spacecraft becomes active).
+//
+// CampaignSimulation is the object; one step() runs the phases in this order: truth attitude and
+// drag area, ground timeline, sensors and flight components, then per spacecraft the host's
+// routing and actuators and its FDIR, injected faults, metrics, end-of-campaign test, truth
+// propagation. run_campaign() drives it and writes the run directory.
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/status.hpp"
+#include "sim/alignment_metrics.hpp"
 #include "sim/campaign_scenario.hpp"
+#include "sim/run_recorder.hpp"
+#include "sim/simulated_spacecraft.hpp"
 
 namespace visors::sim {
 
 struct RunProgress {
   double simulated_s = 0.0;
-  double total_s = 0.0;  // the scenario's upper bound (max_duration_s)
+  double total_s = 0.0;  // the current end of the campaign (max_duration_s until it is known)
   double wall_s = 0.0;
 };
 
 struct RunResult {
   nlohmann::json summary;
   std::filesystem::path dir;
+};
+
+class CampaignSimulation {
+ public:
+  /// Sets up both spacecraft at the scenario's initial formation (the scenario is copied);
+  /// events (data-file fallbacks first) go to `recorder`, which must outlive the simulation.
+  /// Errors name the scenario field.
+  static core::Result<CampaignSimulation> create(const CampaignScenario& scenario, RunRecorder& recorder);
+
+  /// Runs the step at the current time and advances the truth to the next one. Returns false,
+  /// without doing anything, once the campaign has ended. Errors: a truth state that fails.
+  core::Result<bool> step();
+
+  /// Time of the last step run; once ended, the time at which the campaign stopped [s since t0].
+  [[nodiscard]] double time_s() const { return ts_; }
+  /// The current end of the campaign: max_duration_s until the last mode change sets it [s].
+  [[nodiscard]] double end_s() const { return end_s_; }
+  [[nodiscard]] bool ended() const { return ended_; }
+  /// The figures of merit (docs/run-directory.md, summary.json), `wall_s` as given.
+  [[nodiscard]] nlohmann::json summary(double wall_s) const;
+
+ private:
+  struct PendingObservation {
+    AlignmentResult result;
+    double start_s = 0.0, end_s = 0.0;
+    bool done = false;
+  };
+
+  CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder);
+  SimulatedSpacecraft& active();
+  [[nodiscard]] const SimulatedSpacecraft& active() const;
+
+  // The phases of step(), in order.
+  void update_attitude(const Eigen::Vector3d& sun_gcrf_m);
+  void apply_ground_timeline(core::GpsTime t);
+  void step_flight_components(core::GpsTime t);
+  void route_outputs(SimulatedSpacecraft& v, SimulatedSpacecraft& other);
+  void execute_maneuver(SimulatedSpacecraft& v, core::GpsTime t);
+  void apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft& other, core::GpsTime t);
+  void inject_faults(core::GpsTime t);
+  void record_metrics(const Eigen::Vector3d& sun_gcrf_m);
+  void update_end();
+  core::Result<bool> propagate_truth(core::GpsTime t);
+
+  CampaignScenario scenario_;
+  RunRecorder* recorder_;
+  std::array<SimulatedSpacecraft, 2> vehicles_;  // dsc, osc
+  AlignmentRequirements requirements_;
+  std::vector<PendingObservation> observations_;
+  // Step indices of the timeline (-1: never).
+  std::int64_t steps_total_ = 0, output_every_ = 1, science_step_ = 0, fault_step_ = -1, non_gnc_fault_step_ = -1;
+  std::int64_t k_ = 0;  // the next step to run
+  double ts_ = 0.0;     // time of the last step run [s since t0]
+  double end_s_ = 0.0;
+  bool ended_ = false;
+  double min_sep_rn_m_ = std::numeric_limits<double>::infinity();
+  double min_sep_3d_m_ = std::numeric_limits<double>::infinity();
+  int safety_violations_ = 0;
+  bool science_started_ = false, left_science_ = false, escaped_ = false;
 };
 
 /// Runs `scenario`, writing the run directory `out_dir`. `progress` (optional) is called about

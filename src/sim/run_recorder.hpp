@@ -18,6 +18,11 @@
 
 namespace visors::sim {
 
+/// Version of the run directory's format (docs/run-directory.md), written in summary.json as
+/// `format_version`. 2: an observation's start in summary.json is `t_s` (was `t_gps`, which was
+/// never GPS time); `format_version` itself is new (absent means 1).
+inline constexpr int kRunDirectoryFormatVersion = 2;
+
 struct TimeseriesRow {
   double t_s = 0.0;
   std::string_view mode;

@@ -190,7 +190,8 @@ TEST(FlightComponent, PlanningStepsAllocateNothing) {
   auto c = make(Spacecraft::osc, true);
   // Start on the science orbit guidance will pick, so the transfer is one leg.
   ScienceSettings science_settings;
-  science_settings.geometry.north = choose_north_pole(test::mission_chief(), kT0, science_settings, {}).value();
+  science_settings.geometry.north =
+      choose_north_pole(test::mission_chief(), kT0, science_settings, science_settings.geometry, {}).value();
   const auto first = next_observation(test::mission_chief(), kT0, 1, science_settings, {}).value();
   test::FormationHarness h(test::mission_chief(), test::mission_chief().a * first.roe_target, kT0);
   auto in = h.inputs(0.0);

@@ -1,0 +1,60 @@
+#include "sim/simulated_spacecraft.hpp"
+
+#include <string>
+#include <utility>
+
+#include "sim/random_stream.hpp"
+
+namespace visors::sim {
+
+namespace {
+
+core::Result<bool> set_up_truth(SimulatedSpacecraft& v, const CampaignScenario& s, const SpacecraftSettings& sc,
+                                const std::string& prefix) {
+  auto dynamics = make_truth_dynamics(s, sc, prefix);
+  if (!dynamics.ok()) return dynamics.error();
+  v.truth = std::move(dynamics).value();
+  auto propulsion = Propulsion::create(s.propulsion, sc.mass_kg, sc.propellant_kg, RandomStream(s.seed, prefix + ".propulsion"));
+  if (!propulsion.ok()) return core::Error{prefix + "." + propulsion.error().field, propulsion.error().message};
+  v.propulsion.emplace(std::move(propulsion).value());
+  AttitudeSettings attitude_settings;
+  attitude_settings.slew_rate_radps = s.gnc.science.slew_rate_rad_s;
+  attitude_settings.settling_s = s.gnc.science.slew_settle_s;
+  auto attitude = AttitudeProfile::create(attitude_settings);
+  if (!attitude.ok()) return core::Error{"gnc.science." + attitude.error().field, attitude.error().message};
+  v.attitude.emplace(std::move(attitude).value());
+  RandomStream geometry_rng(s.seed, prefix + ".geometry");
+  v.geometry.emplace(SpacecraftGeometry::draw(GeometrySettings{}, geometry_rng));
+  return true;
+}
+
+core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenario& s, const SpacecraftSettings& sc,
+                                   bool active, const std::string& prefix) {
+  gnc::GncConfig config = s.gnc;
+  config.self = v.id;
+  config.active = active;
+  config.mass_kg = sc.mass_kg;
+  auto component = gnc::FlightComponent::create(config);
+  if (!component.ok()) return core::Error{"gnc." + component.error().field, component.error().message};
+  v.gnc.emplace(std::move(component).value());
+  v.navigation.emplace(s.navigation, RandomStream(s.seed, prefix + ".navigation"));
+  CrosslinkSettings link;
+  link.delay_s = s.crosslink_delay_s;
+  link.drop_probability = s.crosslink_drop_probability;
+  auto inbox = Crosslink<gnc::CrosslinkMessage>::create(link, RandomStream(s.seed, prefix + ".crosslink"));
+  if (!inbox.ok()) return core::Error{"crosslink." + inbox.error().field, inbox.error().message};
+  v.inbox.emplace(std::move(inbox).value());
+  return true;
+}
+
+}  // namespace
+
+core::Result<bool> set_up_spacecraft(SimulatedSpacecraft& v, const CampaignScenario& scenario,
+                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf) {
+  const std::string prefix(v.name);
+  v.x_gcrf = x0_gcrf;
+  if (auto ok = set_up_truth(v, scenario, settings, prefix); !ok) return ok.error();
+  return set_up_avionics(v, scenario, settings, active, prefix);
+}
+
+}  // namespace visors::sim

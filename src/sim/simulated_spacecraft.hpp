@@ -1,0 +1,59 @@
+#pragma once
+// One spacecraft of the closed-loop campaign as the simulator holds it: its truth (state, force
+// model and propagator, attitude profile and drag area, propulsion with its errors, payload
+// geometry with its errors), its sensors (ideal navigation, the crosslink inbox), its GNC flight
+// component, and what the host application keeps for it (commands and telemetry to deliver at the
+// next step, FDIR persistence, executed delta-v).
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include <Eigen/Geometry>
+
+#include "core/state_vector.hpp"
+#include "core/status.hpp"
+#include "gnc/flight_component.hpp"
+#include "sim/attitude_profile.hpp"
+#include "sim/campaign_scenario.hpp"
+#include "sim/crosslink.hpp"
+#include "sim/drag_area.hpp"
+#include "sim/ideal_navigation.hpp"
+#include "sim/propulsion.hpp"
+#include "sim/spacecraft_geometry.hpp"
+#include "sim/truth_dynamics.hpp"
+
+namespace visors::sim {
+
+struct SimulatedSpacecraft {
+  gnc::Spacecraft id = gnc::Spacecraft::dsc;
+  std::string_view name;  // "dsc" or "osc": event log, error fields, random stream names
+  // Truth.
+  TruthDynamics truth;  // force model and propagator
+  core::StateVector x_gcrf;
+  Eigen::Quaterniond q_body_to_gcrf = Eigen::Quaterniond::Identity();
+  std::optional<AttitudeProfile> attitude;
+  DragArea drag = DragArea::visors_6u();
+  std::optional<Propulsion> propulsion;
+  std::optional<SpacecraftGeometry> geometry;
+  // Sensors and the flight component.
+  std::optional<IdealNavigation> navigation;
+  std::optional<Crosslink<gnc::CrosslinkMessage>> inbox;  // messages from the other spacecraft
+  std::optional<gnc::FlightComponent> gnc;
+  gnc::GncOutputs out;  // of the last step
+  // Host application.
+  std::optional<gnc::PropulsionTelemetry> telemetry;  // delivered at the next step
+  std::optional<gnc::GroundCommand> command;          // delivered at the next step
+  bool violation_reported = false;
+  double incapable_since_s = -1.0;  // since when GNC incapable is reported, -1 if not
+  std::array<double, gnc::kModeCount> dv_by_mode_mps{};  // executed, L1 in the thrusters' frame
+  double dv_total_mps = 0.0;
+};
+
+/// Sets up `v` (its `id` and `name` already set) for `scenario`: truth models, propulsion,
+/// attitude, geometry draw, flight component (`active` role), ideal navigation and inbox, with
+/// random streams named after the spacecraft. Errors name the scenario field.
+core::Result<bool> set_up_spacecraft(SimulatedSpacecraft& v, const CampaignScenario& scenario,
+                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf);
+
+}  // namespace visors::sim
