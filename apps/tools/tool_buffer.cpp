@@ -21,10 +21,10 @@ Json run_buffer(const Json& in) {
   const control::Impulse impulse{require_number(maneuver, "t", "maneuver"), require_vector3(maneuver, "dv_rtn", "maneuver")};
   const double mass = require_number(in, "mass");
   control::BufferSettings settings;
-  settings.limits.max_impulse = optional_number(in, "max_impulse").value_or(settings.limits.max_impulse);
-  settings.limits.min_impulse = optional_number(in, "min_impulse").value_or(settings.limits.min_impulse);
-  settings.limits.quantum = optional_number(in, "quantum").value_or(settings.limits.quantum);
-  settings.limits.spacing = optional_number(in, "spacing").value_or(settings.limits.spacing);
+  settings.limits.max_impulse_ns = optional_number(in, "max_impulse").value_or(settings.limits.max_impulse_ns);
+  settings.limits.min_impulse_ns = optional_number(in, "min_impulse").value_or(settings.limits.min_impulse_ns);
+  settings.limits.quantum_ns = optional_number(in, "quantum").value_or(settings.limits.quantum_ns);
+  settings.limits.spacing_s = optional_number(in, "spacing").value_or(settings.limits.spacing_s);
   const control::BufferedManeuver out = take(control::buffer_impulse(chief, impulse, mass, settings));
   Json pieces = Json::array();
   for (const control::Impulse& p : out.pieces) pieces.push_back({{"t", p.t}, {"dv_rtn", to_json(p.dv_rtn)}});

@@ -89,11 +89,11 @@ core::Result<bool> validate_inputs(const astro::KeplerianElements& chief_mean_t0
   if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
   if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
   if (!std::isfinite(tf)) return core::Error{"tf", "must be finite"};
-  if (!std::isfinite(settings.earliest_burn) || settings.earliest_burn < 0.0) {
-    return core::Error{"settings.earliest_burn", "must be finite and >= 0"};
+  if (!std::isfinite(settings.earliest_burn_s) || settings.earliest_burn_s < 0.0) {
+    return core::Error{"settings.earliest_burn_s", "must be finite and >= 0"};
   }
-  if (!std::isfinite(settings.end_margin) || settings.end_margin < 0.0) {
-    return core::Error{"settings.end_margin", "must be finite and >= 0"};
+  if (!std::isfinite(settings.end_margin_s) || settings.end_margin_s < 0.0) {
+    return core::Error{"settings.end_margin_s", "must be finite and >= 0"};
   }
   if (!std::isfinite(settings.min_window_orbits) || settings.min_window_orbits < 1.5) {
     return core::Error{"settings.min_window_orbits", "must be >= 1.5 (three-burn solution)"};
@@ -101,8 +101,8 @@ core::Result<bool> validate_inputs(const astro::KeplerianElements& chief_mean_t0
   if (settings.normal_burns != 1 && settings.normal_burns != 2) {
     return core::Error{"settings.normal_burns", "must be 1 or 2"};
   }
-  if (!std::isfinite(settings.terminal_tolerance) || settings.terminal_tolerance <= 0.0) {
-    return core::Error{"settings.terminal_tolerance", "must be finite and positive"};
+  if (!std::isfinite(settings.terminal_tolerance_m) || settings.terminal_tolerance_m <= 0.0) {
+    return core::Error{"settings.terminal_tolerance_m", "must be finite and positive"};
   }
   return true;
 }
@@ -119,8 +119,8 @@ core::Result<ClosedFormProblem> set_up(const astro::KeplerianElements& chief_mea
   p.u_dot = latitude_rate(p.rates);
   p.orbit = core::kTwoPi / p.u_dot;
   p.tf = tf;
-  p.ts = settings.earliest_burn;
-  p.te = tf - settings.end_margin;
+  p.ts = settings.earliest_burn_s;
+  p.te = tf - settings.end_margin_s;
   if (!(p.te - p.ts >= settings.min_window_orbits * p.orbit)) {
     return core::Error{"tf", "horizon too short: the burn window must span at least " +
                                  std::to_string(settings.min_window_orbits) + " orbits (" +
@@ -308,7 +308,7 @@ core::Result<bool> add_tangential_burns(const ClosedFormProblem& p, const Vector
 }
 
 // Step 4: minimum-norm correction of all impulse vectors, v += M' (M M')^-1 (w - M v), twice;
-// the plan must then reach w within settings.terminal_tolerance.
+// the plan must then reach w within settings.terminal_tolerance_m.
 core::Result<bool> correct_min_norm(const ClosedFormProblem& p, ImpulseSet& set) {
   const int count = set.count;
   Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3 * kMaxImpulses> m(6, 3 * count);
@@ -329,7 +329,7 @@ core::Result<bool> correct_min_norm(const ClosedFormProblem& p, ImpulseSet& set)
     v += m.transpose() * y;
     residual = p.w - m * v;
   }
-  if (!(residual.norm() <= p.settings->terminal_tolerance)) {
+  if (!(residual.norm() <= p.settings->terminal_tolerance_m)) {
     return core::Error{"roe_target", "singular geometry: the impulses cannot reach the target (residual " +
                                          std::to_string(residual.norm()) + " m)"};
   }

@@ -56,8 +56,8 @@
 namespace visors::control {
 
 struct ClosedFormSettings {
-  double earliest_burn = 0.0;  // first allowed burn time since t0 [s]
-  double end_margin = 0.0;     // the last allowed burn time is tf - end_margin [s]
+  double earliest_burn_s = 0.0;  // first allowed burn time since t0 [s]
+  double end_margin_s = 0.0;     // the last allowed burn time is tf - end_margin [s]
   /// Minimum burn-window length in orbits (2 pi / u_dot): the first delta-e phased location lies
   /// within half an orbit of the window start and the three-burn solution needs another orbit
   /// after it (digest 4.4), hence 1.5.
@@ -66,7 +66,7 @@ struct ClosedFormSettings {
   /// phase), e.g. to respect a per-burn limit.
   int normal_burns = 1;
   /// Largest accepted terminal error of the linear model, a ||roe_f - roe_target|| [m].
-  double terminal_tolerance = 1e-6;
+  double terminal_tolerance_m = 1e-6;
 };
 
 /// Plan from the chief MEAN elements at t0, the mean ROE roe0 at t0 and the target mean ROE at

@@ -39,9 +39,9 @@ SunGeometry sun_geometry(const astro::KeplerianElements& chief, const Eigen::Vec
 
 RelativeOrbitalElements standby_roe(double chief_a, const StandbyOrbit& orbit) {
   RelativeOrbitalElements r = RelativeOrbitalElements::Zero();
-  const double rho = orbit.separation / chief_a;
-  r[roe::kDex] = r[roe::kDix] = rho * std::cos(orbit.phase);
-  r[roe::kDey] = r[roe::kDiy] = rho * std::sin(orbit.phase);
+  const double rho = orbit.separation_m / chief_a;
+  r[roe::kDex] = r[roe::kDix] = rho * std::cos(orbit.phase_rad);
+  r[roe::kDey] = r[roe::kDiy] = rho * std::sin(orbit.phase_rad);
   return r;
 }
 
@@ -50,11 +50,11 @@ core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_m
   if (auto valid = astro::validate_keplerian(chief_mean_t0); !valid) {
     return core::Error{"chief." + valid.error().field, valid.error().message};
   }
-  if (!(geometry.focal_distance > 0.0) || !std::isfinite(geometry.focal_distance)) {
-    return core::Error{"focal_distance", "must be a finite number > 0 m"};
+  if (!(geometry.focal_distance_m > 0.0) || !std::isfinite(geometry.focal_distance_m)) {
+    return core::Error{"focal_distance_m", "must be a finite number > 0 m"};
   }
-  if (!std::isfinite(geometry.los_rate)) return core::Error{"los_rate", "must be finite"};
-  if (!geometry.offset_rtn.allFinite()) return core::Error{"offset_rtn", "must be finite"};
+  if (!std::isfinite(geometry.los_rate_mps)) return core::Error{"los_rate_mps", "must be finite"};
+  if (!geometry.offset_rtn_m.allFinite()) return core::Error{"offset_rtn_m", "must be finite"};
 
   // The Sun moves ~1 deg/day: its direction at t0 places the observation; the state is then built
   // with the direction at the observation time itself.
@@ -78,9 +78,9 @@ core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_m
   out.beta = sun_geometry(chief_obs, sun_unit).beta;
   out.sun_rtn = to_rtn * sun_unit;
   // Aligned position; inertial velocity along the Sun line only; its rate in the rotating frame.
-  const Eigen::Vector3d r_rtn = geometry.focal_distance * out.sun_rtn + geometry.offset_rtn;
+  const Eigen::Vector3d r_rtn = geometry.focal_distance_m * out.sun_rtn + geometry.offset_rtn_m;
   const Eigen::Vector3d omega_rtn = to_rtn * core::rtn_angular_velocity_gcrf(chief_gcrf);
-  const Eigen::Vector3d v_rtn = geometry.los_rate * out.sun_rtn - omega_rtn.cross(r_rtn);
+  const Eigen::Vector3d v_rtn = geometry.los_rate_mps * out.sun_rtn - omega_rtn.cross(r_rtn);
   out.state_rtn << r_rtn, v_rtn;
   out.roe = astro::roe_from_rtn(chief_obs, out.state_rtn, gravity.mu);
   return out;

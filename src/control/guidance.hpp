@@ -27,20 +27,20 @@
 namespace visors::control {
 
 struct StandbyOrbit {
-  double separation = 200.0;      // rho = a|de| = a|di| [m]
-  double phase = 1.5707963267948966;  // common phase of de and di [rad] (90 deg: de along ey)
+  double separation_m = 200.0;      // rho = a|de| = a|di| [m]
+  double phase_rad = 1.5707963267948966;  // common phase of de and di [rad] (90 deg: de along ey)
 };
 
 /// Dimensionless ROE of the standby orbit for a chief of semi-major axis a [m].
 astro::RelativeOrbitalElements standby_roe(double chief_a, const StandbyOrbit& orbit = {});
 
 struct ScienceGeometry {
-  double focal_distance = 40.0;  // OSC sunward of DSC [m]
+  double focal_distance_m = 40.0;  // OSC sunward of DSC [m]
   bool north = true;             // observe at u_sun + 90 deg (else u_sun - 90 deg)
-  double los_rate = 0.0;         // relative velocity along the Sun line [m/s] (0: hover)
+  double los_rate_mps = 0.0;         // relative velocity along the Sun line [m/s] (0: hover)
   /// Lever arms of the payload reference points, r* = f s + offset_rtn (digest sec. 7.2:
   /// R_O p_O - R_D p_D with the sign for OSC minus DSC) [m].
-  Eigen::Vector3d offset_rtn = Eigen::Vector3d::Zero();
+  Eigen::Vector3d offset_rtn_m = Eigen::Vector3d::Zero();
 };
 
 struct ScienceOrbit {

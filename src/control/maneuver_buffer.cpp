@@ -18,11 +18,11 @@ core::Result<bool> check_inputs(const astro::KeplerianElements& chief, const Imp
   if (!impulse.dv_rtn.allFinite()) return core::Error{"maneuver.dv_rtn", "must be finite"};
   if (!(mass > 0.0) || !std::isfinite(mass)) return core::Error{"mass", "must be a finite number > 0 kg"};
   const ActuatorLimits& l = s.limits;
-  if (!(l.max_impulse > 0.0) || !(l.min_impulse >= 0.0) || l.min_impulse > l.max_impulse) {
+  if (!(l.max_impulse_ns > 0.0) || !(l.min_impulse_ns >= 0.0) || l.min_impulse_ns > l.max_impulse_ns) {
     return core::Error{"limits", "need 0 <= min_impulse <= max_impulse, max_impulse > 0"};
   }
-  if (!(l.quantum >= 0.0) || l.quantum > l.max_impulse) return core::Error{"limits.quantum", "must be in [0, max_impulse]"};
-  if (!(l.spacing > 0.0)) return core::Error{"limits.spacing", "must be > 0 s"};
+  if (!(l.quantum_ns >= 0.0) || l.quantum_ns > l.max_impulse_ns) return core::Error{"limits.quantum_ns", "must be in [0, max_impulse]"};
+  if (!(l.spacing_s > 0.0)) return core::Error{"limits.spacing_s", "must be > 0 s"};
   if (s.max_pieces < 1) return core::Error{"max_pieces", "must be >= 1"};
   if (!(s.cap_margin > 0.0 && s.cap_margin <= 1.0)) return core::Error{"cap_margin", "must be in (0, 1]"};
   return true;
@@ -87,7 +87,7 @@ core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_me
   if (settings.max_pieces > kMaxBufferPieces) return core::Error{"max_pieces", "must be <= 99"};
   Work& w = *work_;
   pieces_.clear();
-  const double cap = settings.cap_margin * settings.limits.max_impulse / mass;  // [m/s]
+  const double cap = settings.cap_margin * settings.limits.max_impulse_ns / mass;  // [m/s]
   const double dv = impulse.dv_rtn.norm();
   if (dv <= cap) {
     w.effects.resize(6, 3);
@@ -98,7 +98,7 @@ core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_me
   }
   for (int count = std::max(2, static_cast<int>(std::ceil(dv / cap))); count <= settings.max_pieces; ++count) {
     // Piece times centred on the planned time.
-    const auto time = [&](int j) { return impulse.t + (j - 0.5 * (count - 1)) * settings.limits.spacing; };
+    const auto time = [&](int j) { return impulse.t + (j - 0.5 * (count - 1)) * settings.limits.spacing_s; };
     const double t_ref = time(count - 1);
     w.effects.resize(6, 3 * count);
     for (int j = 0; j < count; ++j) w.effects.middleCols<3>(3 * j) = impulse_effect(chief_mean_t0, time(j), t_ref, settings.gravity);
@@ -115,7 +115,7 @@ core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_me
     if (within_cap) return true;
   }
   return core::Error{"maneuver.dv_rtn", "needs more than max_pieces = " + std::to_string(settings.max_pieces) +
-                                            " pieces of at most " + std::to_string(settings.limits.max_impulse) +
+                                            " pieces of at most " + std::to_string(settings.limits.max_impulse_ns) +
                                             " N s"};
 }
 
@@ -130,9 +130,9 @@ core::Result<bool> ImpulseBuffer::buffer(const astro::KeplerianElements& chief_m
   for (Eigen::Index j = 0; j < n; ++j) {
     Impulse& piece = pieces_[static_cast<std::size_t>(j)];
     const double impulse_ns = mass * piece.dv_rtn.norm();
-    double quantised = limits.quantum > 0.0 ? std::round(impulse_ns / limits.quantum) * limits.quantum : impulse_ns;
-    if (quantised > limits.max_impulse) quantised -= limits.quantum;
-    if (quantised < limits.min_impulse) quantised = 0.0;
+    double quantised = limits.quantum_ns > 0.0 ? std::round(impulse_ns / limits.quantum_ns) * limits.quantum_ns : impulse_ns;
+    if (quantised > limits.max_impulse_ns) quantised -= limits.quantum_ns;
+    if (quantised < limits.min_impulse_ns) quantised = 0.0;
     piece.dv_rtn = impulse_ns > 0.0 ? Eigen::Vector3d(piece.dv_rtn * (quantised / impulse_ns)) : Eigen::Vector3d::Zero();
     remaining -= w.effects.middleCols<3>(3 * j) * piece.dv_rtn;
     if (j + 1 < n) {

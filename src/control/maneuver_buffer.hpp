@@ -37,10 +37,10 @@ namespace visors::control {
 
 /// The propulsion system's limits (mission paper, propulsion table).
 struct ActuatorLimits {
-  double max_impulse = 2.2e-2;  // [N s]
-  double min_impulse = 1.0e-3;  // [N s]
-  double quantum = 6.0e-5;      // impulse quantisation [N s]
-  double spacing = 46.5;        // time between impulses [s]
+  double max_impulse_ns = 2.2e-2;  // [N s]
+  double min_impulse_ns = 1.0e-3;  // [N s]
+  double quantum_ns = 6.0e-5;      // impulse quantisation [N s]
+  double spacing_s = 46.5;        // time between impulses [s]
 };
 
 struct BufferSettings {

@@ -227,7 +227,7 @@ void FlightComponent::run_standby() {
   const double dlambda_m = std::abs(deviation_m(astro::roe::kDlambda));
   if (de_m <= config_.standby_keeping.de_deadband_m && dlambda_m <= config_.standby_keeping.dlambda_threshold_m) return;
   control::ClosedFormSettings settings;
-  settings.earliest_burn = config_.burn_latency_s;
+  settings.earliest_burn_s = config_.burn_latency_s;
   const double tf = config_.standby_keeping.plan_orbits * chief_period_s();
   if (control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, target, tf, settings, config_.gravity).ok()) {
     replace_plan(plan_.impulses);
@@ -252,8 +252,8 @@ bool FlightComponent::start_transfer(const astro::RelativeOrbitalElements& targe
 bool FlightComponent::plan_leg() {
   const double tf = config_.transfer.leg_orbits * chief_period_s();
   control::ClosedFormSettings settings;
-  settings.earliest_burn = config_.burn_latency_s;
-  settings.end_margin = config_.transfer.end_margin_s;
+  settings.earliest_burn_s = config_.burn_latency_s;
+  settings.end_margin_s = config_.transfer.end_margin_s;
   settings.normal_burns = config_.transfer.normal_burns;
   leg_end_ = estimate_->t + tf;
   leg_planned_ = true;
@@ -367,13 +367,13 @@ void FlightComponent::science_fine_control() {
   const double slew_before = observation_->start.seconds_since(observation_->slew_start);
   for (const double before : config_.science.least_squares_burns_before_s) {
     const double t_burn = to_start - before;
-    if (t_burn >= config_.burn_latency_s && before >= slew_before + config_.buffer.limits.spacing) burns[count++] = t_burn;
+    if (t_burn >= config_.burn_latency_s && before >= slew_before + config_.buffer.limits.spacing_s) burns[count++] = t_burn;
   }
   // Replan every least_squares_period_s on the newest estimate (the paper closes this loop about
   // every 45 s), but never while the pieces of a burn are being fired: they belong together.
   if (count == 0) return;
   if (ls_planned_ && since(last_ls_) < config_.science.least_squares_period_s) return;
-  if (!queue_.empty() && queue_.next_time() <= now_ + config_.burn_latency_s + config_.buffer.limits.spacing) return;
+  if (!queue_.empty() && queue_.next_time() <= now_ + config_.burn_latency_s + config_.buffer.limits.spacing_s) return;
   ls_planned_ = true;
   last_ls_ = now_;
   // Aim so that the differential drag still to come carries the formation onto the target.
@@ -446,7 +446,7 @@ void FlightComponent::run_escape() {
 
 void FlightComponent::release_maneuver(GncOutputs& out) {
   if (!active_ || mode_ == Mode::manual || !has_attitude_ || !estimate_) return;
-  if (!queue_.due(now_, config_.buffer.limits.spacing)) return;
+  if (!queue_.due(now_, config_.buffer.limits.spacing_s)) return;
   const QueuedPiece piece = queue_.pop(now_);
   drag_.maneuver(now_);
   // The DSC (chief) firing changes the ROE with the opposite sign of the same impulse of the OSC

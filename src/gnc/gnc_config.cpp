@@ -11,7 +11,7 @@ bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 
 core::Result<GncConfig> validate(const GncConfig& config) {
   if (!positive(config.mass_kg)) return core::Error{"mass_kg", "must be > 0"};
-  if (!positive(config.standby.separation)) return core::Error{"standby.separation", "must be > 0"};
+  if (!positive(config.standby.separation_m)) return core::Error{"standby.separation_m", "must be > 0"};
   const auto& sk = config.standby_keeping;
   if (!positive(sk.check_period_orbits)) return core::Error{"standby_keeping.check_period_orbits", "must be > 0"};
   if (!positive(sk.de_deadband_m)) return core::Error{"standby_keeping.de_deadband_m", "must be > 0"};
@@ -45,7 +45,7 @@ core::Result<GncConfig> validate(const GncConfig& config) {
     return core::Error{"science.min_lead_s", "must exceed least_squares_window_s"};
   }
   if (!positive(sc.observation_duration_s)) return core::Error{"science.observation_duration_s", "must be > 0"};
-  if (!positive(sc.slew_rate_rad_s)) return core::Error{"science.slew_rate_rad_s", "must be > 0"};
+  if (!positive(sc.slew_rate_radps)) return core::Error{"science.slew_rate_radps", "must be > 0"};
   if (!(sc.slew_settle_s >= 0.0)) return core::Error{"science.slew_settle_s", "must be >= 0"};
   if (!(sc.slew_margin_rad >= 0.0 && sc.slew_margin_rad <= core::kPi)) {
     return core::Error{"science.slew_margin_rad", "must be in [0, pi]"};

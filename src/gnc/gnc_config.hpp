@@ -82,7 +82,7 @@ struct ScienceSettings {
   /// a horizon (0.5 orbit) [s].
   double min_lead_s = 2900.0;
   double observation_duration_s = 10.0;  // [s] (requirement: 10 s windows)
-  double slew_rate_rad_s = 1.5 * core::kPi / 180.0;  // [rad/s] (paper: 1.5 deg/s)
+  double slew_rate_radps = 1.5 * core::kPi / 180.0;  // [rad/s] (paper: 1.5 deg/s)
   double slew_settle_s = 30.0;                       // settling after the slew [s] (ours)
   /// Midpoint-rule nodes of the differential-drag drift to the aligned time (FlightComponent::
   /// drag_drift; 1..kMaxDragDriftNodes). 24 nodes over the <= 900 s window make the quadrature

@@ -3,7 +3,7 @@
 // store planned maneuvers without commanding them until execution"): each planned impulse is split
 // into actuator-sized, quantised pieces by control::buffer_impulse and stored with its absolute
 // time. A new plan replaces the pieces not yet commanded. A piece is released when its time has
-// come and the plenum has refilled since the previous one (ActuatorLimits::spacing); pieces of
+// come and the plenum has refilled since the previous one (ActuatorLimits::spacing_s); pieces of
 // neighbouring impulses that overlap in time are therefore released late, in order, and the next
 // plan corrects the small effect of the delay.
 //

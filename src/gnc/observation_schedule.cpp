@@ -11,7 +11,7 @@
 namespace visors::gnc {
 
 double slew_lead_s(const ScienceSettings& settings, double angle_rad) {
-  return (std::abs(angle_rad) + settings.slew_margin_rad) / settings.slew_rate_rad_s + settings.slew_settle_s;
+  return (std::abs(angle_rad) + settings.slew_margin_rad) / settings.slew_rate_radps + settings.slew_settle_s;
 }
 
 core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
@@ -22,8 +22,8 @@ core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chi
   const core::StateVector chief = astro::cartesian_from_keplerian(*chief_osc, gravity.mu);
   const Eigen::Vector3d sun_unit = (astro::sun_position_gcrf(t) - chief.r).normalized();
   const Eigen::Matrix3d rtn_to_gcrf = core::gcrf_to_rtn_matrix(chief).transpose();
-  const Eigen::Vector3d dr = geometry.focal_distance * sun_unit + rtn_to_gcrf * geometry.offset_rtn;
-  const core::StateVector deputy{chief.r + dr, chief.v + geometry.los_rate * sun_unit};
+  const Eigen::Vector3d dr = geometry.focal_distance_m * sun_unit + rtn_to_gcrf * geometry.offset_rtn_m;
+  const core::StateVector deputy{chief.r + dr, chief.v + geometry.los_rate_mps * sun_unit};
   const auto deputy_osc = astro::cartesian_to_keplerian(deputy.r, deputy.v, gravity.mu);
   if (!deputy_osc.ok()) return deputy_osc.error();
   const auto deputy_mean = astro::mean_from_osculating(*deputy_osc, gravity);

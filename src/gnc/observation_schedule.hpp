@@ -22,8 +22,8 @@ struct ScheduledObservation {
 };
 
 /// The mean ROE (chief_mean at t) whose OSCULATING relative state at t is the aligned one: the
-/// deputy f metres from the chief towards the Sun (plus geometry.offset_rtn) with an inertial
-/// relative velocity along the Sun line only (geometry.los_rate). Built exactly: chief osculating
+/// deputy f metres from the chief towards the Sun (plus geometry.offset_rtn_m) with an inertial
+/// relative velocity along the Sun line only (geometry.los_rate_mps). Built exactly: chief osculating
 /// state, deputy state, deputy mean elements, ROE. control::science_orbit's ROE comes from the
 /// first-order map at the MEAN chief instead, which misplaces the deputy by the short-period J2
 /// terms (centimetres at 40 m, where the requirement is 18 mm).

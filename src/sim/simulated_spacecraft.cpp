@@ -18,7 +18,7 @@ core::Result<bool> set_up_truth(SimulatedSpacecraft& v, const CampaignScenario& 
   if (!propulsion.ok()) return core::Error{prefix + "." + propulsion.error().field, propulsion.error().message};
   v.propulsion.emplace(std::move(propulsion).value());
   AttitudeSettings attitude_settings;
-  attitude_settings.slew_rate_radps = s.gnc.science.slew_rate_rad_s;
+  attitude_settings.slew_rate_radps = s.gnc.science.slew_rate_radps;
   attitude_settings.settling_s = s.gnc.science.slew_settle_s;
   auto attitude = AttitudeProfile::create(attitude_settings);
   if (!attitude.ok()) return core::Error{"gnc.science." + attitude.error().field, attitude.error().message};

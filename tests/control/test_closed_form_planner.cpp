@@ -205,17 +205,17 @@ TEST(ClosedFormPlanner, RejectsBadInput) {
   bad.i = 0.0;
   EXPECT_EQ(field(bad, standby(a), science(a), 2 * T), "chief_mean_t0.i");
   ClosedFormSettings s;
-  s.earliest_burn = 0.6 * T;  // leaves 1.4 orbits in a 2-orbit horizon
+  s.earliest_burn_s = 0.6 * T;  // leaves 1.4 orbits in a 2-orbit horizon
   EXPECT_EQ(field(chief, standby(a), science(a), 2 * T, s), "tf");
   s = {};
   s.normal_burns = 3;
   EXPECT_EQ(field(chief, standby(a), science(a), 2 * T, s), "settings.normal_burns");
   s = {};
-  s.end_margin = -1.0;
-  EXPECT_EQ(field(chief, standby(a), science(a), 2 * T, s), "settings.end_margin");
+  s.end_margin_s = -1.0;
+  EXPECT_EQ(field(chief, standby(a), science(a), 2 * T, s), "settings.end_margin_s");
   // The singular-geometry path: a terminal tolerance below round-off cannot be met.
   s = {};
-  s.terminal_tolerance = 1e-300;
+  s.terminal_tolerance_m = 1e-300;
   EXPECT_EQ(field(chief, standby(a), science(a), 2 * T, s), "roe_target");
 }
 
@@ -226,8 +226,8 @@ TEST(ClosedFormPlanner, RespectsTheBurnWindowAndFreeDrift) {
   const double a = chief.a;
   const double T = orbit_period(chief, kJ2);
   ClosedFormSettings s;
-  s.earliest_burn = 600.0;
-  s.end_margin = 900.0;
+  s.earliest_burn_s = 600.0;
+  s.end_margin_s = 900.0;
   const auto plan = plan_closed_form(chief, standby(a), science(a), 2.0 * T, s, kJ2);
   ASSERT_TRUE(plan.ok());
   for (const Impulse& imp : plan->impulses) {

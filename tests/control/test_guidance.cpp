@@ -112,8 +112,8 @@ TEST(Guidance, ScienceOrbitComparedWithThePapersScienceRoe) {
 
 TEST(Guidance, ScienceOrbitRejectsANonPositiveFocalDistance) {
   ScienceGeometry g;
-  g.focal_distance = 0.0;
-  EXPECT_EQ(science_orbit(kChief, kEpoch, g).error().field, "focal_distance");
+  g.focal_distance_m = 0.0;
+  EXPECT_EQ(science_orbit(kChief, kEpoch, g).error().field, "focal_distance_m");
 }
 
 // Waypoints keep the e and i vectors parallel (one common phase) and end at the target.

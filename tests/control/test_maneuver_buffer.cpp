@@ -34,9 +34,9 @@ TEST(ManeuverBuffer, EveryPieceIsWithinTheActuatorLimits) {
   const ActuatorLimits limits;
   for (const Impulse& p : buffered->pieces) {
     const double impulse = kMass * p.dv_rtn.norm();  // [N s]
-    EXPECT_LE(impulse, limits.max_impulse + 1e-15);
-    EXPECT_GE(impulse, limits.min_impulse - 1e-15);
-    EXPECT_NEAR(impulse / limits.quantum, std::round(impulse / limits.quantum), 1e-9);
+    EXPECT_LE(impulse, limits.max_impulse_ns + 1e-15);
+    EXPECT_GE(impulse, limits.min_impulse_ns - 1e-15);
+    EXPECT_NEAR(impulse / limits.quantum_ns, std::round(impulse / limits.quantum_ns), 1e-9);
   }
 }
 
