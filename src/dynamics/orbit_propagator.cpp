@@ -14,7 +14,7 @@ using core::GpsTime;
 
 constexpr std::int64_t kNs = GpsTime::kNanosecondsPerSecond;
 
-std::int64_t to_ns(double seconds) { return std::llround(seconds * static_cast<double>(kNs)); }
+std::int64_t to_nanos(double seconds) { return std::llround(seconds * static_cast<double>(kNs)); }
 
 Vector6d stack(const core::StateVector& x) {
   Vector6d y;
@@ -62,10 +62,10 @@ Vector6d OrbitPropagator::derivative(GpsTime t, const Vector6d& x) {
 
 // Classical RK4 (Kutta 1901); the force model is evaluated at the sub-step times t + h/2 and
 // t + h, so the Earth-fixed gravity field rotates within the step as it should.
-Vector6d OrbitPropagator::rk4_step(GpsTime t, const Vector6d& x, std::int64_t h_ns) {
-  const double h = static_cast<double>(h_ns) / static_cast<double>(kNs);
-  const GpsTime t_mid = t + std::chrono::nanoseconds(h_ns / 2);
-  const GpsTime t_end = t + std::chrono::nanoseconds(h_ns);
+Vector6d OrbitPropagator::rk4_step(GpsTime t, const Vector6d& x, std::int64_t h_nanos) {
+  const double h = static_cast<double>(h_nanos) / static_cast<double>(kNs);
+  const GpsTime t_mid = t + std::chrono::nanoseconds(h_nanos / 2);
+  const GpsTime t_end = t + std::chrono::nanoseconds(h_nanos);
   const Vector6d k1 = derivative(t, x);
   const Vector6d k2 = derivative(t_mid, x + 0.5 * h * k1);
   const Vector6d k3 = derivative(t_mid, x + 0.5 * h * k2);
@@ -85,8 +85,8 @@ core::Result<Vector6d> OrbitPropagator::advance(GpsTime from, const Vector6d& x0
     if (!result) return state_error(from, "reference integrator failed: " + result.error().message);
     return result;
   }
-  const std::int64_t h = to_ns(settings_.step);
-  const std::int64_t h_min = to_ns(settings_.min_step);
+  const std::int64_t h = to_nanos(settings_.step);
+  const std::int64_t h_min = to_nanos(settings_.min_step);
   Vector6d x = x0;
   GpsTime t = from;
   while (t < to) {

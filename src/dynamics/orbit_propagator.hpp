@@ -83,7 +83,7 @@ class OrbitPropagator {
 
   core::Result<Vector6d> advance(core::GpsTime from, const Vector6d& x, core::GpsTime to,
                                  core::GpsTime grid_origin);
-  Vector6d rk4_step(core::GpsTime t, const Vector6d& x, std::int64_t h_ns);
+  Vector6d rk4_step(core::GpsTime t, const Vector6d& x, std::int64_t h_nanos);
   Vector6d derivative(core::GpsTime t, const Vector6d& x);
 
   ForceModel* forces_;
