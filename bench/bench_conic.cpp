@@ -69,7 +69,7 @@ void BM_ConicSolve(benchmark::State& state) {
     benchmark::DoNotOptimize(info);
     times.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
     iterations.push_back(info.ok() ? info->iterations : -1);
-    if (!info.ok() || info->status != visors::optim::ConicStatus::optimal) ++failures;
+    if (!info.ok() || info->status != visors::optim::ConicStatus::kOptimal) ++failures;
     if (info.ok()) fallbacks += info->dense_fallbacks;
     next = (next + 1) % instances.size();
   }

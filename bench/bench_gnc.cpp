@@ -48,15 +48,15 @@ void BM_FlightComponentStep(benchmark::State& state) {
     test::FormationHarness harness(test::mission_chief(), roe, kT0);
     auto component = FlightComponent::create(GncConfig{}).value();
     bool observed = false;
-    for (int k = 0; k < steps && !(observed && component.mode() == Mode::transfer_to_standby); ++k) {
+    for (int k = 0; k < steps && !(observed && component.mode() == Mode::kTransferToStandby); ++k) {
       GncInputs in = harness.inputs(k);
-      if (k == 0) in.command = GroundCommand{kT0, GroundCommand::Kind::to_standby, 0};
-      if (k == 1 && science) in.command = GroundCommand{kT0 + 1.0, GroundCommand::Kind::start_science, 1};
+      if (k == 0) in.command = GroundCommand{kT0, GroundCommand::Kind::kToStandby, 0};
+      if (k == 1 && science) in.command = GroundCommand{kT0 + 1.0, GroundCommand::Kind::kStartScience, 1};
       const auto t0 = std::chrono::steady_clock::now();
       const GncOutputs out = component.step(in);
       us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
       if (out.maneuver) harness.apply_deputy_dv(k, out.maneuver->dv_body_mps);  // body = GCRF (identity attitude)
-      observed = observed || out.mode == Mode::science;
+      observed = observed || out.mode == Mode::kScience;
     }
   }
   state.counters["steps"] = static_cast<double>(us.size());

@@ -81,7 +81,7 @@ optim::ConicProblem primal_problem_shell(int m) {
 }
 
 bool usable(optim::ConicStatus status) {
-  return status == optim::ConicStatus::optimal || status == optim::ConicStatus::max_iterations;
+  return status == optim::ConicStatus::kOptimal || status == optim::ConicStatus::kMaxIterations;
 }
 
 }  // namespace
@@ -337,7 +337,7 @@ core::Result<bool> ReachableSetPlanner::exchange_iteration(const Problem& pb) {
     if (!info.ok()) return invalid("solver", info.error().describe());
     stats_.socp_iterations += info->iterations;
     stats_.exchange_iterations = it + 1;
-    if (info->status == optim::ConicStatus::primal_infeasible || info->status == optim::ConicStatus::dual_infeasible) {
+    if (info->status == optim::ConicStatus::kPrimalInfeasible || info->status == optim::ConicStatus::kDualInfeasible) {
       return invalid("roe_target", std::string("restricted dual SOCP is ") + std::string(optim::to_string(info->status)));
     }
     if (!usable(info->status)) {

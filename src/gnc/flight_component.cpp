@@ -53,9 +53,9 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
     release_maneuver(out);
   }
   out.mode = mode_;
-  out.star_tracker_power = mode_ == Mode::science;
-  out.lrf_power = mode_ == Mode::science;
-  out.passive_safety_violated = safety_violated_ && mode_ != Mode::manual && mode_ != Mode::escape;
+  out.star_tracker_power = mode_ == Mode::kScience;
+  out.lrf_power = mode_ == Mode::kScience;
+  out.passive_safety_violated = safety_violated_ && mode_ != Mode::kManual && mode_ != Mode::kEscape;
   const bool stale = !estimate_ || since(last_navigation_) > config_.max_estimate_age_s;
   out.gnc_incapable = stale || consecutive_failures_ >= config_.max_planning_failures;
   telemetry_.t = now_;
@@ -117,25 +117,25 @@ void FlightComponent::accept_inputs(const GncInputs& inputs, GncOutputs& out) {
 void FlightComponent::apply_command(const GroundCommand& command) {
   using Kind = GroundCommand::Kind;
   switch (command.kind) {
-    case Kind::to_manual: enter(Mode::manual); break;
-    case Kind::to_standby:
-      if (mode_ == Mode::manual) enter(Mode::standby);
+    case Kind::kToManual: enter(Mode::kManual); break;
+    case Kind::kToStandby:
+      if (mode_ == Mode::kManual) enter(Mode::kStandby);
       break;
-    case Kind::start_science:
-      if (mode_ == Mode::standby) {
+    case Kind::kStartScience:
+      if (mode_ == Mode::kStandby) {
         observations_planned_ = command.observations;
         observations_done_ = 0;
-        enter(Mode::transfer_to_science);
+        enter(Mode::kTransferToScience);
       }
       break;
-    case Kind::transfer_to_standby:
-      if (mode_ == Mode::science || mode_ == Mode::transfer_to_science) enter(Mode::transfer_to_standby);
+    case Kind::kTransferToStandby:
+      if (mode_ == Mode::kScience || mode_ == Mode::kTransferToScience) enter(Mode::kTransferToStandby);
       break;
-    case Kind::escape:
-      if (mode_ != Mode::escape) enter(Mode::escape);
+    case Kind::kEscape:
+      if (mode_ != Mode::kEscape) enter(Mode::kEscape);
       break;
-    case Kind::make_active: active_ = true; break;
-    case Kind::make_passive:
+    case Kind::kMakeActive: active_ = true; break;
+    case Kind::kMakePassive:
       active_ = false;
       queue_.clear();
       break;
@@ -189,12 +189,12 @@ double FlightComponent::chief_period_s() const {
 void FlightComponent::run_control(GncOutputs& out) {
   if (!estimate_ || since(last_navigation_) > config_.max_estimate_age_s) return;
   switch (mode_) {
-    case Mode::manual: break;
-    case Mode::standby: run_standby(); break;
-    case Mode::transfer_to_science:
-    case Mode::transfer_to_standby: run_transfer(); break;
-    case Mode::science: run_science(out); break;
-    case Mode::escape: run_escape(); break;
+    case Mode::kManual: break;
+    case Mode::kStandby: run_standby(); break;
+    case Mode::kTransferToScience:
+    case Mode::kTransferToStandby: run_transfer(); break;
+    case Mode::kScience: run_science(out); break;
+    case Mode::kEscape: run_escape(); break;
   }
 }
 
@@ -269,7 +269,7 @@ bool FlightComponent::plan_leg() {
 void FlightComponent::run_transfer() {
   if (waypoints_.empty()) {
     astro::RelativeOrbitalElements target;
-    if (mode_ == Mode::transfer_to_science) {
+    if (mode_ == Mode::kTransferToScience) {
       if (config_.science.choose_pole) {
         const auto north = choose_north_pole(estimate_->chief_mean, estimate_->t, config_.science, geometry_, config_.gravity);
         if (north.ok()) geometry_.north = *north;
@@ -293,7 +293,7 @@ void FlightComponent::run_transfer() {
   ++leg_;
   leg_planned_ = false;
   if (leg_ < waypoints_.size()) return;
-  enter(mode_ == Mode::transfer_to_science ? Mode::science : Mode::standby);
+  enter(mode_ == Mode::kTransferToScience ? Mode::kScience : Mode::kStandby);
 }
 
 bool FlightComponent::schedule_observation(GncOutputs& out) {
@@ -330,7 +330,7 @@ void FlightComponent::run_science(GncOutputs& out) {
   if (now_ >= observation_->end) {
     ++observations_done_;
     observation_.reset();
-    if (observations_done_ >= observations_planned_) enter(Mode::transfer_to_standby);
+    if (observations_done_ >= observations_planned_) enter(Mode::kTransferToStandby);
     return;
   }
   if (now_ >= observation_->slew_start) {
@@ -441,17 +441,17 @@ void FlightComponent::run_escape() {
     replace_plan(single_);
     return;
   }
-  if (queue_.empty() && queue_.has_released()) enter(Mode::manual);
+  if (queue_.empty() && queue_.has_released()) enter(Mode::kManual);
 }
 
 void FlightComponent::release_maneuver(GncOutputs& out) {
-  if (!active_ || mode_ == Mode::manual || !has_attitude_ || !estimate_) return;
+  if (!active_ || mode_ == Mode::kManual || !has_attitude_ || !estimate_) return;
   if (!queue_.due(now_, config_.buffer.limits.spacing_s)) return;
   const QueuedPiece piece = queue_.pop(now_);
   drag_.maneuver(now_);
   // The DSC (chief) firing changes the ROE with the opposite sign of the same impulse of the OSC
   // (docs/conventions.md "Spacecraft and roles").
-  const Eigen::Vector3d dv_rtn = config_.self == Spacecraft::dsc ? Eigen::Vector3d(-piece.dv_rtn) : piece.dv_rtn;
+  const Eigen::Vector3d dv_rtn = config_.self == Spacecraft::kDsc ? Eigen::Vector3d(-piece.dv_rtn) : piece.dv_rtn;
   const Eigen::Vector3d dv_gcrf = estimate_->rtn_to_gcrf * dv_rtn;
   out.maneuver = ManeuverCommand{now_, q_body_to_gcrf_.conjugate() * dv_gcrf, dv_rtn};
 }

@@ -102,7 +102,7 @@ class FlightComponent {
   control::LeastSquaresPlan ls_plan_;
   control::MpcStep mpc_step_;
   std::array<control::Impulse, 1> single_{};
-  Mode mode_ = Mode::manual;
+  Mode mode_ = Mode::kManual;
   bool active_ = true;
   double mass_kg_ = 0.0;
   core::GpsTime now_;

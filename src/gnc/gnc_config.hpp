@@ -97,7 +97,7 @@ struct ScienceSettings {
 inline constexpr int kMaxDragDriftNodes = 1000;
 
 struct GncConfig {
-  Spacecraft self = Spacecraft::osc;
+  Spacecraft self = Spacecraft::kOsc;
   bool active = true;        // initial role: the active spacecraft maneuvers
   double mass_kg = 10.62;    // own wet mass at start (updated by propulsion telemetry) [kg]
   core::EarthGravityConstants gravity;

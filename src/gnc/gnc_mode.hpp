@@ -11,7 +11,7 @@
 
 namespace visors::gnc {
 
-enum class Mode : std::uint8_t { manual, standby, transfer_to_science, science, transfer_to_standby, escape };
+enum class Mode : std::uint8_t { kManual, kStandby, kTransferToScience, kScience, kTransferToStandby, kEscape };
 
 inline constexpr int kModeCount = 6;
 

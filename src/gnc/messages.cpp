@@ -38,17 +38,17 @@ core::Result<bool> check_state(const core::StateVector& x, const char* field) {
 
 }  // namespace
 
-std::string_view to_string(Spacecraft spacecraft) { return spacecraft == Spacecraft::dsc ? "dsc" : "osc"; }
+std::string_view to_string(Spacecraft spacecraft) { return spacecraft == Spacecraft::kDsc ? "dsc" : "osc"; }
 
 std::string_view to_string(GroundCommand::Kind kind) {
   switch (kind) {
-    case GroundCommand::Kind::to_manual: return "to_manual";
-    case GroundCommand::Kind::to_standby: return "to_standby";
-    case GroundCommand::Kind::start_science: return "start_science";
-    case GroundCommand::Kind::transfer_to_standby: return "transfer_to_standby";
-    case GroundCommand::Kind::escape: return "escape";
-    case GroundCommand::Kind::make_active: return "make_active";
-    case GroundCommand::Kind::make_passive: return "make_passive";
+    case GroundCommand::Kind::kToManual: return "to_manual";
+    case GroundCommand::Kind::kToStandby: return "to_standby";
+    case GroundCommand::Kind::kStartScience: return "start_science";
+    case GroundCommand::Kind::kTransferToStandby: return "transfer_to_standby";
+    case GroundCommand::Kind::kEscape: return "escape";
+    case GroundCommand::Kind::kMakeActive: return "make_active";
+    case GroundCommand::Kind::kMakePassive: return "make_passive";
   }
   return "unknown";
 }
@@ -96,10 +96,10 @@ core::Result<bool> validate(const CrosslinkMessage& message, core::GpsTime now) 
 
 core::Result<bool> validate(const GroundCommand& message, core::GpsTime now) {
   if (auto ok = check_age(message.t, now, kMaxAgeCommand, "command.t"); !ok) return ok.error();
-  if (static_cast<int>(message.kind) > static_cast<int>(GroundCommand::Kind::make_passive)) {
+  if (static_cast<int>(message.kind) > static_cast<int>(GroundCommand::Kind::kMakePassive)) {
     return core::Error{"command.kind", "unknown command"};
   }
-  if (message.kind == GroundCommand::Kind::start_science &&
+  if (message.kind == GroundCommand::Kind::kStartScience &&
       (message.observations < 1 || message.observations > kMaxObservations)) {
     return core::Error{"command.observations", "must be in 1..1000"};
   }

@@ -21,7 +21,7 @@
 
 namespace visors::gnc {
 
-enum class Spacecraft : std::uint8_t { dsc, osc };
+enum class Spacecraft : std::uint8_t { kDsc, kOsc };
 std::string_view to_string(Spacecraft spacecraft);
 
 // ---- Inputs.
@@ -45,16 +45,16 @@ struct NavigationSolution {
 /// Ground commands (weekly); FDIR responses of the host application use the same record.
 struct GroundCommand {
   enum class Kind : std::uint8_t {
-    to_manual,            // stop autonomous control
-    to_standby,           // from manual: acquire / keep the standby orbit
-    start_science,        // from standby: transfer to science, then `observations` attempts
-    transfer_to_standby,  // FDIR: abort science or transfer, go back to standby
-    escape,               // FDIR: plan and execute the escape maneuver, then manual
-    make_active,          // role switch: this spacecraft maneuvers
-    make_passive,         // role switch: this spacecraft does not maneuver
+    kToManual,            // stop autonomous control
+    kToStandby,           // from manual: acquire / keep the standby orbit
+    kStartScience,        // from standby: transfer to science, then `observations` attempts
+    kTransferToStandby,   // FDIR: abort science or transfer, go back to standby
+    kEscape,              // FDIR: plan and execute the escape maneuver, then manual
+    kMakeActive,          // role switch: this spacecraft maneuvers
+    kMakePassive,         // role switch: this spacecraft does not maneuver
   };
   core::GpsTime t;
-  Kind kind = Kind::to_manual;
+  Kind kind = Kind::kToManual;
   int observations = 10;  // start_science only
 };
 std::string_view to_string(GroundCommand::Kind kind);
@@ -70,8 +70,8 @@ struct PropulsionTelemetry {
 /// Crosslink (1 Hz, delayed): what the other spacecraft's component tells this one.
 struct CrosslinkMessage {
   core::GpsTime t;  // when it was sent
-  Spacecraft sender = Spacecraft::dsc;
-  Mode mode = Mode::manual;
+  Spacecraft sender = Spacecraft::kDsc;
+  Mode mode = Mode::kManual;
   bool sender_active = false;
   int observations_done = 0;
   int observations_planned = 0;
@@ -111,7 +111,7 @@ struct RejectionCounters {
 
 struct Telemetry {
   core::GpsTime t;
-  Mode mode = Mode::manual;
+  Mode mode = Mode::kManual;
   bool active = false;
   bool estimate_valid = false;
   Eigen::Matrix<double, 6, 1> roe_mean_m = Eigen::Matrix<double, 6, 1>::Zero();  // a * mean ROE [m]
@@ -130,7 +130,7 @@ struct GncOutputs {
   std::optional<ManeuverCommand> maneuver;
   std::optional<ObservationCommand> observation;  // issued once per attempt, when scheduled
   std::optional<CrosslinkMessage> crosslink;
-  Mode mode = Mode::manual;
+  Mode mode = Mode::kManual;
   bool star_tracker_power = false;  // science mode
   bool lrf_power = false;           // science mode
   bool gnc_incapable = false;       // no valid estimate, or planning keeps failing

@@ -153,11 +153,11 @@ bool factor_psd(const Eigen::MatrixXd& P, double tol, double* work, double* r,
 
 std::string_view to_string(ConicStatus status) {
   switch (status) {
-    case ConicStatus::optimal: return "optimal";
-    case ConicStatus::primal_infeasible: return "primal_infeasible";
-    case ConicStatus::dual_infeasible: return "dual_infeasible";
-    case ConicStatus::max_iterations: return "max_iterations";
-    case ConicStatus::numerical_error: return "numerical_error";
+    case ConicStatus::kOptimal: return "optimal";
+    case ConicStatus::kPrimalInfeasible: return "primal_infeasible";
+    case ConicStatus::kDualInfeasible: return "dual_infeasible";
+    case ConicStatus::kMaxIterations: return "max_iterations";
+    case ConicStatus::kNumericalError: return "numerical_error";
   }
   return "numerical_error";
 }
@@ -933,23 +933,23 @@ std::optional<ConicStatus> ConicSolver::Workspace::check_termination(int iterati
   info.dual_residual = dres;
   info.gap = gap;
   if (!std::isfinite(pres) || !std::isfinite(dres) || !std::isfinite(gap) || !std::isfinite(rt)) {
-    return ConicStatus::numerical_error;
+    return ConicStatus::kNumericalError;
   }
   if (pres <= settings.feasibility_tolerance && dres <= settings.feasibility_tolerance &&
       (gap <= settings.absolute_gap_tolerance || relgap <= settings.relative_gap_tolerance)) {
-    return ConicStatus::optimal;
+    return ConicStatus::kOptimal;
   }
   if (htz + bty < 0.0) {
     const double pinf = unscaled_norm(hx.data(), dcol.data(), n) / cnorm / -(htz + bty);
-    if (pinf <= settings.feasibility_tolerance) return ConicStatus::primal_infeasible;
+    if (pinf <= settings.feasibility_tolerance) return ConicStatus::kPrimalInfeasible;
   }
   if (ctx < 0.0) {
     const double pray = P.rows > 0 ? unscaled_norm(px.data(), dcol.data(), n) / cnorm : 0.0;
     const double dinf = std::max({unscaled_norm(ax.data(), erow.data(), p) / bnorm,
                                   unscaled_norm(gxs.data(), frow.data(), m) / hnorm, pray}) / -ctx;
-    if (dinf <= settings.feasibility_tolerance) return ConicStatus::dual_infeasible;
+    if (dinf <= settings.feasibility_tolerance) return ConicStatus::kDualInfeasible;
   }
-  if (iteration >= settings.max_iterations) return ConicStatus::max_iterations;
+  if (iteration >= settings.max_iterations) return ConicStatus::kMaxIterations;
   return std::nullopt;
 }
 
@@ -1087,7 +1087,7 @@ void ConicSolver::Workspace::unscale(ConicStatus status, const ConicProblem& pro
   z_out.setZero();
   s_out.setZero();
   const double inf = std::numeric_limits<double>::infinity();
-  if (status == ConicStatus::primal_infeasible) {
+  if (status == ConicStatus::kPrimalInfeasible) {
     const double scale = -(dot(b.data(), y.data(), p) + dot(h.data(), z.data(), m));
     for (int i = 0; i < p; ++i) y_out(i) = erow[i] * y[i] / scale;
     for (int i = 0; i < m; ++i) z_out(i) = frow[i] * z[i] / scale;
@@ -1095,7 +1095,7 @@ void ConicSolver::Workspace::unscale(ConicStatus status, const ConicProblem& pro
     info.dual_objective = inf;
     return;
   }
-  if (status == ConicStatus::dual_infeasible) {
+  if (status == ConicStatus::kDualInfeasible) {
     const double scale = -dot(c.data(), x.data(), n);
     for (int j = 0; j < n; ++j) x_out(j) = dcol[j] * x[j] / scale;
     for (int i = 0; i < m; ++i) s_out(i) = s[i] / frow[i] / scale;
@@ -1158,17 +1158,17 @@ core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
     return info;
   };
 
-  if (!w.initial_point()) return finish(ConicStatus::numerical_error, 0);
+  if (!w.initial_point()) return finish(ConicStatus::kNumericalError, 0);
   for (int iter = 0;; ++iter) {
     w.compute_residuals();
     if (const auto stop = w.check_termination(iter, info)) return finish(*stop, iter);
-    if (!w.update_scaling()) return finish(ConicStatus::numerical_error, iter);
-    if (!w.factor_kkt()) return finish(ConicStatus::numerical_error, iter);
+    if (!w.update_scaling()) return finish(ConicStatus::kNumericalError, iter);
+    if (!w.factor_kkt()) return finish(ConicStatus::kNumericalError, iter);
     w.solve_tau_column();
-    if (!w.predictor()) return finish(ConicStatus::numerical_error, iter);
-    if (!w.corrector()) return finish(ConicStatus::numerical_error, iter);
+    if (!w.predictor()) return finish(ConicStatus::kNumericalError, iter);
+    if (!w.corrector()) return finish(ConicStatus::kNumericalError, iter);
     const double alpha = w.step_length();
-    if (!(alpha > 0.0)) return finish(ConicStatus::numerical_error, iter);
+    if (!(alpha > 0.0)) return finish(ConicStatus::kNumericalError, iter);
     w.take_step(alpha);
   }
 }

@@ -35,13 +35,13 @@
 
 namespace visors::optim {
 
-enum class ConicStatus { optimal, primal_infeasible, dual_infeasible, max_iterations, numerical_error };
+enum class ConicStatus { kOptimal, kPrimalInfeasible, kDualInfeasible, kMaxIterations, kNumericalError };
 
 /// "optimal", "primal_infeasible", "dual_infeasible", "max_iterations", "numerical_error".
 std::string_view to_string(ConicStatus status);
 
 struct ConicInfo {
-  ConicStatus status = ConicStatus::numerical_error;
+  ConicStatus status = ConicStatus::kNumericalError;
   int iterations = 0;
   /// (1/2) x'Px + c'x and the dual objective; +inf both when primal infeasible, -inf both when
   /// dual infeasible.

@@ -64,9 +64,9 @@ std::int64_t step_at(double t_s, double step_s) {
 CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder)
     : scenario_(scenario), recorder_(&recorder) {
   const CampaignScenario& s = scenario_;
-  vehicles_[0].id = Spacecraft::dsc;
+  vehicles_[0].id = Spacecraft::kDsc;
   vehicles_[0].name = "dsc";
-  vehicles_[1].id = Spacecraft::osc;
+  vehicles_[1].id = Spacecraft::kOsc;
   vehicles_[1].name = "osc";
   observations_.reserve(static_cast<std::size_t>(s.observations) + 4);
   end_s_ = s.observations == 0 ? s.standby_s + s.tail_s : s.max_duration_s;
@@ -143,10 +143,10 @@ void CampaignSimulation::update_attitude(const Eigen::Vector3d& sun_gcrf_m) {
 // Ground commands: to standby at t0, start science after standby_s.
 void CampaignSimulation::apply_ground_timeline(core::GpsTime t) {
   if (k_ == 0) {
-    for (SimulatedSpacecraft& v : vehicles_) v.command = GroundCommand{t, GroundCommand::Kind::to_standby, 0};
+    for (SimulatedSpacecraft& v : vehicles_) v.command = GroundCommand{t, GroundCommand::Kind::kToStandby, 0};
   }
   if (k_ == science_step_ && scenario_.observations > 0) {
-    for (SimulatedSpacecraft& v : vehicles_) v.command = GroundCommand{t, GroundCommand::Kind::start_science, scenario_.observations};
+    for (SimulatedSpacecraft& v : vehicles_) v.command = GroundCommand{t, GroundCommand::Kind::kStartScience, scenario_.observations};
     science_started_ = true;
     recorder_->event(ts_, "sim", "command", fmt::format("start_science, {} observations", scenario_.observations));
   }
@@ -231,7 +231,7 @@ void CampaignSimulation::apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft&
   if (v.out.passive_safety_violated && !v.violation_reported) {
     v.violation_reported = true;
     ++safety_violations_;
-    v.command = GroundCommand{next, GroundCommand::Kind::escape, 0};
+    v.command = GroundCommand{next, GroundCommand::Kind::kEscape, 0};
     recorder_->event(ts_, v.name, "safety_violation",
                      fmt::format("passive-safety margin {:.3f} m below epsilon; host commands escape", v.out.telemetry.safety_margin_m));
   }
@@ -242,8 +242,8 @@ void CampaignSimulation::apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft&
   }
   if (v.incapable_since_s < 0.0) v.incapable_since_s = ts_;
   if (ts_ - v.incapable_since_s >= kRoleSwitchAfter_s && !other.out.gnc_incapable) {
-    v.command = GroundCommand{next, GroundCommand::Kind::make_passive, 0};
-    other.command = GroundCommand{next, GroundCommand::Kind::make_active, 0};
+    v.command = GroundCommand{next, GroundCommand::Kind::kMakePassive, 0};
+    other.command = GroundCommand{next, GroundCommand::Kind::kMakeActive, 0};
     v.incapable_since_s = -1.0;
     recorder_->event(ts_, "sim", "fdir", fmt::format("{} GNC incapable: role switch", v.name));
   }
@@ -257,12 +257,12 @@ void CampaignSimulation::inject_faults(core::GpsTime t) {
     SimulatedSpacecraft& passive_now = &active_now == &vehicles_[0] ? vehicles_[1] : vehicles_[0];
     const Mode mode_now = active_now.out.mode;
     const core::GpsTime next = t + scenario_.step_s;
-    if (mode_now == Mode::science || mode_now == Mode::transfer_to_science) {
-      active_now.command = GroundCommand{next, GroundCommand::Kind::transfer_to_standby, 0};
+    if (mode_now == Mode::kScience || mode_now == Mode::kTransferToScience) {
+      active_now.command = GroundCommand{next, GroundCommand::Kind::kTransferToStandby, 0};
       recorder_->event(ts_, "sim", "fdir", "non-GNC fault: transfer to standby");
     } else {
-      active_now.command = GroundCommand{next, GroundCommand::Kind::make_passive, 0};
-      passive_now.command = GroundCommand{next, GroundCommand::Kind::make_active, 0};
+      active_now.command = GroundCommand{next, GroundCommand::Kind::kMakePassive, 0};
+      passive_now.command = GroundCommand{next, GroundCommand::Kind::kMakeActive, 0};
       recorder_->event(ts_, "sim", "fdir", "non-GNC fault: role switch");
     }
   }
@@ -317,9 +317,9 @@ void CampaignSimulation::record_metrics(const Eigen::Vector3d& sun_gcrf_m) {
 // manual after an escape.
 void CampaignSimulation::update_end() {
   const Mode mode = active().out.mode;
-  if (science_started_ && (mode == Mode::transfer_to_standby || mode == Mode::science)) left_science_ = true;
-  if (!escaped_ && mode == Mode::escape) escaped_ = true;
-  if (end_s_ >= scenario_.max_duration_s && ((left_science_ && mode == Mode::standby) || (escaped_ && mode == Mode::manual))) {
+  if (science_started_ && (mode == Mode::kTransferToStandby || mode == Mode::kScience)) left_science_ = true;
+  if (!escaped_ && mode == Mode::kEscape) escaped_ = true;
+  if (end_s_ >= scenario_.max_duration_s && ((left_science_ && mode == Mode::kStandby) || (escaped_ && mode == Mode::kManual))) {
     end_s_ = ts_ + scenario_.tail_s;
   }
 }

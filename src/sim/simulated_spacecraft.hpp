@@ -26,7 +26,7 @@
 namespace visors::sim {
 
 struct SimulatedSpacecraft {
-  gnc::Spacecraft id = gnc::Spacecraft::dsc;
+  gnc::Spacecraft id = gnc::Spacecraft::kDsc;
   std::string_view name;  // "dsc" or "osc": event log, error fields, random stream names
   // Truth.
   TruthDynamics truth;  // force model and propagator

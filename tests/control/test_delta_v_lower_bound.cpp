@@ -64,7 +64,7 @@ double grid_optimum(const astro::KeplerianElements& chief, const astro::Relative
   auto s = std::move(solver).value();
   const auto info = s.solve(pr);
   EXPECT_TRUE(info.ok());
-  EXPECT_EQ(info.value().status, optim::ConicStatus::optimal);
+  EXPECT_EQ(info.value().status, optim::ConicStatus::kOptimal);
   return info.value().primal_objective * scale;
 }
 

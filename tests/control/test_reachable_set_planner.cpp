@@ -74,7 +74,7 @@ Reference dense_reference(const astro::RelativeOrbitalElements& roe0, const astr
   if (!solver.ok()) return ref;
   optim::ConicSolver s = std::move(solver).value();
   const auto info = s.solve(pr);
-  if (!info.ok() || info->status != optim::ConicStatus::optimal) return ref;
+  if (!info.ok() || info->status != optim::ConicStatus::kOptimal) return ref;
   ref.optimal = true;
   ref.dv = -info->primal_objective * n * wn;
   Eigen::Matrix<double, 6, 1> reached = Eigen::Matrix<double, 6, 1>::Zero();

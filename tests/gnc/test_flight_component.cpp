@@ -29,77 +29,77 @@ GroundCommand command(double t_s, GroundCommand::Kind kind, int observations = 1
 }
 
 TEST(FlightComponent, StartsInManual) {
-  const auto c = make(Spacecraft::osc, true);
-  EXPECT_EQ(c.mode(), Mode::manual);
+  const auto c = make(Spacecraft::kOsc, true);
+  EXPECT_EQ(c.mode(), Mode::kManual);
 }
 
 TEST(FlightComponent, StandbyCommandFromManual) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   auto in = h.inputs(0.0);
-  in.command = command(0.0, GroundCommand::Kind::to_standby);
-  EXPECT_EQ(c.step(in).mode, Mode::standby);
+  in.command = command(0.0, GroundCommand::Kind::kToStandby);
+  EXPECT_EQ(c.step(in).mode, Mode::kStandby);
 }
 
 TEST(FlightComponent, ScienceCommandFromStandbyStartsTheTransfer) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   auto in = h.inputs(0.0);
-  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  in.command = command(0.0, GroundCommand::Kind::kToStandby);
   c.step(in);
   in = h.inputs(1.0);
-  in.command = command(1.0, GroundCommand::Kind::start_science, 3);
+  in.command = command(1.0, GroundCommand::Kind::kStartScience, 3);
   const auto out = c.step(in);
-  EXPECT_EQ(out.mode, Mode::transfer_to_science);
+  EXPECT_EQ(out.mode, Mode::kTransferToScience);
 }
 
 // Nominal standby orbit: inside the deadband and threshold, nothing is planned.
 TEST(FlightComponent, NominalStandbyPlansNothing) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   auto in = h.inputs(0.0);
-  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  in.command = command(0.0, GroundCommand::Kind::kToStandby);
   const auto out = c.step(in);
   EXPECT_EQ(out.telemetry.plans, 0);
 }
 
 // a|de - de_t| = 10 m > the 2 m deadband: a closed-form plan is buffered at the first check.
 TEST(FlightComponent, StandbyOffsetTriggersAPlan) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 210, 0, 200), kT0);
   auto in = h.inputs(0.0);
-  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  in.command = command(0.0, GroundCommand::Kind::kToStandby);
   const auto out = c.step(in);
   EXPECT_GT(out.telemetry.pending_pieces, 0);
 }
 
 TEST(FlightComponent, PassiveSpacecraftFollowsTheActiveMode) {
-  auto c = make(Spacecraft::dsc, false);
+  auto c = make(Spacecraft::kDsc, false);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   auto in = h.inputs(1.0);
   CrosslinkMessage peer;
   peer.t = kT0 + 0.5;
-  peer.sender = Spacecraft::osc;
+  peer.sender = Spacecraft::kOsc;
   peer.sender_active = true;
-  peer.mode = Mode::science;
+  peer.mode = Mode::kScience;
   in.crosslink = peer;
-  EXPECT_EQ(c.step(in).mode, Mode::science);
+  EXPECT_EQ(c.step(in).mode, Mode::kScience);
 }
 
 TEST(FlightComponent, PassiveSpacecraftNeverFires) {
-  auto c = make(Spacecraft::dsc, false);
+  auto c = make(Spacecraft::kDsc, false);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 230, 0, 200), kT0);
   int maneuvers = 0;
   for (int k = 0; k < 200; ++k) {
     auto in = h.inputs(k);
-    if (k == 0) in.command = command(0.0, GroundCommand::Kind::to_standby);
+    if (k == 0) in.command = command(0.0, GroundCommand::Kind::kToStandby);
     maneuvers += c.step(in).maneuver ? 1 : 0;
   }
   EXPECT_EQ(maneuvers, 0);
 }
 
 TEST(FlightComponent, NanNavigationIsCountedAndNotUsed) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   auto in = h.inputs(0.0);
   in.navigation->chief_gcrf.v.y() = std::numeric_limits<double>::quiet_NaN();
@@ -108,14 +108,14 @@ TEST(FlightComponent, NanNavigationIsCountedAndNotUsed) {
 }
 
 TEST(FlightComponent, NoEstimateMeansGncIncapable) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   GncInputs in;
   in.t = kT0;
   EXPECT_TRUE(c.step(in).gnc_incapable);
 }
 
 TEST(FlightComponent, StepBackInTimeIsRejected) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   c.step(h.inputs(10.0));
   const auto out = c.step(h.inputs(5.0));
@@ -126,13 +126,13 @@ TEST(FlightComponent, StepBackInTimeIsRejected) {
 // impulse of the deputy, so the DSC commands -dv where the OSC would command dv (same mass, so
 // the buffer quantises both alike).
 TEST(FlightComponent, DscFiresTheOppositeOfTheOsc) {
-  auto osc = make(Spacecraft::osc, true);
-  auto dsc = make(Spacecraft::dsc, true);
+  auto osc = make(Spacecraft::kOsc, true);
+  auto dsc = make(Spacecraft::kDsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 230, 0, 200), kT0);
   std::optional<ManeuverCommand> first_osc, first_dsc;
   for (int k = 0; k < 4000 && !(first_osc && first_dsc); ++k) {
     auto in = h.inputs(k);
-    if (k == 0) in.command = command(0.0, GroundCommand::Kind::to_standby);
+    if (k == 0) in.command = command(0.0, GroundCommand::Kind::kToStandby);
     if (auto m = osc.step(in).maneuver; m && !first_osc) first_osc = m;
     if (auto m = dsc.step(in).maneuver; m && !first_dsc) first_dsc = m;
   }
@@ -143,36 +143,36 @@ TEST(FlightComponent, DscFiresTheOppositeOfTheOsc) {
 // Perpendicular e and i vectors: the RN separation vanishes twice per orbit (D'Amico &
 // Montenbruck 2006), so the passive-safety check must flag it.
 TEST(FlightComponent, PerpendicularEiVectorsRaiseAViolation) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 200, 0, 0, 200), kT0);
   auto in = h.inputs(0.0);
-  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  in.command = command(0.0, GroundCommand::Kind::kToStandby);
   EXPECT_TRUE(c.step(in).passive_safety_violated);
 }
 
 TEST(FlightComponent, EscapeFiresAndEndsInManual) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(-1.0, 30, -34.5, 4.8, -18.7, 2.7), kT0);
   int maneuvers = 0;
-  Mode mode = Mode::manual;
-  for (int k = 0; k < 1500 && !(maneuvers > 0 && mode == Mode::manual); ++k) {
+  Mode mode = Mode::kManual;
+  for (int k = 0; k < 1500 && !(maneuvers > 0 && mode == Mode::kManual); ++k) {
     auto in = h.inputs(k);
-    if (k == 0) in.command = command(0.0, GroundCommand::Kind::to_standby);
-    if (k == 1) in.command = command(1.0, GroundCommand::Kind::escape);
+    if (k == 0) in.command = command(0.0, GroundCommand::Kind::kToStandby);
+    if (k == 1) in.command = command(1.0, GroundCommand::Kind::kEscape);
     const auto out = c.step(in);
     maneuvers += out.maneuver ? 1 : 0;
     mode = out.mode;
   }
   EXPECT_GT(maneuvers, 0);
-  EXPECT_EQ(mode, Mode::manual);
+  EXPECT_EQ(mode, Mode::kManual);
 }
 
 // A routine step (standby inside the deadband, safety check included) allocates nothing.
 TEST(FlightComponent, RoutineStepAllocatesNothing) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   auto in = h.inputs(0.0);
-  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  in.command = command(0.0, GroundCommand::Kind::kToStandby);
   c.step(in);
   std::vector<GncInputs> inputs;
   for (int k = 1; k <= 25; ++k) inputs.push_back(h.inputs(k));
@@ -187,7 +187,7 @@ TEST(FlightComponent, RoutineStepAllocatesNothing) {
 // formation (the OSC's maneuvers applied), allocate nothing after the first step. (The first
 // step may: its safety check is the first.)
 TEST(FlightComponent, PlanningStepsAllocateNothing) {
-  auto c = make(Spacecraft::osc, true);
+  auto c = make(Spacecraft::kOsc, true);
   // Start on the science orbit guidance will pick, so the transfer is one leg.
   ScienceSettings science_settings;
   science_settings.geometry.north =
@@ -195,18 +195,18 @@ TEST(FlightComponent, PlanningStepsAllocateNothing) {
   const auto first = next_observation(test::mission_chief(), kT0, 1, science_settings, {}).value();
   test::FormationHarness h(test::mission_chief(), test::mission_chief().a * first.roe_target, kT0);
   auto in = h.inputs(0.0);
-  in.command = command(0.0, GroundCommand::Kind::to_standby);
+  in.command = command(0.0, GroundCommand::Kind::kToStandby);
   c.step(in);
   long allocations = 0;
   long plans = 0;
   bool science = false;
-  for (int k = 1; k < 30000 && !(science && c.mode() == Mode::transfer_to_standby); ++k) {
+  for (int k = 1; k < 30000 && !(science && c.mode() == Mode::kTransferToStandby); ++k) {
     auto i = h.inputs(k);
-    if (k == 1) i.command = command(1.0, GroundCommand::Kind::start_science, 1);
+    if (k == 1) i.command = command(1.0, GroundCommand::Kind::kStartScience, 1);
     GncOutputs out;
     allocations += visors::test::count_allocations([&] { out = c.step(i); });
     if (out.maneuver) h.apply_deputy_dv(k, Eigen::Quaterniond::Identity() * out.maneuver->dv_body_mps);
-    science = science || out.mode == Mode::science;
+    science = science || out.mode == Mode::kScience;
     plans = out.telemetry.plans;
   }
   EXPECT_TRUE(science);

@@ -14,7 +14,7 @@ TEST(GncMode, NamesRoundTrip) {
   }
 }
 
-TEST(GncMode, TransferToScienceName) { EXPECT_EQ(visors::gnc::to_string(Mode::transfer_to_science), "transfer_to_science"); }
+TEST(GncMode, TransferToScienceName) { EXPECT_EQ(visors::gnc::to_string(Mode::kTransferToScience), "transfer_to_science"); }
 
 TEST(GncMode, UnknownNameIsRejected) { EXPECT_FALSE(visors::gnc::mode_from_string("Science").has_value()); }
 

@@ -48,7 +48,7 @@ TEST(Messages, NonUnitQuaternionIsRejected) {
 }
 
 TEST(Messages, ScienceCommandNeedsObservations) {
-  const GroundCommand command{kNow, GroundCommand::Kind::start_science, 0};
+  const GroundCommand command{kNow, GroundCommand::Kind::kStartScience, 0};
   EXPECT_EQ(validate(command, kNow).error().field, "command.observations");
 }
 

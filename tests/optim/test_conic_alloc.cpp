@@ -21,7 +21,7 @@ using visors::optim::ConicStatus;
 long allocations_during_solve(ConicSolver& solver, const ConicProblem& problem, ConicStatus* status, int* fallbacks) {
   return visors::test::count_allocations([&] {
     const auto info = solver.solve(problem);
-    *status = info.ok() ? info->status : ConicStatus::numerical_error;
+    *status = info.ok() ? info->status : ConicStatus::kNumericalError;
     *fallbacks = info.ok() ? info->dense_fallbacks : 0;
   });
 }
@@ -47,7 +47,7 @@ TEST(ConicAllocation, SolveOfPlannerSocpAllocatesNothing) {
     ConicStatus status{};
     int fallbacks = 0;
     EXPECT_EQ(allocations_during_solve(solver, pr, &status, &fallbacks), 0) << "trial " << trial;
-    EXPECT_EQ(status, ConicStatus::optimal);
+    EXPECT_EQ(status, ConicStatus::kOptimal);
   }
 }
 
@@ -80,7 +80,7 @@ TEST(ConicAllocation, SolveWithDenseFallbackAllocatesNothing) {
   ConicStatus status{};
   int fallbacks = 0;
   EXPECT_EQ(allocations_during_solve(solver, pr, &status, &fallbacks), 0);
-  EXPECT_EQ(status, ConicStatus::optimal);
+  EXPECT_EQ(status, ConicStatus::kOptimal);
   EXPECT_GT(fallbacks, 0) << "instance no longer exercises the fallback; pick another";
 }
 
@@ -106,7 +106,7 @@ TEST(ConicAllocation, SolveOfQpAllocatesNothing) {
   ConicStatus status{};
   int fallbacks = 0;
   EXPECT_EQ(allocations_during_solve(solver, pr, &status, &fallbacks), 0);
-  EXPECT_EQ(status, ConicStatus::optimal);
+  EXPECT_EQ(status, ConicStatus::kOptimal);
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ TEST(ConicSolver, TinyLpBoundsActive) {
   ConicSolver solver = make_solver(lp_dims(2, 2));
   const auto info = solver.solve(bounds_lp(1.0, 2.0));
   ASSERT_TRUE(info.ok()) << info.error().describe();
-  EXPECT_EQ(info->status, ConicStatus::optimal);
+  EXPECT_EQ(info->status, ConicStatus::kOptimal);
   EXPECT_NEAR(info->primal_objective, 3.0, 1e-7);
   EXPECT_NEAR(info->dual_objective, 3.0, 1e-7);
   EXPECT_NEAR(solver.x()(0), 1.0, 1e-7);
@@ -63,7 +63,7 @@ TEST(ConicSolver, ResolveWithNewData) {
   ASSERT_TRUE(solver.solve(bounds_lp(1.0, 2.0)).ok());
   const auto info = solver.solve(bounds_lp(5.0, -3.0));
   ASSERT_TRUE(info.ok());
-  EXPECT_EQ(info->status, ConicStatus::optimal);
+  EXPECT_EQ(info->status, ConicStatus::kOptimal);
   EXPECT_NEAR(info->primal_objective, 2.0, 1e-7);
   EXPECT_NEAR(solver.x()(0), 5.0, 1e-7);
 }
@@ -91,7 +91,7 @@ TEST(ConicSolver, SecondOrderConeProjection) {
   ConicSolver solver = make_solver(dims, settings);
   const auto info = solver.solve(pr);
   ASSERT_TRUE(info.ok()) << info.error().describe();
-  EXPECT_EQ(info->status, ConicStatus::optimal);
+  EXPECT_EQ(info->status, ConicStatus::kOptimal);
   EXPECT_NEAR(info->primal_objective, std::sqrt(12.5), 1e-7);
   EXPECT_NEAR(solver.x()(0), 2.5, 1e-6);
   EXPECT_NEAR(solver.x()(1), 1.5, 1e-6);
@@ -126,7 +126,7 @@ TEST(ConicSolver, EqualityConstrainedQpClosedForm) {
   ConicSolver solver = make_solver(dims);
   const auto info = solver.solve(pr);
   ASSERT_TRUE(info.ok()) << info.error().describe();
-  EXPECT_EQ(info->status, ConicStatus::optimal);
+  EXPECT_EQ(info->status, ConicStatus::kOptimal);
   EXPECT_NEAR(info->primal_objective, ref_objective, 1e-8);
   EXPECT_NEAR((solver.x() - ref.head<3>()).norm(), 0.0, 1e-6);
   EXPECT_NEAR(solver.y()(0), ref(3), 1e-6);
@@ -144,7 +144,7 @@ TEST(ConicSolver, PrimalInfeasibleCertificate) {
   ConicSolver solver = make_solver(lp_dims(1, 2));
   const auto info = solver.solve(pr);
   ASSERT_TRUE(info.ok());
-  EXPECT_EQ(info->status, ConicStatus::primal_infeasible);
+  EXPECT_EQ(info->status, ConicStatus::kPrimalInfeasible);
   EXPECT_NEAR(pr.h.dot(solver.z()), -1.0, 1e-9);  // h'z = -1
   EXPECT_NEAR((pr.G.transpose() * solver.z()).norm(), 0.0, 1e-8);  // G'z = 0
   EXPECT_GE(solver.z().minCoeff(), -1e-12);
@@ -162,7 +162,7 @@ TEST(ConicSolver, DualInfeasibleCertificate) {
   ConicSolver solver = make_solver(lp_dims(1, 1));
   const auto info = solver.solve(pr);
   ASSERT_TRUE(info.ok());
-  EXPECT_EQ(info->status, ConicStatus::dual_infeasible);
+  EXPECT_EQ(info->status, ConicStatus::kDualInfeasible);
   EXPECT_NEAR(solver.x()(0), 1.0, 1e-9);
 }
 
@@ -172,7 +172,7 @@ TEST(ConicSolver, IterationCapReported) {
   ConicSolver solver = make_solver(lp_dims(2, 2), settings);
   const auto info = solver.solve(bounds_lp(1.0, 2.0));
   ASSERT_TRUE(info.ok());
-  EXPECT_EQ(info->status, ConicStatus::max_iterations);
+  EXPECT_EQ(info->status, ConicStatus::kMaxIterations);
 }
 
 TEST(ConicSolver, RejectsBadDimensions) {
@@ -231,11 +231,11 @@ TEST(ConicSolver, RejectsIndefiniteP) {
 }
 
 TEST(ConicSolver, StatusNames) {
-  EXPECT_EQ(to_string(ConicStatus::optimal), "optimal");
-  EXPECT_EQ(to_string(ConicStatus::primal_infeasible), "primal_infeasible");
-  EXPECT_EQ(to_string(ConicStatus::dual_infeasible), "dual_infeasible");
-  EXPECT_EQ(to_string(ConicStatus::max_iterations), "max_iterations");
-  EXPECT_EQ(to_string(ConicStatus::numerical_error), "numerical_error");
+  EXPECT_EQ(to_string(ConicStatus::kOptimal), "optimal");
+  EXPECT_EQ(to_string(ConicStatus::kPrimalInfeasible), "primal_infeasible");
+  EXPECT_EQ(to_string(ConicStatus::kDualInfeasible), "dual_infeasible");
+  EXPECT_EQ(to_string(ConicStatus::kMaxIterations), "max_iterations");
+  EXPECT_EQ(to_string(ConicStatus::kNumericalError), "numerical_error");
 }
 
 // The planner's minimum-fuel shape, min sum t_k s.t. sum B_k dv_k = b, ||dv_k|| <= t_k: every cone
@@ -252,7 +252,7 @@ TEST(ConicSolver, FuelShapeAvoidsDenseFallback) {
     const ConicProblem pr = visors::optim::test::minimum_fuel_problem(kImpulses, rng);
     const auto info = solver.solve(pr);
     ASSERT_TRUE(info.ok()) << info.error().describe();
-    ASSERT_EQ(info->status, ConicStatus::optimal);
+    ASSERT_EQ(info->status, ConicStatus::kOptimal);
     fallbacks += info->dense_fallbacks;
     // Optimality: equality rows hold and the cost equals sum_k ||dv_k||.
     const Eigen::VectorXd& x = solver.x();
