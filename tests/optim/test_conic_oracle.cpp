@@ -84,7 +84,7 @@ TEST(ConicOracle, AgreesWithCvxoptOnGeneratedInstances) {
   }
   std::filesystem::remove(out);
   const Json& instances = doc.at("instances");
-  // the generator's instance count (scripts' 300+ CVXOPT instances); measured 320 (2026-11)
+  // measured 320 generated instances (2026-11); bound 300
   ASSERT_GE(instances.size(), 300u);
 
   ConicSettings settings;  // tighter than the defaults so that objectives agree to 1e-7
