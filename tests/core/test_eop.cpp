@@ -85,8 +85,10 @@ TEST_F(EopFile, ValuesAtTheMissionEpochAreTheFileRow) {
   ASSERT_TRUE(table.ok());
   const auto eop = table->at(utc("2024-10-01T00:00:00"));
   ASSERT_TRUE(eop.ok()) << eop.error().describe();
+  // round-off of the file's decimal value times the unit (ulp ~2e-22 rad); measured 0 for xp, yp, lod, dx, dy (2026-11)
   EXPECT_NEAR(eop->xp, 0.226101 * kArcsecToRad, 1e-15);
   EXPECT_NEAR(eop->yp, 0.407871 * kArcsecToRad, 1e-15);
+  // loose: measured 3.4e-16 s (2026-11), bound 1e-12 ~3000x above round-off (ulp 6.9e-18)
   EXPECT_NEAR(eop->dut1, 0.0590197, 1e-12);
   EXPECT_NEAR(eop->lod, 0.0313e-3, 1e-15);
   EXPECT_NEAR(eop->dx, 0.440 * kMasToRad, 1e-16);
@@ -99,9 +101,12 @@ TEST_F(EopFile, InterpolatesLinearlyBetweenDays) {
   ASSERT_TRUE(table.ok());
   const auto eop = table->at(utc("2024-10-01T12:00:00"));
   ASSERT_TRUE(eop.ok());
+  // loose: measured 2.1e-22 / 4.2e-22 rad (2026-11), bound 1e-15 ~1e6x above round-off
   EXPECT_NEAR(eop->xp, 0.5 * (0.226101 + 0.226493) * kArcsecToRad, 1e-15);
   EXPECT_NEAR(eop->yp, 0.5 * (0.407871 + 0.406240) * kArcsecToRad, 1e-15);
+  // loose: measured 2.5e-15 s (2026-11), bound 1e-11 ~4000x above
   EXPECT_NEAR(eop->dut1, 0.5 * (0.0590197 + 0.0589803), 1e-11);
+  // round-off; measured 0 (2026-11)
   EXPECT_NEAR(eop->lod, 0.5 * (0.0313 + 0.0948) * 1e-3, 1e-15);
   // The last row is inside the table, a second later is not.
   EXPECT_TRUE(table->at(utc("2025-01-31T00:00:00")).ok());
@@ -124,6 +129,7 @@ TEST_F(EopFile, TestLineWriterReproducesARealRow) {
   const std::string ours = finals_line(24, 10, 1, 60584.0, 0.226101, 0.407871, 0.0590197, 0.0313,
                                        0.440, -0.027);
   const std::string& real = lines_[92];
+  // readme.finals2000A: the Bulletin A columns end at 134 (the loop reads up to 125)
   ASSERT_GE(real.size(), 134u);
   // Compare everything except the error columns, which the writer leaves at zero.
   for (const auto& [first, last] : std::vector<std::pair<int, int>>{
@@ -205,9 +211,11 @@ TEST(Eop, LeapSecondInsideTheIntervalIsInterpolatedThroughUt1MinusTai) {
   // (interpolating UT1-UTC itself would give +0.09).
   const auto noon = table->at(utc("2016-12-31T12:00:00"));
   ASSERT_TRUE(noon.ok());
+  // measured regression bound: 2.3e-10 s (2026-11); bound 1e-9 (expected value exact from the two rows)
   EXPECT_NEAR(noon->dut1, -0.40778005, 1e-9);
   const auto new_year = table->at(utc("2017-01-01T00:00:00"));
   ASSERT_TRUE(new_year.ok());
+  // loose: measured 1.7e-15 s (2026-11), bound 1e-9 ~6e5x above
   EXPECT_NEAR(new_year->dut1, 0.5922, 1e-9);
   // UT1 itself advances by ~1 s per second straight through 23:59:60.
   GpsTime t = utc("2016-12-31T23:59:58");
@@ -218,6 +226,7 @@ TEST(Eop, LeapSecondInsideTheIntervalIsInterpolatedThroughUt1MinusTai) {
     const auto ut1 = t.jd_ut1(eop->dut1);
     const double ut1_s = ((ut1.jd1 - 2457753.5) + ut1.jd2) * 86400.0;
     if (k > 0) {
+      // loose: measured 8.1e-9 s (2026-11), bound 1e-6 ~120x above
       EXPECT_NEAR(ut1_s - previous_ut1, 1.0, 1e-6) << t.format(TimeScale::kUtc);
     }
     previous_ut1 = ut1_s;
@@ -235,6 +244,7 @@ TEST(Eop, BlankOptionalColumnsReadAsZero) {
   ASSERT_TRUE(eop.ok());
   EXPECT_EQ(eop->lod, 0.0);
   EXPECT_EQ(eop->dx, 0.0);
+  // loose: measured 3.4e-16 s (2026-11), bound 1e-12 ~3000x above round-off
   EXPECT_NEAR(eop->dut1, 0.0590197, 1e-12);
 }
 

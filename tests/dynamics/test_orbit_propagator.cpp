@@ -70,6 +70,7 @@ TEST(OrbitPropagator, TwoBodyConservesEnergyAndAngularMomentumOverTenDays) {
   const double energy_drift = std::abs(energy(x1.value(), forces.gm()) / e0 - 1.0);
   const double momentum_drift = (x1.value().r.cross(x1.value().v) - h0).norm() / h0.norm();
   std::printf("10-day two-body drift: energy %.2e, angular momentum %.2e\n", energy_drift, momentum_drift);
+  // issue 3 acceptance (1e-10, above); loose vs measurement: 4.3e-14 / 2.1e-14 (2026-11), ~2000x below the bound
   EXPECT_LT(energy_drift, 1e-10);
   EXPECT_LT(momentum_drift, 1e-10);
 }
@@ -83,6 +84,7 @@ TEST(OrbitPropagator, TwoBodyMatchesKeplerOverOneDay) {
   ASSERT_TRUE(x1.ok());
   const core::StateVector expected =
       astro::cartesian_from_keplerian(astro::propagate_kepler(k0, 86400.0, forces.gm()), forces.gm());
+  // loose: measured 2.7e-6 m (2026-11), bound 1e-3 ~400x above
   EXPECT_LT((x1.value().r - expected.r).norm(), 1e-3);  // [m]
 }
 
@@ -151,6 +153,7 @@ TEST(OrbitPropagator, J2OnlySecularRatesMatchFirstOrderTheory) {
   std::printf("J2 RAAN rate %.6e rad/s (theory %.6e); J2 part of du/dt %.6e (theory %.6e)\n", raan_rate,
               rates.raan_dot, u_j2_rate, u_j2_theory);
   // First-order theory: the neglected J2^2 terms are ~1e-3 of the J2 rates.
+  // measured 1.8e-10 / 2.6e-9 rad/s (2026-11) vs bounds 4.2e-10 / 2.9e-9 (u: within 1.1x, close to failing)
   EXPECT_NEAR(raan_rate, rates.raan_dot, 2e-3 * std::abs(rates.raan_dot));
   EXPECT_NEAR(u_j2_rate, u_j2_theory, 2e-3 * std::abs(u_j2_theory));
 }
@@ -172,6 +175,7 @@ TEST(OrbitPropagator, Rk4AtTheTruthStepMatchesTheReferenceOverOneDay) {
   std::printf("one day, truth forces: RK4 2 s vs DP8(7): %.2f mm (%lld RK4 steps, %lld reference steps)\n",
               1e3 * error, static_cast<long long>(rk4.stats().steps),
               static_cast<long long>(reference.stats().steps));
+  // measured 2.6e-3 m (2026-11)
   EXPECT_LT(error, 0.01);  // [m], issue 3
 }
 
@@ -192,6 +196,7 @@ TEST(OrbitPropagator, ImpulsiveManeuverEqualsStopAddRestart) {
   restarted.v += core::gcrf_to_rtn_matrix(restarted).transpose() * dv_rtn;
   const auto manual = propagator.propagate_to(t_burn, restarted, t_end);
   ASSERT_TRUE(manual.ok());
+  // measured 0 m (2026-11)
   EXPECT_LT((with_burn.value().r - manual.value().r).norm(), 1e-6);  // [m]: same steps, round-off
 }
 
@@ -216,6 +221,7 @@ TEST(OrbitPropagator, OutputsLandExactlyOnRequestedTimes) {
     ASSERT_TRUE(result.ok());
     EXPECT_EQ(seen, outputs) << "integrator " << static_cast<int>(kind);
     // Post-burn at 25 s: the next output 1 ns later has practically the same velocity.
+    // loose: measured 8.5e-9 m/s (2026-11), bound 1e-6 ~120x above
     EXPECT_NEAR((states[3].v - states[2].v).norm(), 0.0, 1e-6);
   }
 }
