@@ -4,6 +4,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -41,21 +44,99 @@ core::GpsTime wall_clock_now() {
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-}  // namespace
-
-int run_propagate_command(const std::string& scenario_path, const std::string& out_dir) {
+// The scenario found (path, VISORS_DATA_PATH or data/) and read; nothing (printed) if not.
+std::optional<PropagateScenario> load_scenario(const std::string& scenario_path) {
   const auto path = core::find_data_file(scenario_path);
   if (!path) {
     fmt::print(stderr, "visors propagate: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n",
                scenario_path);
-    return kExitBadInput;
+    return std::nullopt;
   }
   auto scenario = load_propagate_scenario(*path);
   if (!scenario) {
     fmt::print(stderr, "visors propagate: {}: {}\n", path->string(), scenario.error().describe());
-    return kExitBadInput;
+    return std::nullopt;
   }
-  const PropagateScenario& s = scenario.value();
+  return std::move(scenario).value();
+}
+
+// The ephemeris at the output times (maneuvers applied on the way), the final state and the wall
+// time of the propagation.
+struct Propagation {
+  std::vector<dynamics::EphemerisRecord> records;
+  core::Result<core::StateVector> final_state;
+  double wall_s;
+};
+
+Propagation propagate(dynamics::OrbitPropagator& orbit, const PropagateScenario& s) {
+  const std::vector<core::GpsTime> times = output_times(s);
+  std::vector<dynamics::EphemerisRecord> records;
+  records.reserve(times.size());
+  const auto start = std::chrono::steady_clock::now();
+  auto final_state = orbit.propagate(
+      s.epoch, s.initial_gcrf, times, s.maneuvers,
+      [&records](core::GpsTime t, const core::StateVector& x) { records.push_back({t, x}); });
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Propagation{std::move(records), std::move(final_state), wall_s};
+}
+
+// <name>.csv and <name>.oem; false (printed) if either cannot be written.
+bool write_ephemeris_files(const std::filesystem::path& csv_path, const std::filesystem::path& oem_path,
+                           const PropagateScenario& s, const Propagation& run, const std::string& out_dir) {
+  std::ofstream csv(csv_path);
+  dynamics::write_ephemeris_csv(csv, run.records);
+  std::ofstream oem(oem_path);
+  dynamics::write_oem(oem, run.records, {s.name, "UNKNOWN", "visors_gnc", wall_clock_now()});
+  if (!csv || !oem) {
+    fmt::print(stderr, "visors propagate: --out: cannot write to {}\n", out_dir);
+    return false;
+  }
+  return true;
+}
+
+// The force model's warnings plus the table look-ups of this run that fell outside the tables'
+// dates; the latter are printed (the former were, at set-up).
+std::vector<std::string> run_warnings(const dynamics::ForceModel& model) {
+  std::vector<std::string> warnings = model.warnings();
+  if (model.space_weather_misses() > 0) {
+    warnings.push_back(fmt::format("forces.drag.space_weather: {} UTC days outside the table's dates used the "
+                                   "configured f107/f107a/ap", model.space_weather_misses()));
+  }
+  if (model.eop_misses() > 0) {
+    warnings.push_back(fmt::format("forces.earth_frame.eop: {} lookups outside the table's dates kept the last values",
+                                   model.eop_misses()));
+  }
+  for (std::size_t k = model.warnings().size(); k < warnings.size(); ++k) {
+    fmt::print(stderr, "visors propagate: warning: {}\n", warnings[k]);
+  }
+  return warnings;
+}
+
+nlohmann::json run_summary(const PropagateScenario& s, const Propagation& run, const astro::KeplerianElements& kf,
+                           const dynamics::PropagationStats& stats, const std::vector<std::string>& warnings,
+                           const std::filesystem::path& csv_path, const std::filesystem::path& oem_path) {
+  const core::StateVector& xf = run.final_state.value();
+  return {{"records", run.records.size()},
+          {"final_time_utc", (s.epoch + s.duration).format(core::TimeScale::kUtc, 6)},
+          {"final_r_gcrf", vector_json(xf.r)},
+          {"final_v_gcrf", vector_json(xf.v)},
+          {"final_osculating", {{"a_m", kf.a}, {"e", kf.e}, {"i_deg", kf.i / core::kDegToRad},
+                                {"raan_deg", kf.raan / core::kDegToRad}, {"argp_deg", kf.argp / core::kDegToRad},
+                                {"M_deg", kf.M / core::kDegToRad}}},
+          {"steps", stats.steps},
+          {"force_evaluations", stats.evaluations},
+          {"wall_time_s", run.wall_s},
+          {"warnings", warnings},
+          {"csv", csv_path.string()},
+          {"oem", oem_path.string()}};
+}
+
+}  // namespace
+
+int run_propagate_command(const std::string& scenario_path, const std::string& out_dir) {
+  const std::optional<PropagateScenario> scenario = load_scenario(scenario_path);
+  if (!scenario) return kExitBadInput;
+  const PropagateScenario& s = *scenario;
   auto forces = dynamics::ForceModel::create(s.forces, s.spacecraft);
   if (!forces) {
     fmt::print(stderr, "visors propagate: forces.{}\n", forces.error().describe());
@@ -69,16 +150,9 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
     return kExitBadInput;
   }
   dynamics::OrbitPropagator orbit = std::move(propagator).value();
-  const std::vector<core::GpsTime> times = output_times(s);
-  std::vector<dynamics::EphemerisRecord> records;
-  records.reserve(times.size());
-  const auto start = std::chrono::steady_clock::now();
-  auto final_state = orbit.propagate(
-      s.epoch, s.initial_gcrf, times, s.maneuvers,
-      [&records](core::GpsTime t, const core::StateVector& x) { records.push_back({t, x}); });
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!final_state) {
-    fmt::print(stderr, "visors propagate: {}\n", final_state.error().describe());
+  const Propagation run = propagate(orbit, s);
+  if (!run.final_state) {
+    fmt::print(stderr, "visors propagate: {}\n", run.final_state.error().describe());
     return kExitBadInput;
   }
 
@@ -86,29 +160,9 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
   const std::filesystem::path dir(out_dir);
   const auto csv_path = dir / (s.name + ".csv");
   const auto oem_path = dir / (s.name + ".oem");
-  {
-    std::ofstream csv(csv_path);
-    dynamics::write_ephemeris_csv(csv, records);
-    std::ofstream oem(oem_path);
-    dynamics::write_oem(oem, records, {s.name, "UNKNOWN", "visors_gnc", wall_clock_now()});
-    if (!csv || !oem) {
-      fmt::print(stderr, "visors propagate: --out: cannot write to {}\n", out_dir);
-      return kExitBadInput;
-    }
-  }
-  std::vector<std::string> warnings = model.warnings();
-  if (model.space_weather_misses() > 0) {
-    warnings.push_back(fmt::format("forces.drag.space_weather: {} UTC days outside the table's dates used the "
-                                   "configured f107/f107a/ap", model.space_weather_misses()));
-  }
-  if (model.eop_misses() > 0) {
-    warnings.push_back(fmt::format("forces.earth_frame.eop: {} lookups outside the table's dates kept the last values",
-                                   model.eop_misses()));
-  }
-  for (std::size_t k = model.warnings().size(); k < warnings.size(); ++k) {
-    fmt::print(stderr, "visors propagate: warning: {}\n", warnings[k]);
-  }
-  const core::StateVector& xf = final_state.value();
+  if (!write_ephemeris_files(csv_path, oem_path, s, run, out_dir)) return kExitBadInput;
+  const std::vector<std::string> warnings = run_warnings(model);
+  const core::StateVector& xf = run.final_state.value();
   auto elements = astro::cartesian_to_keplerian(xf.r, xf.v, model.gm());
   if (!elements) {
     fmt::print(stderr, "visors propagate: final state is not a bound orbit ({})\n", elements.error().describe());
@@ -116,23 +170,9 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
   }
   const astro::KeplerianElements& kf = elements.value();
   const auto& stats = orbit.stats();
-  nlohmann::json summary = {
-      {"records", records.size()},
-      {"final_time_utc", (s.epoch + s.duration).format(core::TimeScale::kUtc, 6)},
-      {"final_r_gcrf", vector_json(xf.r)},
-      {"final_v_gcrf", vector_json(xf.v)},
-      {"final_osculating", {{"a_m", kf.a}, {"e", kf.e}, {"i_deg", kf.i / core::kDegToRad},
-                            {"raan_deg", kf.raan / core::kDegToRad}, {"argp_deg", kf.argp / core::kDegToRad},
-                            {"M_deg", kf.M / core::kDegToRad}}},
-      {"steps", stats.steps},
-      {"force_evaluations", stats.evaluations},
-      {"wall_time_s", wall_s},
-      {"warnings", warnings},
-      {"csv", csv_path.string()},
-      {"oem", oem_path.string()}};
-  std::ofstream(dir / "summary.json") << summary.dump(2) << '\n';
+  std::ofstream(dir / "summary.json") << run_summary(s, run, kf, stats, warnings, csv_path, oem_path).dump(2) << '\n';
   fmt::print("{}: {} records over {:.1f} s, {} steps, {} force evaluations, {:.1f} ms\n", s.name,
-             records.size(), s.duration, stats.steps, stats.evaluations, 1e3 * wall_s);
+             run.records.size(), s.duration, stats.steps, stats.evaluations, 1e3 * run.wall_s);
   fmt::print("final osculating a {:.3f} m, e {:.6f}, i {:.4f} deg; written {} and {}\n", kf.a, kf.e,
              kf.i / core::kDegToRad, csv_path.string(), oem_path.string());
   return 0;

@@ -100,6 +100,87 @@ double scaled(double num, double den) {
   return num == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
 }
 
+// The work arrays of one integrate() call (fixed sizes: nothing is allocated per step).
+struct StepWorkspace {
+  Eigen::Matrix<double, 6, kStages> k;  // stage derivatives k_i
+  Vector6d stage;
+  Vector6d increment;
+  Vector6d x_new;
+  Vector6d difference;
+  Vector6d carry = Vector6d::Zero();  // rounding lost by the last update of x (Kahan)
+};
+
+// Non-finite t0, t1 or x0, named.
+core::Result<bool> check_end_points(double t0, const Vector6d& x0, double t1) {
+  if (!std::isfinite(t0)) return core::Error{"t0", "must be finite"};
+  if (!std::isfinite(t1)) return core::Error{"t1", "must be finite"};
+  if (!x0.allFinite()) return core::Error{"x0", "must be finite"};
+  return true;
+}
+
+// The 13 stages k_i = f(t + c_i h, x + h sum_j a_ij k_j) of the step from (t, x) to t_new = t + h.
+core::Result<bool> evaluate_stages(const Derivative& f, double t, double t_new, double h, const Vector6d& x,
+                                   StepWorkspace& w, IntegrationStats& count) {
+  for (int i = 0; i < kStages; ++i) {
+    // The small increment is summed first and added to x once (one rounding at the scale of x).
+    w.increment.setZero();
+    for (int j = 0; j < i; ++j) {
+      if (kTableau.a[i][j] != 0.0) w.increment.noalias() += (h * kTableau.a[i][j]) * w.k.col(j);
+    }
+    w.stage = x + w.increment;
+    // Stages at c = 1 are evaluated at t_new itself: exactly t1 on the landing step.
+    const double t_stage = kTableau.c[i] == 1.0 ? t_new : t + kTableau.c[i] * h;
+    w.k.col(i) = f(t_stage, w.stage);
+    ++count.evaluations;
+    if (!w.k.col(i).allFinite()) {
+      return core::Error{"f", "non-finite derivative at " + at_time(t_stage)};
+    }
+  }
+  return true;
+}
+
+// The 8th-order solution x_new = x + h sum_i b8_i k_i and the error estimate
+// h sum_i (b8_i - b7_i) k_i.
+void combine_stages(double h, const Vector6d& x, StepWorkspace& w) {
+  w.increment.setZero();
+  w.difference.setZero();
+  for (int i = 0; i < kStages; ++i) {
+    if (kTableau.b8[i] != 0.0) w.increment.noalias() += (h * kTableau.b8[i]) * w.k.col(i);
+    if (kErrorWeights[i] != 0.0) w.difference.noalias() += (h * kErrorWeights[i]) * w.k.col(i);
+  }
+  // Compensated (Kahan) summation of the increments: the low-order bits that x + increment
+  // rounds away are carried into the next step instead of being lost. Over 10^4 steps of a LEO
+  // orbit this keeps the round-off of |r| ~ 7e6 m from piling up (ulp ~ 1e-9 m per step).
+  w.increment += w.carry;
+  w.x_new = x + w.increment;
+}
+
+// Block-wise mixed error norm: position and velocity each against its own scale.
+double error_norm(const Vector6d& x, const StepWorkspace& w, const DormandPrince87Settings& s) {
+  const double r_size = std::max(x.head<3>().norm(), w.x_new.head<3>().norm());
+  const double v_size = std::max(x.tail<3>().norm(), w.x_new.tail<3>().norm());
+  const double scale_r = s.absolute_tolerance + s.relative_tolerance * r_size;
+  const double scale_v = s.absolute_tolerance + s.relative_tolerance * v_size;
+  return std::max(scaled(w.difference.head<3>().norm(), scale_r), scaled(w.difference.tail<3>().norm(), scale_v));
+}
+
+// Next step after an accepted one: h * safety err^(-1/8), at most max_step_growth (no growth
+// right after a rejection), within [min_step, max_step].
+double step_after_acceptance(double err, double step, bool after_rejection, const DormandPrince87Settings& s) {
+  double factor = err > 0.0 ? s.safety_factor * std::pow(err, kControlExponent) : s.max_step_growth;
+  factor = std::min(factor, after_rejection ? 1.0 : s.max_step_growth);
+  return std::clamp(step * factor, s.min_step, s.max_step);
+}
+
+// Retry after a rejected step of h: shrunk by safety err^(-1/8), at least min_step_shrink (also
+// for a non-finite err), never grown, at least min_step.
+double step_after_rejection(double err, double h, const DormandPrince87Settings& s) {
+  const double factor = std::isfinite(err)
+                            ? std::max(s.min_step_shrink, s.safety_factor * std::pow(err, kControlExponent))
+                            : s.min_step_shrink;
+  return std::max(std::abs(h) * std::min(factor, 1.0), s.min_step);
+}
+
 }  // namespace
 
 const DormandPrince87Tableau& dormand_prince87_tableau() { return kTableau; }
@@ -144,9 +225,7 @@ core::Result<Vector6d> DormandPrince87::integrate(const Derivative& f, double t0
   IntegrationStats unused;
   IntegrationStats& count = stats != nullptr ? *stats : unused;
   count = IntegrationStats{};
-  if (!std::isfinite(t0)) return core::Error{"t0", "must be finite"};
-  if (!std::isfinite(t1)) return core::Error{"t1", "must be finite"};
-  if (!x0.allFinite()) return core::Error{"x0", "must be finite"};
+  if (auto ok = check_end_points(t0, x0, t1); !ok) return ok.error();
   if (t1 == t0) return x0;
 
   const DormandPrince87Settings& s = settings_;
@@ -155,12 +234,7 @@ core::Result<Vector6d> DormandPrince87::integrate(const Derivative& f, double t0
   bool after_rejection = false;
   double t = t0;
   Vector6d x = x0;
-  Eigen::Matrix<double, 6, kStages> k;
-  Vector6d stage;
-  Vector6d increment;
-  Vector6d x_new;
-  Vector6d difference;
-  Vector6d carry = Vector6d::Zero();  // rounding lost by the last update of x (Kahan)
+  StepWorkspace w;
 
   for (;;) {
     if (count.steps_accepted + count.steps_rejected >= s.max_steps) {
@@ -173,51 +247,17 @@ core::Result<Vector6d> DormandPrince87::integrate(const Derivative& f, double t0
     const double t_new = landing ? t1 : t + direction * step;
     const double h = t_new - t;
 
-    for (int i = 0; i < kStages; ++i) {
-      // The small increment is summed first and added to x once (one rounding at the scale of x).
-      increment.setZero();
-      for (int j = 0; j < i; ++j) {
-        if (kTableau.a[i][j] != 0.0) increment.noalias() += (h * kTableau.a[i][j]) * k.col(j);
-      }
-      stage = x + increment;
-      // Stages at c = 1 are evaluated at t_new itself: exactly t1 on the landing step.
-      const double t_stage = kTableau.c[i] == 1.0 ? t_new : t + kTableau.c[i] * h;
-      k.col(i) = f(t_stage, stage);
-      ++count.evaluations;
-      if (!k.col(i).allFinite()) {
-        return core::Error{"f", "non-finite derivative at " + at_time(t_stage)};
-      }
-    }
-    increment.setZero();
-    difference.setZero();
-    for (int i = 0; i < kStages; ++i) {
-      if (kTableau.b8[i] != 0.0) increment.noalias() += (h * kTableau.b8[i]) * k.col(i);
-      if (kErrorWeights[i] != 0.0) difference.noalias() += (h * kErrorWeights[i]) * k.col(i);
-    }
-    // Compensated (Kahan) summation of the increments: the low-order bits that x + increment
-    // rounds away are carried into the next step instead of being lost. Over 10^4 steps of a LEO
-    // orbit this keeps the round-off of |r| ~ 7e6 m from piling up (ulp ~ 1e-9 m per step).
-    increment += carry;
-    x_new = x + increment;
+    if (auto ok = evaluate_stages(f, t, t_new, h, x, w, count); !ok) return ok.error();
+    combine_stages(h, x, w);
+    const double err = error_norm(x, w, s);
 
-    // Block-wise mixed error norm: position and velocity each against its own scale.
-    const double r_size = std::max(x.head<3>().norm(), x_new.head<3>().norm());
-    const double v_size = std::max(x.tail<3>().norm(), x_new.tail<3>().norm());
-    const double scale_r = s.absolute_tolerance + s.relative_tolerance * r_size;
-    const double scale_v = s.absolute_tolerance + s.relative_tolerance * v_size;
-    const double err = std::max(scaled(difference.head<3>().norm(), scale_r),
-                                scaled(difference.tail<3>().norm(), scale_v));
-
-    if (err <= 1.0 && x_new.allFinite()) {  // false for a NaN err as well
+    if (err <= 1.0 && w.x_new.allFinite()) {  // false for a NaN err as well
       ++count.steps_accepted;
-      carry = increment - (x_new - x);
+      w.carry = w.increment - (w.x_new - x);
       t = t_new;
-      x = x_new;
+      x = w.x_new;
       if (landing) return x;
-      double factor =
-          err > 0.0 ? s.safety_factor * std::pow(err, kControlExponent) : s.max_step_growth;
-      factor = std::min(factor, after_rejection ? 1.0 : s.max_step_growth);
-      step = std::clamp(step * factor, s.min_step, s.max_step);
+      step = step_after_acceptance(err, step, after_rejection, s);
       after_rejection = false;
     } else {
       ++count.steps_rejected;
@@ -226,11 +266,7 @@ core::Result<Vector6d> DormandPrince87::integrate(const Derivative& f, double t0
                                        "tolerance with a step of " + seconds(std::abs(h)) + " at " +
                                        at_time(t)};
       }
-      const double factor =
-          std::isfinite(err)
-              ? std::max(s.min_step_shrink, s.safety_factor * std::pow(err, kControlExponent))
-              : s.min_step_shrink;
-      step = std::max(std::abs(h) * std::min(factor, 1.0), s.min_step);
+      step = step_after_rejection(err, h, s);
       after_rejection = true;
     }
   }

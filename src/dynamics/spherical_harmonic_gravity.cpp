@@ -26,8 +26,11 @@ double f3_factor(int n, int m) { return std::sqrt(k_factor(n) * (n - m + 1.0) * 
 
 }  // namespace
 
-core::Result<SphericalHarmonicGravity> SphericalHarmonicGravity::create(const GravityField& field, int degree,
-                                                                         int order) {
+namespace {
+
+// A consistent field and a truncation it holds (degree within the field and kMaxDegree, order
+// within the degree); the error names the offending argument.
+core::Result<bool> check_field_and_truncation(const GravityField& field, int degree, int order) {
   if (!(field.gm > 0.0) || !std::isfinite(field.gm)) return core::Error{"field.gm", "must be finite and > 0"};
   if (!(field.radius > 0.0) || !std::isfinite(field.radius)) {
     return core::Error{"field.radius", "must be finite and > 0"};
@@ -40,68 +43,103 @@ core::Result<SphericalHarmonicGravity> SphericalHarmonicGravity::create(const Gr
     return core::Error{"degree", "must be in [0, " + std::to_string(field.max_degree) + "] (the field's max_degree), got " +
                                      std::to_string(degree)};
   }
-  if (degree > kMaxDegree) {
-    return core::Error{"degree", "must be <= " + std::to_string(kMaxDegree) + ", got " + std::to_string(degree)};
+  if (degree > SphericalHarmonicGravity::kMaxDegree) {
+    return core::Error{"degree", "must be <= " + std::to_string(SphericalHarmonicGravity::kMaxDegree) + ", got " +
+                                     std::to_string(degree)};
   }
   if (order < 0 || order > degree) {
     return core::Error{"order", "must be in [0, degree = " + std::to_string(degree) + "], got " + std::to_string(order)};
   }
+  return true;
+}
 
+}  // namespace
+
+core::Result<SphericalHarmonicGravity> SphericalHarmonicGravity::create(const GravityField& field, int degree,
+                                                                         int order) {
+  if (auto ok = check_field_and_truncation(field, degree, order); !ok) return ok.error();
   SphericalHarmonicGravity g;
   g.gm_ = field.gm;
   g.radius_ = field.radius;
   g.degree_ = degree;
   g.order_ = order;
-  const int n_rows = degree + 3;  // rows 0..N+2 (the gradient needs N+2)
-  const int k_cap = order + 2;
-  g.row_stride_ = static_cast<std::size_t>(k_cap + 1);
-  g.row_offset_.resize(static_cast<std::size_t>(n_rows) + 1);
-  g.row_length_.resize(static_cast<std::size_t>(n_rows));
-  std::size_t total = 0;
-  for (int j = 0; j < n_rows; ++j) {
-    g.row_offset_[static_cast<std::size_t>(j)] = total;
-    g.row_length_[static_cast<std::size_t>(j)] = std::min(j, k_cap) + 1;
-    total += static_cast<std::size_t>(std::min(j, k_cap) + 1);
-  }
-  g.row_offset_[static_cast<std::size_t>(n_rows)] = total;
+  const std::size_t total = g.lay_out_rows();
   // Built as separate arrays, packed row by row at the end.
-  std::vector<std::vector<double>> arrays(kRowArrays, std::vector<double>(total, 0.0));
-  auto at = [&g](int j, int k) { return g.offset(j) + static_cast<std::size_t>(k); };
-  auto array = [&arrays](RowArray q) -> std::vector<double>& { return arrays[static_cast<std::size_t>(q)]; };
+  UnpackedArrays arrays(kRowArrays, std::vector<double>(total, 0.0));
   g.f1_.assign(total, 0.0);
   g.f2_.assign(total, 0.0);
   g.f3_.assign(total, 0.0);
-  g.sectorial_.assign(static_cast<std::size_t>(n_rows), 0.0);
-  g.subdiagonal_.assign(static_cast<std::size_t>(n_rows), 0.0);
+  g.sectorial_.assign(static_cast<std::size_t>(g.row_count()), 0.0);
+  g.subdiagonal_.assign(static_cast<std::size_t>(g.row_count()), 0.0);
+  g.compute_recursion_factors(arrays);
+  g.compute_derivative_factors();
+  g.fold_derivatives_into_coefficients(field, arrays);
+  g.pack_rows(arrays, total);
+  g.v_rows_.assign(3 * g.row_stride_, 0.0);
+  g.w_rows_.assign(3 * g.row_stride_, 0.0);
+  g.sums_.assign(9 * g.row_stride_, 0.0);
+  return g;
+}
 
-  // Recursion coefficients (digest §2.2).
-  for (int j = 1; j < n_rows; ++j) {
+// Rows j = 0..N+2 (the gradient needs N+2), row j holding orders k = 0..min(j, M+2); returns the
+// number of (j, k) entries.
+std::size_t SphericalHarmonicGravity::lay_out_rows() {
+  const int n_rows = row_count();
+  const int k_cap = order_ + 2;
+  row_stride_ = static_cast<std::size_t>(k_cap + 1);
+  row_offset_.resize(static_cast<std::size_t>(n_rows) + 1);
+  row_length_.resize(static_cast<std::size_t>(n_rows));
+  std::size_t total = 0;
+  for (int j = 0; j < n_rows; ++j) {
+    row_offset_[static_cast<std::size_t>(j)] = total;
+    row_length_[static_cast<std::size_t>(j)] = std::min(j, k_cap) + 1;
+    total += static_cast<std::size_t>(std::min(j, k_cap) + 1);
+  }
+  row_offset_[static_cast<std::size_t>(n_rows)] = total;
+  return total;
+}
+
+// Recursion coefficients (digest §2.2): sectorial c_j, sub-diagonal sqrt(2j+1), general a_jk, b_jk.
+void SphericalHarmonicGravity::compute_recursion_factors(UnpackedArrays& arrays) {
+  const int k_cap = order_ + 2;
+  auto at = [this](int j, int k) { return offset(j) + static_cast<std::size_t>(k); };
+  std::vector<double>& rec_a = arrays[static_cast<std::size_t>(kRecA)];
+  std::vector<double>& rec_b = arrays[static_cast<std::size_t>(kRecB)];
+  for (int j = 1; j < row_count(); ++j) {
     const auto ju = static_cast<std::size_t>(j);
-    g.sectorial_[ju] = j == 1 ? std::sqrt(3.0) : std::sqrt((2.0 * j + 1.0) / (2.0 * j));
-    g.subdiagonal_[ju] = std::sqrt(2.0 * j + 1.0);
+    sectorial_[ju] = j == 1 ? std::sqrt(3.0) : std::sqrt((2.0 * j + 1.0) / (2.0 * j));
+    subdiagonal_[ju] = std::sqrt(2.0 * j + 1.0);
     // k = j-1 gives a = sqrt(2j+1), b = 0: the sub-diagonal term is the general one with
     // V̄_{j-2,j-1} = 0, which lets evaluate() run one loop over k <= j-1.
     for (int k = 0; k <= std::min(j - 1, k_cap); ++k) {
       const double nm = static_cast<double>(j - k) * static_cast<double>(j + k);
-      array(kRecA)[at(j, k)] = std::sqrt((2.0 * j - 1.0) * (2.0 * j + 1.0) / nm);
-      array(kRecB)[at(j, k)] =
+      rec_a[at(j, k)] = std::sqrt((2.0 * j - 1.0) * (2.0 * j + 1.0) / nm);
+      rec_b[at(j, k)] =
           k == j - 1 ? 0.0 : std::sqrt((2.0 * j + 1.0) * (j + k - 1.0) * (j - k - 1.0) / (nm * (2.0 * j - 3.0)));
     }
   }
+}
 
-  // Derivative factors of V̄_jk for the gradient (rows up to N+1).
-  for (int j = 0; j <= degree + 1; ++j) {
+// Derivative factors of V̄_jk for the gradient (rows up to N+1).
+void SphericalHarmonicGravity::compute_derivative_factors() {
+  const int k_cap = order_ + 2;
+  for (int j = 0; j <= degree_ + 1; ++j) {
     for (int k = 0; k <= std::min(j, k_cap); ++k) {
-      g.f1_[at(j, k)] = k == 0 ? g_factor(j) : f1_factor(j, k);
-      g.f2_[at(j, k)] = k == 0 ? 0.0 : f2_factor(j, k);
-      g.f3_[at(j, k)] = f3_factor(j, k);
+      const std::size_t e = offset(j) + static_cast<std::size_t>(k);
+      f1_[e] = k == 0 ? g_factor(j) : f1_factor(j, k);
+      f2_[e] = k == 0 ? 0.0 : f2_factor(j, k);
+      f3_[e] = f3_factor(j, k);
     }
   }
+}
 
-  // Fold the derivative relations into the coefficients: a/(GM/R^2) = Σ_nm C̄ D V̄_nm + S̄ D W̄_nm
-  // becomes Σ_jk (A_jk V̄_jk + B_jk W̄_jk) with j = n+1 (digest §2.2 sums, regrouped by (j, k)).
-  for (int n = 0; n <= degree; ++n) {
-    for (int m = 0; m <= std::min(n, order); ++m) {
+// Fold the derivative relations into the coefficients: a/(GM/R^2) = Σ_nm C̄ D V̄_nm + S̄ D W̄_nm
+// becomes Σ_jk (A_jk V̄_jk + B_jk W̄_jk) with j = n+1 (digest §2.2 sums, regrouped by (j, k)).
+void SphericalHarmonicGravity::fold_derivatives_into_coefficients(const GravityField& field, UnpackedArrays& arrays) {
+  auto at = [this](int j, int k) { return offset(j) + static_cast<std::size_t>(k); };
+  auto array = [&arrays](RowArray q) -> std::vector<double>& { return arrays[static_cast<std::size_t>(q)]; };
+  for (int n = 0; n <= degree_; ++n) {
+    for (int m = 0; m <= std::min(n, order_); ++m) {
       const double c = field.c(n, m);
       const double s = m == 0 ? 0.0 : field.s(n, m);
       array(kUV)[at(n, m)] = c;
@@ -129,20 +167,18 @@ core::Result<SphericalHarmonicGravity> SphericalHarmonicGravity::create(const Gr
       array(kAzW)[at(j, m)] -= f3 * s;
     }
   }
+}
 
-  g.packed_.assign(kRowArrays * total, 0.0);
-  for (int j = 0; j < n_rows; ++j) {
+// The separate arrays interleaved row by row into packed_ (see the header).
+void SphericalHarmonicGravity::pack_rows(const UnpackedArrays& arrays, std::size_t total) {
+  packed_.assign(kRowArrays * total, 0.0);
+  for (int j = 0; j < row_count(); ++j) {
     for (int q = 0; q < kRowArrays; ++q) {
-      double* dst = g.packed_.data() + kRowArrays * g.offset(j) + static_cast<std::size_t>(q * g.row_length(j));
-      const double* src = arrays[static_cast<std::size_t>(q)].data() + g.offset(j);
-      std::copy(src, src + g.row_length(j), dst);
+      double* dst = packed_.data() + kRowArrays * offset(j) + static_cast<std::size_t>(q * row_length(j));
+      const double* src = arrays[static_cast<std::size_t>(q)].data() + offset(j);
+      std::copy(src, src + row_length(j), dst);
     }
   }
-
-  g.v_rows_.assign(3 * g.row_stride_, 0.0);
-  g.w_rows_.assign(3 * g.row_stride_, 0.0);
-  g.sums_.assign(9 * g.row_stride_, 0.0);
-  return g;
 }
 
 namespace {
@@ -265,6 +301,26 @@ inline void gradient_terms(int k_end, const double* __restrict f1, const double*
   }
 }
 
+// Σ_k s[k], k = 0..k_cap in increasing order: the per-order partial sums of a linear form.
+double sum_over_orders(const double* s, int k_cap) {
+  double sum = 0.0;
+  for (int k = 0; k <= k_cap; ++k) sum += s[k];
+  return sum;
+}
+
+// The same for the three acceleration components in one pass (three independent sums).
+Eigen::Vector3d sum_over_orders(const double* sx, const double* sy, const double* sz, int k_cap) {
+  double ax = 0.0;
+  double ay = 0.0;
+  double az = 0.0;
+  for (int k = 0; k <= k_cap; ++k) {
+    ax += sx[k];
+    ay += sy[k];
+    az += sz[k];
+  }
+  return {ax, ay, az};
+}
+
 }  // namespace
 
 template <bool kWithAcceleration, bool kWithPotential>
@@ -333,21 +389,12 @@ void SphericalHarmonicGravity::evaluate(const Eigen::Vector3d& r_itrf, Eigen::Ve
   }
 
   if constexpr (kWithAcceleration) {
-    double ax = 0.0;
-    double ay = 0.0;
-    double az = 0.0;
-    for (int k = 0; k <= k_cap; ++k) {
-      ax += sx[k];
-      ay += sy[k];
-      az += sz[k];
-    }
     const double scale = gm_ / (radius_ * radius_);  // a = (GM/R^2)(ẍ, ÿ, z̈)
-    *a_itrf = Eigen::Vector3d(scale * ax, scale * ay, scale * az);
+    const Eigen::Vector3d sum = sum_over_orders(sx, sy, sz, k_cap);
+    *a_itrf = Eigen::Vector3d(scale * sum.x(), scale * sum.y(), scale * sum.z());
   }
   if constexpr (kWithPotential) {
-    double u = 0.0;
-    for (int k = 0; k <= k_cap; ++k) u += su[k];
-    *potential = gm_ / radius_ * u;  // U = (GM/R) Σ (C̄ V̄ + S̄ W̄)
+    *potential = gm_ / radius_ * sum_over_orders(su, k_cap);  // U = (GM/R) Σ (C̄ V̄ + S̄ W̄)
   }
 }
 

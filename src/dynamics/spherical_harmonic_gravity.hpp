@@ -70,6 +70,15 @@ class SphericalHarmonicGravity {
  private:
   SphericalHarmonicGravity() = default;
 
+  // The steps of create(), in order (allocation happens only there).
+  using UnpackedArrays = std::vector<std::vector<double>>;  // the kRowArrays arrays, each over all (j, k)
+  [[nodiscard]] int row_count() const { return degree_ + 3; }  // rows 0..N+2
+  std::size_t lay_out_rows();
+  void compute_recursion_factors(UnpackedArrays& arrays);
+  void compute_derivative_factors();
+  void fold_derivatives_into_coefficients(const GravityField& field, UnpackedArrays& arrays);
+  void pack_rows(const UnpackedArrays& arrays, std::size_t total);
+
   // Runs the V/W recursion over rows 0..N (+1 with the acceleration) and accumulates the linear
   // forms selected by the template flags.
   template <bool kWithAcceleration, bool kWithPotential>

@@ -113,58 +113,52 @@ void write_channel_rows(std::FILE* f, double t_s, const Craft& c, const GpsRecei
   }
 }
 
-}  // namespace
-
-core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const std::filesystem::path& out_dir,
-                                                const std::function<void(const RunProgress&)>& progress) {
-  const auto wall_start = std::chrono::steady_clock::now();
+core::Result<bool> write_resolved_scenario(const CampaignScenario& s, const std::filesystem::path& out_dir) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) return core::Error{out_dir.string(), "cannot create the output directory: " + ec.message()};
-  {
-    std::ofstream scenario_file(out_dir / "scenario.toml");
-    scenario_file << campaign_to_toml(s);
-    if (!scenario_file) return core::Error{(out_dir / "scenario.toml").string(), "cannot write"};
-  }
+  std::ofstream scenario_file(out_dir / "scenario.toml");
+  scenario_file << campaign_to_toml(s);
+  if (!scenario_file) return core::Error{(out_dir / "scenario.toml").string(), "cannot write"};
+  return true;
+}
 
-  auto world = load_world(s);
-  if (!world.ok()) return world.error();
-  const GpsSatelliteTruth& satellites = *world->satellites;
-  const auto initial = initial_formation_state(s);
-  if (!initial.ok()) return initial.error();
-  const gnss::KlobucharCoefficients ionosphere = world->nav.ionosphere.value_or(gnss::KlobucharCoefficients{});
-  std::array<Craft, 2> crafts;
-  crafts[0].name = "dsc";
-  crafts[1].name = "osc";
-  if (auto ok = set_up(crafts[0], s, s.dsc, initial->dsc_gcrf, ionosphere); !ok) return ok.error();
-  if (auto ok = set_up(crafts[1], s, s.osc, initial->osc_gcrf, ionosphere); !ok) return ok.error();
+// brdc.rnx: the broadcast ephemerides the receivers decode (with the broadcast errors).
+core::Result<bool> write_broadcast_navigation(const CampaignScenario& s, const World& world,
+                                              const std::filesystem::path& out_dir) {
+  gnss::files::NavigationFile broadcast;
+  broadcast.version = 3.05;
+  broadcast.ionosphere = world.nav.ionosphere;
+  broadcast.leap_seconds = s.t0.gps_minus_utc();
+  broadcast.records.assign(world.satellites->broadcast().begin(), world.satellites->broadcast().end());
+  return gnss::files::write_rinex3_navigation(out_dir / "brdc.rnx", broadcast, "visors gnss-sim");
+}
 
-  if (s.gnss.rinex) {
-    gnss::files::NavigationFile broadcast;
-    broadcast.version = 3.05;
-    broadcast.ionosphere = world->nav.ionosphere;
-    broadcast.leap_seconds = s.t0.gps_minus_utc();
-    broadcast.records.assign(satellites.broadcast().begin(), satellites.broadcast().end());
-    if (auto ok = gnss::files::write_rinex3_navigation(out_dir / "brdc.rnx", broadcast, "visors gnss-sim"); !ok) {
-      return ok.error();
-    }
-  }
-  for (Craft& c : crafts) {
-    if (!s.gnss.rinex) break;
-    gnss::files::ObservationHeader header;
-    header.program = "visors gnss-sim";
-    header.marker_name = c.name == "dsc" ? "DSC" : "OSC";
-    header.comments = {"VISORS " + header.marker_name + " simulated L1 C/A receiver",
-                       "truth: channels_truth.csv, truth.csv; orbits: brdc.rnx"};
-    header.approx_position_m = core::gcrf_to_itrf_matrix(s.t0, core::EarthOrientation{}) * c.x_gcrf.r;
-    header.antenna_delta_xyz_m = s.gnss.receiver.antenna_body_m;  // nominal reference point, body frame
-    header.antenna_boresight_xyz = Eigen::Vector3d::UnitZ();       // nominal boresight
-    header.interval_s = s.step_s;
-    header.first_observation = s.t0;
-    auto writer = gnss::files::Rinex3ObservationWriter::open(out_dir / (c.name + ".rnx"), header);
-    if (!writer.ok()) return writer.error();
-    c.rinex.emplace(std::move(writer).value());
-  }
+// <name>.rnx: the craft's RINEX 3 observation file, its header from the nominal antenna.
+core::Result<bool> open_rinex_observations(Craft& c, const CampaignScenario& s, const std::filesystem::path& out_dir) {
+  gnss::files::ObservationHeader header;
+  header.program = "visors gnss-sim";
+  header.marker_name = c.name == "dsc" ? "DSC" : "OSC";
+  header.comments = {"VISORS " + header.marker_name + " simulated L1 C/A receiver",
+                     "truth: channels_truth.csv, truth.csv; orbits: brdc.rnx"};
+  header.approx_position_m = core::gcrf_to_itrf_matrix(s.t0, core::EarthOrientation{}) * c.x_gcrf.r;
+  header.antenna_delta_xyz_m = s.gnss.receiver.antenna_body_m;  // nominal reference point, body frame
+  header.antenna_boresight_xyz = Eigen::Vector3d::UnitZ();       // nominal boresight
+  header.interval_s = s.step_s;
+  header.first_observation = s.t0;
+  auto writer = gnss::files::Rinex3ObservationWriter::open(out_dir / (c.name + ".rnx"), header);
+  if (!writer.ok()) return writer.error();
+  c.rinex.emplace(std::move(writer).value());
+  return true;
+}
+
+// truth.csv and channels_truth.csv, with their header lines.
+struct TruthFiles {
+  core::OutputFile truth;
+  core::OutputFile channels;
+};
+
+core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) {
   auto truth_csv = open_output(out_dir / "truth.csv");
   if (!truth_csv.ok()) return truth_csv.error();
   auto channels_csv = open_output(out_dir / "channels_truth.csv");
@@ -175,6 +169,141 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
   std::fprintf(channels_csv->get(),
                "t_s,spacecraft,prn,range_m,satellite_clock_m,ionosphere_m,ambiguity_cycles,satellite_phase_cycles,"
                "receiver_phase_cycles,elevation_antenna_deg\n");
+  return TruthFiles{std::move(truth_csv).value(), std::move(channels_csv).value()};
+}
+
+// The two spacecraft set up with their receivers, and the output files opened: the set-up of the
+// run, in the order its errors are reported.
+struct GnssRun {
+  World world;
+  std::array<Craft, 2> crafts;
+  std::optional<TruthFiles> files;
+};
+
+core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std::filesystem::path& out_dir) {
+  auto world = load_world(s);
+  if (!world.ok()) return world.error();
+  run.world = std::move(world).value();
+  const auto initial = initial_formation_state(s);
+  if (!initial.ok()) return initial.error();
+  const gnss::KlobucharCoefficients ionosphere = run.world.nav.ionosphere.value_or(gnss::KlobucharCoefficients{});
+  std::array<Craft, 2>& crafts = run.crafts;
+  crafts[0].name = "dsc";
+  crafts[1].name = "osc";
+  if (auto ok = set_up(crafts[0], s, s.dsc, initial->dsc_gcrf, ionosphere); !ok) return ok.error();
+  if (auto ok = set_up(crafts[1], s, s.osc, initial->osc_gcrf, ionosphere); !ok) return ok.error();
+  if (s.gnss.rinex) {
+    if (auto ok = write_broadcast_navigation(s, run.world, out_dir); !ok) return ok.error();
+    for (Craft& c : crafts) {
+      if (auto ok = open_rinex_observations(c, s, out_dir); !ok) return ok.error();
+    }
+  }
+  auto files = open_truth_files(out_dir);
+  if (!files.ok()) return files.error();
+  run.files.emplace(std::move(files).value());
+  return true;
+}
+
+// The Earth's orientation and the Sun at one epoch, common to both spacecraft.
+struct EpochFrame {
+  Eigen::Matrix3d gcrf_to_itrf;
+  Eigen::Vector3d omega;  // Earth rotation in ITRF [rad/s]
+  Eigen::Vector3d sun_gcrf;
+};
+
+EpochFrame epoch_frame(const World& world, core::GpsTime t) {
+  core::EarthOrientation eop;
+  if (world.eop) {
+    if (auto at = world.eop->at(t); at.ok()) eop = *at;
+  }
+  return EpochFrame{core::gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop)),
+                    astro::sun_position_gcrf(t)};
+}
+
+// The receiver's pose at t: the attitude profile (which also sets the drag area of the truth
+// forces) and the centre of mass in ITRF.
+ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, bool observation_attitude) {
+  const Eigen::Vector3d sun_unit = (frame.sun_gcrf - c.x_gcrf.r).normalized();
+  const Eigen::Quaterniond q = observation_attitude
+                                   ? AttitudeProfile::observation_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit)
+                                   : AttitudeProfile::nominal_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit);
+  c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
+  ReceiverPose pose;
+  pose.t = t;
+  pose.com_itrf.r = frame.gcrf_to_itrf * c.x_gcrf.r;
+  pose.com_itrf.v = frame.gcrf_to_itrf * c.x_gcrf.v - frame.omega.cross(pose.com_itrf.r);
+  pose.body_to_itrf = frame.gcrf_to_itrf * q.toRotationMatrix();
+  pose.com_body_m = c.geometry->com_body_m();
+  return pose;
+}
+
+// The craft's epoch counted into its statistics and written to the RINEX and truth files.
+core::Result<bool> record_epoch(Craft& c, const GpsReceiverEpoch& epoch, double t_s, const TruthFiles& files) {
+  c.visible_sum += epoch.visible;
+  c.tracked_sum += epoch.measurement.channel_count;
+  for (int j = 0; j < epoch.measurement.channel_count; ++j) {
+    if (epoch.measurement.channels[static_cast<std::size_t>(j)].loss_of_lock) ++c.acquisitions;
+  }
+  if (c.rinex) {
+    // No receiver clock offset in the epoch records: a real receiver does not know its own
+    // (it is in truth.csv).
+    const auto written = c.rinex->write(gnss::files::to_observation_epoch(epoch.measurement));
+    if (!written.ok()) return written.error();
+  }
+  write_truth_row(files.truth.get(), t_s, c, epoch);
+  write_channel_rows(files.channels.get(), t_s, c, epoch);
+  return true;
+}
+
+// Both spacecraft one step ahead along their truth dynamics.
+core::Result<bool> propagate_crafts(std::array<Craft, 2>& crafts, core::GpsTime t, double step_s) {
+  for (Craft& c : crafts) {
+    auto next = c.truth.propagator->propagate_to(t, c.x_gcrf, t + step_s);
+    if (!next.ok()) return core::Error{c.name + " truth", next.error().describe()};
+    c.x_gcrf = *next;
+  }
+  return true;
+}
+
+core::Result<bool> close_rinex(std::array<Craft, 2>& crafts) {
+  for (Craft& c : crafts) {
+    if (c.rinex) {
+      if (auto closed = c.rinex->close(); !closed.ok()) return closed.error();
+    }
+  }
+  return true;
+}
+
+nlohmann::json run_summary(const CampaignScenario& s, const GnssRun& run, std::int64_t steps, double wall,
+                           double measure_wall_s) {
+  const double epochs = static_cast<double>(steps + 1);
+  nlohmann::json summary;
+  summary["epochs"] = steps + 1;
+  summary["duration_s"] = s.gnss.duration_s;
+  summary["satellites"] = run.world.satellites->truth().size();
+  summary["wall_s"] = wall;
+  summary["receiver_us_per_epoch_two_spacecraft"] = 1e6 * measure_wall_s / epochs;
+  for (const Craft& c : run.crafts) {
+    summary["receivers"][c.name] = {{"mean_visible", c.visible_sum / epochs},
+                                    {"mean_tracked", c.tracked_sum / epochs},
+                                    {"acquisitions_and_slips", c.acquisitions}};
+  }
+  return summary;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const std::filesystem::path& out_dir,
+                                                const std::function<void(const RunProgress&)>& progress) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  if (auto ok = write_resolved_scenario(s, out_dir); !ok) return ok.error();
+  GnssRun run;
+  if (auto ok = set_up_run(run, s, out_dir); !ok) return ok.error();
+  const GpsSatelliteTruth& satellites = *run.world.satellites;
 
   const auto steps = static_cast<std::int64_t>(std::floor(s.gnss.duration_s / s.step_s + 1e-9));
   const bool observation_attitude = s.gnss.attitude == "observation";
@@ -182,72 +311,21 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
   for (std::int64_t k = 0; k <= steps; ++k) {
     const double t_s = static_cast<double>(k) * s.step_s;
     const core::GpsTime t = s.t0 + t_s;
-    core::EarthOrientation eop;
-    if (world->eop) {
-      if (auto at = world->eop->at(t); at.ok()) eop = *at;
-    }
-    const Eigen::Matrix3d gcrf_to_itrf = core::gcrf_to_itrf_matrix(t, eop);
-    const Eigen::Vector3d omega(0.0, 0.0, core::earth_rotation_rate(eop));
-    const Eigen::Vector3d sun_gcrf = astro::sun_position_gcrf(t);
-    for (Craft& c : crafts) {
-      const Eigen::Vector3d sun_unit = (sun_gcrf - c.x_gcrf.r).normalized();
-      const Eigen::Quaterniond q = observation_attitude
-                                       ? AttitudeProfile::observation_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit)
-                                       : AttitudeProfile::nominal_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit);
-      c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
-      ReceiverPose pose;
-      pose.t = t;
-      pose.com_itrf.r = gcrf_to_itrf * c.x_gcrf.r;
-      pose.com_itrf.v = gcrf_to_itrf * c.x_gcrf.v - omega.cross(pose.com_itrf.r);
-      pose.body_to_itrf = gcrf_to_itrf * q.toRotationMatrix();
-      pose.com_body_m = c.geometry->com_body_m();
+    const EpochFrame frame = epoch_frame(run.world, t);
+    for (Craft& c : run.crafts) {
+      const ReceiverPose pose = receiver_pose(c, frame, t, observation_attitude);
       const auto measure_start = std::chrono::steady_clock::now();
       const GpsReceiverEpoch& epoch = c.receiver->measure(pose, satellites);
-      measure_wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - measure_start).count();
-      c.visible_sum += epoch.visible;
-      c.tracked_sum += epoch.measurement.channel_count;
-      for (int j = 0; j < epoch.measurement.channel_count; ++j) {
-        if (epoch.measurement.channels[static_cast<std::size_t>(j)].loss_of_lock) ++c.acquisitions;
-      }
-      if (c.rinex) {
-        // No receiver clock offset in the epoch records: a real receiver does not know its own
-        // (it is in truth.csv).
-        const auto written = c.rinex->write(gnss::files::to_observation_epoch(epoch.measurement));
-        if (!written.ok()) return written.error();
-      }
-      write_truth_row(truth_csv->get(), t_s, c, epoch);
-      write_channel_rows(channels_csv->get(), t_s, c, epoch);
+      measure_wall_s += seconds_since(measure_start);
+      if (auto ok = record_epoch(c, epoch, t_s, *run.files); !ok) return ok.error();
     }
-    if (progress && k % 60 == 0) {
-      progress({t_s, s.gnss.duration_s,
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count()});
-    }
+    if (progress && k % 60 == 0) progress({t_s, s.gnss.duration_s, seconds_since(wall_start)});
     if (k == steps) break;
-    for (Craft& c : crafts) {
-      auto next = c.truth.propagator->propagate_to(t, c.x_gcrf, t + s.step_s);
-      if (!next.ok()) return core::Error{c.name + " truth", next.error().describe()};
-      c.x_gcrf = *next;
-    }
+    if (auto ok = propagate_crafts(run.crafts, t, s.step_s); !ok) return ok.error();
   }
 
-  for (Craft& c : crafts) {
-    if (c.rinex) {
-      if (auto closed = c.rinex->close(); !closed.ok()) return closed.error();
-    }
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const double epochs = static_cast<double>(steps + 1);
-  nlohmann::json summary;
-  summary["epochs"] = steps + 1;
-  summary["duration_s"] = s.gnss.duration_s;
-  summary["satellites"] = satellites.truth().size();
-  summary["wall_s"] = wall;
-  summary["receiver_us_per_epoch_two_spacecraft"] = 1e6 * measure_wall_s / epochs;
-  for (const Craft& c : crafts) {
-    summary["receivers"][c.name] = {{"mean_visible", c.visible_sum / epochs},
-                                    {"mean_tracked", c.tracked_sum / epochs},
-                                    {"acquisitions_and_slips", c.acquisitions}};
-  }
+  if (auto ok = close_rinex(run.crafts); !ok) return ok.error();
+  const nlohmann::json summary = run_summary(s, run, steps, seconds_since(wall_start), measure_wall_s);
   std::ofstream summary_file(out_dir / "summary.json");
   summary_file << summary.dump(2) << "\n";
   if (!summary_file) return core::Error{(out_dir / "summary.json").string(), "cannot write"};

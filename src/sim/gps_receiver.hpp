@@ -129,8 +129,21 @@ class GpsReceiver {
     bool visible = false;
   };
 
+  struct Reception;  // the antenna at the true reception time (gps_receiver.cpp)
+
   GpsReceiver(const GpsReceiverSettings& settings, RandomStream rng) : settings_(settings), rng_(std::move(rng)) {}
   std::int64_t draw_ambiguity();
+
+  // The steps of measure(), in order.
+  void step_clock();
+  [[nodiscard]] Reception reception(const ReceiverPose& pose) const;
+  std::size_t screen_visibility(const Reception& rx, const GpsSatelliteTruth& satellites);
+  [[nodiscard]] const Candidate* candidate_of(int prn, std::size_t count, const GpsSatelliteTruth& satellites) const;
+  void assign_channels(core::GpsTime t, std::size_t count, const GpsSatelliteTruth& satellites);
+  bool lost_lock(Track& track, core::GpsTime t);
+  [[nodiscard]] double ionosphere_m(const Reception& rx, const Eigen::Vector3d& e, core::GpsTime t) const;
+  void measure_channel(Track& track, const Candidate& c, const Reception& rx, core::GpsTime t,
+                       const GpsSatelliteTruth& satellites);
 
   GpsReceiverSettings settings_;
   RandomStream rng_;
