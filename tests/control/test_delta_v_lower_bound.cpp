@@ -83,6 +83,7 @@ TEST(DeltaVLowerBound, DigestStandbyToScienceNumbers) {
   EXPECT_NEAR(b->out_of_plane, 0.21933, 0.000005);
   EXPECT_EQ(b->dominant, InPlaneCase::kDe);
   EXPECT_DOUBLE_EQ(b->in_plane, b->de);
+  // definition (coupled bound, digest 4.2); measured 0 (2026-11)
   EXPECT_NEAR(b->total, std::hypot(b->de, b->out_of_plane), 1e-15);
 }
 

@@ -34,6 +34,7 @@ TEST(ManeuverBuffer, EveryPieceIsWithinTheActuatorLimits) {
   const ActuatorLimits limits;
   for (const Impulse& p : buffered->pieces) {
     const double impulse = kMass * p.dv_rtn.norm();  // [N s]
+    // actuator limits 1e-3 .. 2.2e-2 N s, quantum 6e-5 N s (docs/conventions.md Propulsion), round-off slack; measured 0.0161 .. 0.0213 N s, quantum residual 1.1e-13 (2026-11)
     EXPECT_LE(impulse, limits.max_impulse_ns + 1e-15);
     EXPECT_GE(impulse, limits.min_impulse_ns - 1e-15);
     EXPECT_NEAR(impulse / limits.quantum_ns, std::round(impulse / limits.quantum_ns), 1e-9);
@@ -50,6 +51,7 @@ TEST(ManeuverBuffer, PiecesAreEvenlySpacedAndCentredOnThePlannedTime) {
   for (std::size_t k = 0; k < pieces->size(); ++k) {
     mean_t += (*pieces)[k].t;
     if (k > 0) {
+      // 46.5 s between impulses (docs/conventions.md Propulsion), centred (digest 8.3 item 1); measured 0 (2026-11)
       EXPECT_NEAR((*pieces)[k].t - (*pieces)[k - 1].t, 46.5, 1e-9);
     }
   }

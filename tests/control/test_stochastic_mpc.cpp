@@ -103,6 +103,7 @@ TEST(StochasticMpc, ReplansWhenADisturbancePushesTheDistanceOverTheThreshold) {
   ASSERT_TRUE(next.ok()) << next.error().describe();
   EXPECT_GT(next->mahalanobis, mpc.settings().mahalanobis_threshold);
   EXPECT_TRUE(next->replanned);
+  // reachable-set planner's minimum-norm correction makes the linear miss round-off small (reachable_set_planner.hpp step 4); loose: measured 6.0e-14 m (2026-11), bound 1e-6 m ~1.7e7x above
   EXPECT_LT(mission_chief().a * (next->roe_final_predicted - science()).norm(), 1e-6);
 }
 
@@ -293,6 +294,7 @@ TEST(StochasticMpc, ClosedLoopJ2ReconfigurationReachesTargetToCentimetres) {
   std::printf("closed loop standby->science 0.75 orbit: terminal %.4f m, dv %.5f m/s (first plan %.5f), %d plans\n",
               r.terminal_error_m, r.dv_total, r.dv_first_plan, r.replans);
   EXPECT_LT(r.terminal_error_m, 0.10);
+  // measured regression bound: dv_total / dv_first_plan = 1.00 (0.285 m/s, 2026-11); bound 1.05
   EXPECT_LT(r.dv_total, 1.05 * r.dv_first_plan);  // the corrections are small
 }
 

@@ -88,6 +88,7 @@ TEST(BroadcastVsPrecise, IgsDay20100701) {
   EXPECT_EQ(c.samples, 2880);
   EXPECT_LT(c.rms_3d_m, 2.5);               // issue: 3D RMS below 2.5 m
   EXPECT_LT(c.worst_satellite_rms_m, 4.0);  // issue: every satellite below 4 m RMS
+  // removing the mean radial offset can only lower the RMS (identity above); measured 1.585 m < 1.866 m (2026-11)
   EXPECT_LT(c.rms_without_radial_offset_m, c.rms_3d_m);
 }
 

@@ -56,6 +56,7 @@ TEST(RinexObs, WriteReadRoundTrip) {
   EXPECT_EQ(again->header.marker_type, "SPACEBORNE");
   EXPECT_EQ(again->header.observation_types, original.header.observation_types);
   EXPECT_EQ(again->header.first_observation, original.header.first_observation);
+  // RINEX 3.05 APPROX POSITION XYZ is 3F14.4 (1e-4 m); measured 0 (2026-11)
   EXPECT_NEAR((again->header.approx_position_m - original.header.approx_position_m).norm(), 0.0, 1e-4);
   ASSERT_TRUE(again->header.antenna_delta_xyz_m.has_value());
   EXPECT_DOUBLE_EQ(again->header.antenna_delta_xyz_m->z(), 0.1);
@@ -68,6 +69,7 @@ TEST(RinexObs, WriteReadRoundTrip) {
     EXPECT_EQ(a.t, b.t);
     EXPECT_EQ(a.receiver_clock_offset_s.has_value(), b.receiver_clock_offset_s.has_value());
     if (a.receiver_clock_offset_s) {
+      // RINEX 3.05 receiver clock offset F15.12 (1e-12 s); measured 3.3e-13 s (2026-11)
       EXPECT_NEAR(*a.receiver_clock_offset_s, *b.receiver_clock_offset_s, 1e-12);
     }
     ASSERT_EQ(b.satellites.size(), 3u);
@@ -233,6 +235,7 @@ TEST(RinexObsHeader, RoundTrip) {
   EXPECT_EQ(r.receiver_version, h.receiver_version);
   EXPECT_EQ(r.antenna_number, h.antenna_number);
   EXPECT_EQ(r.antenna_type, h.antenna_type);
+  // RINEX 3.05 header fields F14.4: half a unit of the last digit, 5e-5 m; measured 0 (2026-11)
   EXPECT_LT((r.approx_position_m - h.approx_position_m).cwiseAbs().maxCoeff(), 5e-5);
   EXPECT_LT((r.antenna_delta_hen_m - h.antenna_delta_hen_m).cwiseAbs().maxCoeff(), 5e-5);
   EXPECT_FALSE(r.antenna_delta_xyz_m.has_value());
@@ -278,6 +281,7 @@ TEST(RinexObs, StreamingWriterEpochByEpoch) {
   ASSERT_TRUE(back.ok()) << back.error().describe();
   ASSERT_EQ(back->epochs.size(), 2u);
   EXPECT_EQ(back->epochs[0].t, t0 + 0.1234567);
+  // 12 decimals of F15.12 hold 2.5e-4 exactly; measured 0 (2026-11)
   EXPECT_NEAR(*back->epochs[0].receiver_clock_offset_s, 2.5e-4, 1e-15);
   EXPECT_NEAR(*back->epochs[0].satellites[0].values[0].value, 9999999999.999, 5e-4);
   EXPECT_NEAR(*back->epochs[0].satellites[0].values[1].value, -999999999.999, 5e-4);
