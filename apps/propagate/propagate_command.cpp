@@ -10,7 +10,7 @@
 
 #include "astro/keplerian_elements.hpp"
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "dynamics/ephemeris_file.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
@@ -44,7 +44,7 @@ nlohmann::json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z
 }  // namespace
 
 int run_propagate_command(const std::string& scenario_path, const std::string& out_dir) {
-  const auto path = core::find_data_file(scenario_path);
+  const auto path = core::files::find_data_file(scenario_path);
   if (!path) {
     fmt::print(stderr, "visors propagate: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n",
                scenario_path);

@@ -4,7 +4,8 @@
 #include <cmath>
 
 #include "astro/sun_moon.hpp"
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
+#include "core/files/eop_file.hpp"
 #include "core/rtn_frame.hpp"
 #include "dynamics/drag.hpp"
 #include "dynamics/harris_priester.hpp"
@@ -80,7 +81,7 @@ core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, cons
     if (!atmosphere) return atmosphere.error();
     model.atmosphere_ = std::move(atmosphere).value();
     if (!config.drag.space_weather.empty()) {
-      const auto path = core::find_data_file(config.drag.space_weather);
+      const auto path = core::files::find_data_file(config.drag.space_weather);
       if (path) {
         auto table = SpaceWeatherTable::load(*path);
         if (!table) return nested("drag.space_weather", table.error());
@@ -92,9 +93,9 @@ core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, cons
     }
   }
   if (!config.earth_frame.eop.empty()) {
-    const auto path = core::find_data_file(config.earth_frame.eop);
+    const auto path = core::files::find_data_file(config.earth_frame.eop);
     if (path) {
-      auto table = core::EopTable::load(*path);
+      auto table = core::files::read_eop_file(*path);
       if (!table) return nested("earth_frame.eop", table.error());
       model.eop_table_.emplace(std::move(table).value());
     } else {

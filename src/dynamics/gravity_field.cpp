@@ -8,7 +8,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 
 namespace visors::dynamics {
 namespace {
@@ -307,7 +307,7 @@ GravityField embedded_gravity_field() {
 }
 
 core::Result<GravityField> load_gravity_field(const std::string& name_or_path, int degree) {
-  const std::optional<std::filesystem::path> file = core::find_data_file(name_or_path);
+  const std::optional<std::filesystem::path> file = core::files::find_data_file(name_or_path);
   if (!file) {
     return core::Error{name_or_path,
                        "gravity model file not found (searched as given, then VISORS_DATA_PATH and the "

@@ -64,7 +64,7 @@ core::Result<GravityField> read_icgem(const std::filesystem::path& file, int max
 /// gravity file is available (e.g. on-board without uplink, or a CI machine without data).
 GravityField embedded_gravity_field();
 
-/// Finds `name_or_path` through core::find_data_file (absolute, existing, or relative to the data
+/// Finds `name_or_path` through core::files::find_data_file (absolute, existing, or relative to the data
 /// search path, e.g. "gravity/GGM05S_d90.gfc") and reads it truncated to `degree` (-1: all).
 /// A missing file is an error here: the caller decides whether embedded_gravity_field() is an
 /// acceptable fallback (GravityConfig::allow_embedded_fallback) and records that it used it.

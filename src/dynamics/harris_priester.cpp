@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "core/constants.hpp"
-#include "core/csv_file.hpp"
+#include "core/files/csv_file.hpp"
 #include "core/geodetic.hpp"
 
 namespace visors::dynamics {
@@ -141,23 +141,23 @@ core::Result<HarrisPriesterTable> read_harris_priester_table(const std::filesyst
   if (!level.ok()) return level.error();
   constexpr std::array<std::string_view, 3> kColumns{"altitude_km", "rho_min_kg_per_m3",
                                                      "rho_max_kg_per_m3"};
-  const auto rows = core::read_csv_columns(path, kColumns, "Harris-Priester table");
+  const auto rows = core::files::read_csv_columns(path, kColumns, "Harris-Priester table");
   if (!rows.ok()) return rows.error();
   HarrisPriesterTable table;
   table.f107 = f107;
-  for (const core::CsvRow& row : rows.value()) {
+  for (const core::files::CsvRow& row : rows.value()) {
     std::array<double, 3> value{};
     for (std::size_t c = 0; c < kColumns.size(); ++c) {
-      const auto x = core::parse_finite_number(row.fields[c]);
+      const auto x = core::files::parse_finite_number(row.fields[c]);
       if (!x) {
-        return core::line_error(row.line, std::string(kColumns[c]) + ": '" + row.fields[c] + "' is not a number");
+        return core::files::line_error(row.line, std::string(kColumns[c]) + ": '" + row.fields[c] + "' is not a number");
       }
       value[c] = *x;
     }
     const double height = value[0] * 1e3;  // [km] -> [m]
     const auto problem = node_problem(height, value[1], value[2],
                                       table.height_m.empty() ? nullptr : &table.height_m.back());
-    if (problem) return core::line_error(row.line, *problem);
+    if (problem) return core::files::line_error(row.line, *problem);
     table.height_m.push_back(height);
     table.rho_min.push_back(value[1]);
     table.rho_max.push_back(value[2]);

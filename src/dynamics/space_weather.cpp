@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "core/csv_file.hpp"
+#include "core/files/csv_file.hpp"
 
 namespace visors::dynamics {
 namespace {
@@ -48,31 +48,31 @@ core::Result<SpaceWeatherTable> SpaceWeatherTable::load(const std::filesystem::p
   constexpr std::array<std::string_view, 12> kColumns{
       "DATE", "F10.7_OBS", "F10.7_OBS_CENTER81", "AP_AVG", "AP1", "AP2",
       "AP3",  "AP4",       "AP5",                "AP6",    "AP7", "AP8"};
-  const auto rows = core::read_csv_columns(path, kColumns, "space-weather file");
+  const auto rows = core::files::read_csv_columns(path, kColumns, "space-weather file");
   if (!rows.ok()) return rows.error();
   long first_mjd = 0;
   std::vector<Day> days;
-  for (const core::CsvRow& row : rows.value()) {
+  for (const core::files::CsvRow& row : rows.value()) {
     const std::string& date_text = row.fields[0];
     const auto mjd = parse_date(date_text);
-    if (!mjd) return core::line_error(row.line, "column DATE: '" + date_text + "' is not a date YYYY-MM-DD");
+    if (!mjd) return core::files::line_error(row.line, "column DATE: '" + date_text + "' is not a date YYYY-MM-DD");
     if (days.empty()) {
       first_mjd = *mjd;
     } else if (*mjd != first_mjd + static_cast<long>(days.size())) {
-      return core::line_error(row.line, "column DATE: " + date_text + " does not follow " + days.back().date +
+      return core::files::line_error(row.line, "column DATE: " + date_text + " does not follow " + days.back().date +
                                             " (rows must be consecutive days)");
     }
     std::array<double, kColumns.size()> value{};
     for (std::size_t c = 1; c < kColumns.size(); ++c) {
-      const auto x = core::parse_finite_number(row.fields[c]);
+      const auto x = core::files::parse_finite_number(row.fields[c]);
       if (!x || *x < 0.0) {
-        return core::line_error(row.line, "column " + std::string(kColumns[c]) + ": '" + row.fields[c] +
+        return core::files::line_error(row.line, "column " + std::string(kColumns[c]) + ": '" + row.fields[c] +
                                               "' is not a number >= 0");
       }
       value[c] = *x;
     }
     if (!(value[1] > 0.0) || !(value[2] > 0.0)) {
-      return core::line_error(row.line, "column " + std::string(value[1] > 0.0 ? kColumns[2] : kColumns[1]) +
+      return core::files::line_error(row.line, "column " + std::string(value[1] > 0.0 ? kColumns[2] : kColumns[1]) +
                                             ": F10.7 must be > 0");
     }
     Day day;

@@ -11,8 +11,8 @@
 #include "astro/keplerian_elements.hpp"
 #include "astro/sun_moon.hpp"
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
 #include "core/earth_frames.hpp"
+#include "core/files/data_path.hpp"
 #include "core/rtn_frame.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
@@ -35,7 +35,7 @@ core::StateVector mission_chief(double gm) {
 std::string missing_files(const ForceModelConfig& config) {
   std::string missing;
   for (const std::string* file : {&config.gravity.model, &config.drag.space_weather, &config.earth_frame.eop}) {
-    if (!file->empty() && !core::find_data_file(*file)) missing += " " + *file;
+    if (!file->empty() && !core::files::find_data_file(*file)) missing += " " + *file;
   }
   return missing;
 }

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "dynamics/gravity_field.hpp"
 
 namespace {
@@ -18,7 +18,7 @@ using visors::dynamics::read_icgem;
 
 // Path of a shared data file, or empty (the test then skips: VISORS_DATA_PATH=/work/shared/data).
 std::filesystem::path data_file(const std::string& relative) {
-  return visors::core::find_data_file(relative).value_or(std::filesystem::path{});
+  return visors::core::files::find_data_file(relative).value_or(std::filesystem::path{});
 }
 #define REQUIRE_DATA(path_var, relative)                                                       \
   const std::filesystem::path path_var = data_file(relative);                                 \

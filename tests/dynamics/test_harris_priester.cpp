@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "dynamics/harris_priester.hpp"
 #include "support/temp_file.hpp"
 
@@ -69,7 +69,7 @@ TEST(HarrisPriester, AntapexAt500KmIsTheTableMinimum) {
 class SharedTable : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto path = visors::core::find_data_file(kTableFile);
+    const auto path = visors::core::files::find_data_file(kTableFile);
     if (!path) GTEST_SKIP() << kTableFile << " not found: set VISORS_DATA_PATH to the shared data folder";
     auto table = read_harris_priester_table(*path, 150.0);
     ASSERT_TRUE(table.ok()) << table.error().describe();

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "core/gps_time.hpp"
 #include "dynamics/space_weather.hpp"
 #include "support/temp_file.hpp"
@@ -25,7 +25,7 @@ GpsTime utc(const char* iso) { return *GpsTime::parse(iso, TimeScale::kUtc); }
 class SpaceWeatherFile : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto path = visors::core::find_data_file(kFile);
+    const auto path = visors::core::files::find_data_file(kFile);
     if (!path) GTEST_SKIP() << kFile << " not found: set VISORS_DATA_PATH to the shared data folder";
     auto table = SpaceWeatherTable::load(*path);
     ASSERT_TRUE(table.ok()) << table.error().describe();
