@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/files/data_path.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
 
@@ -25,7 +26,7 @@ const std::optional<GravityField>& ggm05s() {
   static const std::optional<GravityField> field = []() -> std::optional<GravityField> {
     const auto path = visors::core::files::find_data_file("gravity/GGM05S_d90.gfc");
     if (!path) return std::nullopt;
-    auto read = visors::dynamics::read_icgem(*path);
+    auto read = visors::dynamics::files::read_icgem(*path);
     if (!read.ok()) return std::nullopt;
     return std::move(read).value();
   }();

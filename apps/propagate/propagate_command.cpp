@@ -11,7 +11,8 @@
 #include "astro/keplerian_elements.hpp"
 #include "core/constants.hpp"
 #include "core/files/data_path.hpp"
-#include "dynamics/ephemeris_file.hpp"
+#include "dynamics/files/ephemeris_file.hpp"
+#include "dynamics/files/force_model_files.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 #include "propagate/propagate_scenario.hpp"
@@ -56,7 +57,7 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
     return kExitBadInput;
   }
   const PropagateScenario& s = scenario.value();
-  auto forces = dynamics::ForceModel::create(s.forces, s.spacecraft);
+  auto forces = dynamics::files::load_force_model(s.forces, s.spacecraft);
   if (!forces) {
     fmt::print(stderr, "visors propagate: forces.{}\n", forces.error().describe());
     return kExitBadInput;
@@ -70,7 +71,7 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
   }
   dynamics::OrbitPropagator orbit = std::move(propagator).value();
   const std::vector<core::GpsTime> times = output_times(s);
-  std::vector<dynamics::EphemerisRecord> records;
+  std::vector<dynamics::files::EphemerisRecord> records;
   records.reserve(times.size());
   const auto start = std::chrono::steady_clock::now();
   auto final_state = orbit.propagate(
@@ -88,9 +89,9 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
   const auto oem_path = dir / (s.name + ".oem");
   {
     std::ofstream csv(csv_path);
-    dynamics::write_ephemeris_csv(csv, records);
+    dynamics::files::write_ephemeris_csv(csv, records);
     std::ofstream oem(oem_path);
-    dynamics::write_oem(oem, records, {s.name, "UNKNOWN", "visors_gnc", wall_clock_now()});
+    dynamics::files::write_oem(oem, records, {s.name, "UNKNOWN", "visors_gnc", wall_clock_now()});
     if (!csv || !oem) {
       fmt::print(stderr, "visors propagate: --out: cannot write to {}\n", out_dir);
       return kExitBadInput;

@@ -10,6 +10,7 @@
 
 #include "core/constants.hpp"
 #include "core/files/data_path.hpp"
+#include "dynamics/files/harris_priester_file.hpp"
 #include "dynamics/harris_priester.hpp"
 #include "support/temp_file.hpp"
 
@@ -21,7 +22,7 @@ using visors::dynamics::HarrisPriesterAtmosphere;
 using visors::dynamics::HarrisPriesterBulge;
 using visors::dynamics::HarrisPriesterSettings;
 using visors::dynamics::HarrisPriesterTable;
-using visors::dynamics::read_harris_priester_table;
+using visors::dynamics::files::read_harris_priester_table;
 
 constexpr char kTableFile[] = "atmosphere/harris_priester_mg_table3-8.csv";
 constexpr double kA = visors::core::kWgs84SemiMajorAxis;

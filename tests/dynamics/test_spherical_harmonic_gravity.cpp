@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/files/data_path.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
 #include "support/geographiclib_gravity.hpp"
@@ -26,7 +27,7 @@ using visors::dynamics::SphericalHarmonicGravity;
 std::optional<GravityField> load_field(const std::string& relative, int degree = -1) {
   const auto path = visors::core::files::find_data_file(relative);
   if (!path) return std::nullopt;
-  auto field = visors::dynamics::read_icgem(*path, degree);
+  auto field = visors::dynamics::files::read_icgem(*path, degree);
   if (!field.ok()) {
     ADD_FAILURE() << field.error().describe();
     return std::nullopt;
