@@ -12,7 +12,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
 
@@ -23,9 +24,9 @@ using visors::dynamics::SphericalHarmonicGravity;
 
 const std::optional<GravityField>& ggm05s() {
   static const std::optional<GravityField> field = []() -> std::optional<GravityField> {
-    const auto path = visors::core::find_data_file("gravity/GGM05S_d90.gfc");
+    const auto path = visors::core::files::find_data_file("gravity/GGM05S_d90.gfc");
     if (!path) return std::nullopt;
-    auto read = visors::dynamics::read_icgem(*path);
+    auto read = visors::dynamics::files::read_icgem(*path);
     if (!read.ok()) return std::nullopt;
     return std::move(read).value();
   }();

@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "astro/keplerian_elements.hpp"
+#include "dynamics/files/force_model_files.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 
@@ -30,7 +31,7 @@ ForceModelConfig full_80x80() {
 }
 
 bool make(benchmark::State& state, const ForceModelConfig& config, std::optional<ForceModel>& forces) {
-  auto created = ForceModel::create(config, SpacecraftProperties{});
+  auto created = dynamics::files::load_force_model(config, SpacecraftProperties{});
   if (!created) {
     state.SkipWithError(created.error().describe().c_str());
     return false;

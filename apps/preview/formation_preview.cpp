@@ -17,9 +17,10 @@
 #include "astro/roe_stm.hpp"
 #include "astro/sun_moon.hpp"
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
 #include "core/earth_frames.hpp"
 #include "core/eop.hpp"
+#include "core/files/data_path.hpp"
+#include "core/files/eop_file.hpp"
 #include "core/rtn_frame.hpp"
 
 namespace visors::preview {
@@ -34,11 +35,11 @@ struct EopSource {
 
 EopSource load_eop(const std::optional<std::string>& file) {
   if (!file) return {std::nullopt, "no eop_file given: zero EOP (ITRF columns are off by ~10 m)"};
-  const auto path = core::find_data_file(*file);
+  const auto path = core::files::find_data_file(*file);
   if (!path) {
     return {std::nullopt, "eop_file '" + *file + "' not found in VISORS_DATA_PATH: zero EOP"};
   }
-  auto table = core::EopTable::load(*path);
+  auto table = core::files::read_eop_file(*path);
   if (!table.ok()) return {std::nullopt, "eop_file unusable (" + table.error().describe() + "): zero EOP"};
   return {std::move(table).value(), "EOP from " + path->string()};
 }

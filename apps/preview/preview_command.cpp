@@ -6,7 +6,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "preview/formation_preview.hpp"
 #include "preview/preview_scenario.hpp"
 
@@ -54,7 +54,7 @@ void print_report(const PreviewSummary& s, const std::string& out_dir) {
 }  // namespace
 
 int run_preview_command(const std::string& scenario_path, const std::string& out_dir) {
-  const auto path = core::find_data_file(scenario_path);
+  const auto path = core::files::find_data_file(scenario_path);
   if (!path) {
     fmt::print(stderr, "visors preview: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n",
                scenario_path);

@@ -13,8 +13,9 @@
 
 #include "astro/keplerian_elements.hpp"
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
-#include "dynamics/ephemeris_file.hpp"
+#include "core/files/data_path.hpp"
+#include "dynamics/files/ephemeris_file.hpp"
+#include "dynamics/files/force_model_files.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 #include "propagate/propagate_scenario.hpp"
@@ -46,7 +47,7 @@ nlohmann::json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z
 
 // The scenario found (path, VISORS_DATA_PATH or data/) and read; nothing (printed) if not.
 std::optional<PropagateScenario> load_scenario(const std::string& scenario_path) {
-  const auto path = core::find_data_file(scenario_path);
+  const auto path = core::files::find_data_file(scenario_path);
   if (!path) {
     fmt::print(stderr, "visors propagate: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n",
                scenario_path);
@@ -63,14 +64,14 @@ std::optional<PropagateScenario> load_scenario(const std::string& scenario_path)
 // The ephemeris at the output times (maneuvers applied on the way), the final state and the wall
 // time of the propagation.
 struct Propagation {
-  std::vector<dynamics::EphemerisRecord> records;
+  std::vector<dynamics::files::EphemerisRecord> records;
   core::Result<core::StateVector> final_state;
   double wall_s;
 };
 
 Propagation propagate(dynamics::OrbitPropagator& orbit, const PropagateScenario& s) {
   const std::vector<core::GpsTime> times = output_times(s);
-  std::vector<dynamics::EphemerisRecord> records;
+  std::vector<dynamics::files::EphemerisRecord> records;
   records.reserve(times.size());
   const auto start = std::chrono::steady_clock::now();
   auto final_state = orbit.propagate(
@@ -84,9 +85,9 @@ Propagation propagate(dynamics::OrbitPropagator& orbit, const PropagateScenario&
 bool write_ephemeris_files(const std::filesystem::path& csv_path, const std::filesystem::path& oem_path,
                            const PropagateScenario& s, const Propagation& run, const std::string& out_dir) {
   std::ofstream csv(csv_path);
-  dynamics::write_ephemeris_csv(csv, run.records);
+  dynamics::files::write_ephemeris_csv(csv, run.records);
   std::ofstream oem(oem_path);
-  dynamics::write_oem(oem, run.records, {s.name, "UNKNOWN", "visors_gnc", wall_clock_now()});
+  dynamics::files::write_oem(oem, run.records, {s.name, "UNKNOWN", "visors_gnc", wall_clock_now()});
   if (!csv || !oem) {
     fmt::print(stderr, "visors propagate: --out: cannot write to {}\n", out_dir);
     return false;
@@ -137,7 +138,7 @@ int run_propagate_command(const std::string& scenario_path, const std::string& o
   const std::optional<PropagateScenario> scenario = load_scenario(scenario_path);
   if (!scenario) return kExitBadInput;
   const PropagateScenario& s = *scenario;
-  auto forces = dynamics::ForceModel::create(s.forces, s.spacecraft);
+  auto forces = dynamics::files::load_force_model(s.forces, s.spacecraft);
   if (!forces) {
     fmt::print(stderr, "visors propagate: forces.{}\n", forces.error().describe());
     return kExitBadInput;

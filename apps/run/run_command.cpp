@@ -11,7 +11,7 @@
 
 #include <fmt/core.h>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "report/report.hpp"
 #include "sim/campaign_simulation.hpp"
 #include "sim/gnss_simulation.hpp"
@@ -37,7 +37,7 @@ void show_progress(const sim::RunProgress& p) {
 }  // namespace
 
 std::optional<sim::CampaignScenario> load_scenario(const std::string& scenario_path, const char* command) {
-  const auto path = core::find_data_file(scenario_path);
+  const auto path = core::files::find_data_file(scenario_path);
   if (!path) {
     fmt::print(stderr, "{}: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n", command, scenario_path);
     return std::nullopt;

@@ -14,9 +14,10 @@
 #include <fmt/core.h>
 
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
 #include "core/earth_frames.hpp"
 #include "core/eop.hpp"
+#include "core/files/data_path.hpp"
+#include "core/files/eop_file.hpp"
 #include "core/gps_time.hpp"
 #include "tools/tool.hpp"
 
@@ -55,13 +56,13 @@ EarthOrientation read_eop(const Json& in, GpsTime t) {
     eop.dy = eop_value(e, "dy", 0.1, "arcsec") * core::kArcsecToRad;
   } else if (from_file) {
     const std::string name = require_string(in, "eop_file");
-    const auto path = core::find_data_file(name);
+    const auto path = core::files::find_data_file(name);
     if (!path) {
       throw ToolInputError("eop_file", "'" + name +
                                            "' not found (searched VISORS_DATA_PATH and the "
                                            "repository's data/ folder)");
     }
-    const auto table = take(core::EopTable::load(*path), "eop_file");
+    const auto table = take(core::files::read_eop_file(*path), "eop_file");
     const auto at = table.at(t);
     if (!at.ok()) throw ToolInputError("utc", at.error().message);
     eop = at.value();

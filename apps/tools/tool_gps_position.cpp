@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "gnss/broadcast_ephemeris.hpp"
 #include "gnss/ephemeris_set.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
@@ -39,7 +39,7 @@ Json run_gps_position(const Json& in) {
   }
   const int prn = static_cast<int>(prn_value);
   const core::GpsTime t = take(core::GpsTime::parse(require_string(in, "gps_time"), core::TimeScale::kGps), "gps_time");
-  const auto path = core::find_data_file(nav_name);
+  const auto path = core::files::find_data_file(nav_name);
   if (!path) throw ToolInputError("nav", "'" + nav_name + "' not found (nor in the data search path)");
   const gnss::files::NavigationFile nav = take(gnss::files::read_rinex_navigation(*path), "nav");
   const auto set = gnss::EphemerisSet::screen(nav.records, nav.record_lines);

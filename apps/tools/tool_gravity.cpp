@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/constants.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
 #include "tools/tool.hpp"
@@ -33,7 +34,7 @@ Json run_gravity(const Json& in) {
 
   // The whole file is read so that a degree above the file's is reported against "degree" by
   // SphericalHarmonicGravity::create (the file is at most a few MB).
-  const core::Result<dynamics::GravityField> field = dynamics::load_gravity_field(model, -1);
+  const core::Result<dynamics::GravityField> field = dynamics::files::load_gravity_field(model, -1);
   if (!field.ok()) throw ToolInputError("model", field.error().describe());
   dynamics::SphericalHarmonicGravity gravity =
       take(dynamics::SphericalHarmonicGravity::create(field.value(), degree, order));

@@ -1,11 +1,10 @@
 #pragma once
-// Earth orientation parameters (EOP) from an IERS finals2000A file (Bulletin A columns; format:
-// USNO readme.finals2000A). Values are daily at 0h UTC; they are interpolated linearly in UTC MJD.
-// UT1-UTC jumps by 1 s across a leap second, so UT1-TAI (continuous) is interpolated and
+// Earth orientation parameters (EOP): a table of daily values at 0h UTC (the IERS finals2000A
+// Bulletin A columns, read on the ground by core/files/eop_file.hpp), interpolated linearly in UTC
+// MJD. UT1-UTC jumps by 1 s across a leap second, so UT1-TAI (continuous) is interpolated and
 // converted back with the TAI-UTC of the requested instant.
 
 #include <cstddef>
-#include <filesystem>
 #include <utility>
 #include <vector>
 
@@ -25,10 +24,20 @@ struct EarthOrientation {
 
 class EopTable {
  public:
-  /// Parses a finals2000A file. Rows must be consecutive days; rows without polar motion or
-  /// UT1-UTC are accepted only at the end (future dates) and are dropped. Blank LOD, dX, dY
-  /// (optional in the format) read as 0. A malformed row is an error naming its line number.
-  static Result<EopTable> load(const std::filesystem::path& path);
+  /// The values of one day, at 0h UTC.
+  struct Row {
+    double mjd = 0.0;            // UTC [d], 0h
+    double xp = 0.0;             // polar motion x_p [rad]
+    double yp = 0.0;             // polar motion y_p [rad]
+    double ut1_minus_tai = 0.0;  // UT1 - TAI [s] (continuous across leap seconds)
+    double lod = 0.0;            // excess length of day [s]
+    double dx = 0.0;             // celestial pole offset dX [rad]
+    double dy = 0.0;             // celestial pole offset dY [rad]
+  };
+
+  /// The table of `rows`: at least one row, consecutive days (each mjd the previous one + 1),
+  /// every value finite. Errors name "rows" or "rows[k]" and the problem.
+  static Result<EopTable> create(std::vector<Row> rows);
 
   /// EOP at `t`, linearly interpolated; an error naming the table's range when `t` is outside.
   [[nodiscard]] Result<EarthOrientation> at(GpsTime t) const;
@@ -38,15 +47,6 @@ class EopTable {
   [[nodiscard]] double last_mjd() const { return rows_.back().mjd; }    // UTC [d]
 
  private:
-  struct Row {
-    double mjd = 0.0;           // UTC [d], 0h
-    double xp = 0.0;            // [rad]
-    double yp = 0.0;            // [rad]
-    double ut1_minus_tai = 0.0; // [s]
-    double lod = 0.0;           // [s]
-    double dx = 0.0;            // [rad]
-    double dy = 0.0;            // [rad]
-  };
   explicit EopTable(std::vector<Row> rows) : rows_(std::move(rows)) {}
   std::vector<Row> rows_;
 };

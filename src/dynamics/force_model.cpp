@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "astro/sun_moon.hpp"
-#include "core/data_path.hpp"
 #include "core/rtn_frame.hpp"
 #include "dynamics/drag.hpp"
 #include "dynamics/harris_priester.hpp"
@@ -18,16 +17,6 @@ using core::Error;
 
 Error nested(const std::string& section, const Error& e) {
   return {e.field.empty() ? section : section + "." + e.field, e.message};
-}
-
-core::Result<GravityField> gravity_field_for(const GravityConfig& config, std::vector<std::string>& warnings) {
-  auto field = load_gravity_field(config.model, config.degree);
-  if (field) return field;
-  if (!config.allow_embedded_fallback) return nested("gravity.model", field.error());
-  GravityField embedded = embedded_gravity_field();
-  warnings.push_back("gravity.model: " + field.error().describe() + "; using the embedded degree-" +
-                     std::to_string(embedded.max_degree) + " field");
-  return embedded;
 }
 
 core::Result<std::unique_ptr<AtmosphereModel>> atmosphere_for(const DragConfig& config) {
@@ -47,7 +36,7 @@ ForceModel::ForceModel(ForceModel&&) noexcept = default;
 ForceModel& ForceModel::operator=(ForceModel&&) noexcept = default;
 ForceModel::~ForceModel() = default;
 
-core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, const SpacecraftProperties& spacecraft) {
+std::optional<Error> ForceModel::check_inputs(const ForceModelConfig& config, const SpacecraftProperties& spacecraft) {
   const std::pair<const char*, double> positive[] = {{"spacecraft.mass", spacecraft.mass},
                                                      {"spacecraft.drag_area", spacecraft.drag_area},
                                                      {"spacecraft.cd", spacecraft.cd},
@@ -57,19 +46,25 @@ core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, cons
     if (!(value > 0.0) || !std::isfinite(value)) return Error{field, "must be a finite number > 0"};
   }
   if (!config.empirical_rtn.allFinite()) return Error{"empirical_rtn", "must be finite"};
+  return std::nullopt;
+}
+
+core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, const SpacecraftProperties& spacecraft,
+                                            ForceModelData data) {
+  if (auto invalid = check_inputs(config, spacecraft)) return *invalid;
   ForceModel model;
   model.config_ = config;
   model.spacecraft_ = spacecraft;
 
-  auto field = gravity_field_for(config.gravity, model.warnings_);
-  if (!field) return field.error();
-  const int degree = std::min(config.gravity.degree, field.value().max_degree);
+  if (data.gravity_fallback) model.warnings_.push_back(*data.gravity_fallback);
+  const GravityField& field = data.gravity_field;
+  const int degree = std::min(config.gravity.degree, field.max_degree);
   const int order = std::min(config.gravity.order, degree);
   if (degree < config.gravity.degree) {
     model.warnings_.push_back("gravity.degree: truncated to " + std::to_string(degree) +
                               ", the maximum of the field in use");
   }
-  auto gravity = SphericalHarmonicGravity::create(field.value(), degree, order);
+  auto gravity = SphericalHarmonicGravity::create(field, degree, order);
   if (!gravity) return nested("gravity", gravity.error());
   model.gm_ = gravity.value().gm();
   model.radius_ = gravity.value().radius();
@@ -79,29 +74,11 @@ core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, cons
     auto atmosphere = atmosphere_for(config.drag);
     if (!atmosphere) return atmosphere.error();
     model.atmosphere_ = std::move(atmosphere).value();
-    if (!config.drag.space_weather.empty()) {
-      const auto path = core::find_data_file(config.drag.space_weather);
-      if (path) {
-        auto table = SpaceWeatherTable::load(*path);
-        if (!table) return nested("drag.space_weather", table.error());
-        model.space_weather_.emplace(std::move(table).value());
-      } else {
-        model.warnings_.push_back("drag.space_weather: '" + config.drag.space_weather +
-                                  "' not found; constant f107/f107a/ap of the configuration");
-      }
-    }
+    model.space_weather_ = std::move(data.space_weather);
   }
-  if (!config.earth_frame.eop.empty()) {
-    const auto path = core::find_data_file(config.earth_frame.eop);
-    if (path) {
-      auto table = core::EopTable::load(*path);
-      if (!table) return nested("earth_frame.eop", table.error());
-      model.eop_table_.emplace(std::move(table).value());
-    } else {
-      model.warnings_.push_back("earth_frame.eop: '" + config.earth_frame.eop +
-                                "' not found; zero polar motion and UT1-UTC");
-    }
-  }
+  if (data.space_weather_fallback) model.warnings_.push_back(*data.space_weather_fallback);
+  model.eop_table_ = std::move(data.eop);
+  if (data.eop_fallback) model.warnings_.push_back(*data.eop_fallback);
   model.earth_frame_ = core::OnboardEarthFrame({}, config.earth_frame.refresh_interval);
   return model;
 }

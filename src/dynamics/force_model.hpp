@@ -1,8 +1,9 @@
 #pragma once
 // The orbit force model of one spacecraft: spherical-harmonic gravity in the Earth-fixed frame,
 // drag in a co-rotating atmosphere, solar radiation pressure with shadow, Sun and Moon as point
-// masses and an empirical RTN acceleration, summed in GCRF. Built once from a ForceModelConfig
-// (files are read in create()); evaluation allocates nothing.
+// masses and an empirical RTN acceleration, summed in GCRF. Built once from a ForceModelConfig and
+// the data its files hold, read beforehand (on the ground: dynamics/files/force_model_files.hpp);
+// evaluation allocates nothing.
 
 #include <cstdint>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "core/status.hpp"
 #include "dynamics/atmosphere.hpp"
 #include "dynamics/force_model_config.hpp"
+#include "dynamics/gravity_field.hpp"
 #include "dynamics/space_weather.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
 
@@ -38,12 +40,34 @@ struct AccelerationTerms {
   [[nodiscard]] Eigen::Vector3d total() const { return gravity + drag + srp + sun + moon + empirical; }
 };
 
+/// What a force model is built from besides its configuration: the data of the files the
+/// configuration names, already read, and the fallbacks taken for files that were missing (each
+/// the text of a warning).
+struct ForceModelData {
+  /// The field of gravity.model, or embedded_gravity_field().
+  GravityField gravity_field;
+  /// The table of drag.space_weather, used when drag is enabled; nullopt: the constant
+  /// drag.activity.
+  std::optional<SpaceWeatherTable> space_weather;
+  /// The table of earth_frame.eop; nullopt: zero polar motion and UT1-UTC.
+  std::optional<core::EopTable> eop;
+  std::optional<std::string> gravity_fallback;
+  std::optional<std::string> space_weather_fallback;
+  std::optional<std::string> eop_fallback;
+};
+
 class ForceModel {
  public:
-  /// Loads the gravity field, atmosphere tables, space weather and EOP named by `config`; an
-  /// error names the configuration field. Warnings (e.g. embedded gravity fallback) are kept.
-  static core::Result<ForceModel> create(const ForceModelConfig& config,
-                                         const SpacecraftProperties& spacecraft);
+  /// The checks of `spacecraft` and `config.empirical_rtn` that create() makes first; an error
+  /// names the field. Loaders run them before reading any file.
+  static std::optional<core::Error> check_inputs(const ForceModelConfig& config,
+                                                 const SpacecraftProperties& spacecraft);
+
+  /// The model of `config` with `data` (no file is read); an error names the configuration
+  /// field. warnings() holds data's fallbacks in the order gravity, degree truncation (when
+  /// gravity.degree exceeds the field's), space weather, EOP.
+  static core::Result<ForceModel> create(const ForceModelConfig& config, const SpacecraftProperties& spacecraft,
+                                         ForceModelData data);
 
   ForceModel(ForceModel&&) noexcept;
   ForceModel& operator=(ForceModel&&) noexcept;

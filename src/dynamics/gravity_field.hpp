@@ -1,17 +1,16 @@
 #pragma once
 // Spherical-harmonic Earth gravity field: the fully normalised coefficients C̄_nm, S̄_nm of one
-// model with its own GM and reference radius, read from an ICGEM `.gfc` file (or the embedded
-// low-degree default). Evaluation lives in spherical_harmonic_gravity.hpp.
+// model with its own GM and reference radius, read from an ICGEM `.gfc` file on the ground
+// (dynamics/files/icgem_file.hpp), or the embedded low-degree default. Evaluation lives in
+// spherical_harmonic_gravity.hpp.
 //
 // Convention (navigation-and-dynamics digest §2.1): geodesy normalisation
 //   P̄_nm = sqrt((2 - δ_0m)(2n + 1)(n - m)!/(n + m)!) P_nm, no Condon-Shortley phase,
 //   U = (GM/r) Σ_n Σ_m (R/r)^n P̄_nm(sin φ) [C̄_nm cos mλ + S̄_nm sin mλ].
 
-#include <filesystem>
+#include <cstddef>
 #include <string>
 #include <vector>
-
-#include "core/status.hpp"
 
 namespace visors::dynamics {
 
@@ -48,26 +47,9 @@ struct GravityField {
 /// "zero_tide", "tide_free", "mean_tide" or "unknown".
 const char* to_string(TideSystem tide_system);
 
-/// Reads an ICGEM `.gfc` file (format: ICGEM "Format of the gravity field models" 2.0; quirks of
-/// the digest §2.3). `max_degree` >= 0 truncates the field to that degree (-1: the file's
-/// max_degree). Header keys before `end_of_head`: earth_gravity_constant and radius (required),
-/// max_degree (required), norm (absent = fully_normalized; `unnormalized` is converted to fully
-/// normalised), tide_system, modelname; other lines (free text such as JGM-3's `J2-DOT ...`) are
-/// tolerated. Data lines `gfc n m C S [sigmas ...]` accept e/E/d/D exponents and extra columns.
-/// Missing degree-0/1 lines mean C̄00 = 1 and zero degree-1 terms. Time-variable records
-/// (gfct, trnd, acos, asin, dot) are rejected: the static field would silently be wrong.
-/// Every error names "<file>:<line>" in Error::field (or the file alone) and the problem.
-core::Result<GravityField> read_icgem(const std::filesystem::path& file, int max_degree = -1);
-
 /// Embedded default field: GGM05S (Tapley et al. 2013, ICGEM), fully normalised, complete to
 /// degree and order 8, zero-tide, GM = 3.986004415e14 m^3/s^2, R = 6378136.3 m. For use when no
 /// gravity file is available (e.g. on-board without uplink, or a CI machine without data).
 GravityField embedded_gravity_field();
-
-/// Finds `name_or_path` through core::find_data_file (absolute, existing, or relative to the data
-/// search path, e.g. "gravity/GGM05S_d90.gfc") and reads it truncated to `degree` (-1: all).
-/// A missing file is an error here: the caller decides whether embedded_gravity_field() is an
-/// acceptable fallback (GravityConfig::allow_embedded_fallback) and records that it used it.
-core::Result<GravityField> load_gravity_field(const std::string& name_or_path, int degree = -1);
 
 }  // namespace visors::dynamics

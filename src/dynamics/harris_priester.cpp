@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "core/constants.hpp"
-#include "core/csv_file.hpp"
 #include "core/geodetic.hpp"
 
 namespace visors::dynamics {
@@ -83,13 +82,14 @@ std::string number_text(double x) {
   return buf;
 }
 
-// The checks of one node against its predecessor; empty when fine. `where` names the node.
-std::optional<std::string> node_problem(double height, double rho_min, double rho_max,
-                                        const double* previous_height) {
+}  // namespace
+
+std::optional<std::string> harris_priester_node_problem(double height, double rho_min, double rho_max,
+                                                        std::optional<double> previous_height) {
   if (!std::isfinite(height) || !std::isfinite(rho_min) || !std::isfinite(rho_max)) {
     return "values must be finite";
   }
-  if (previous_height != nullptr && !(height > *previous_height)) {
+  if (previous_height && !(height > *previous_height)) {
     return "height " + number_text(height) + " m does not increase (previous " +
            number_text(*previous_height) + " m)";
   }
@@ -101,12 +101,10 @@ std::optional<std::string> node_problem(double height, double rho_min, double rh
   return std::nullopt;
 }
 
-core::Result<double> check_f107(double f107) {
+core::Result<double> check_harris_priester_f107(double f107) {
   if (!std::isfinite(f107) || !(f107 > 0.0)) return core::Error{"f107", "must be finite and > 0"};
   return f107;
 }
-
-}  // namespace
 
 HarrisPriesterTable embedded_harris_priester_table() {
   HarrisPriesterTable table;
@@ -120,7 +118,7 @@ HarrisPriesterTable embedded_harris_priester_table() {
 }
 
 core::Result<HarrisPriesterTable> validate_harris_priester_table(HarrisPriesterTable table) {
-  const auto f107 = check_f107(table.f107);
+  const auto f107 = check_harris_priester_f107(table.f107);
   if (!f107.ok()) return f107.error();
   const std::size_t n = table.height_m.size();
   if (table.rho_min.size() != n || table.rho_max.size() != n) {
@@ -128,42 +126,11 @@ core::Result<HarrisPriesterTable> validate_harris_priester_table(HarrisPriesterT
   }
   if (n < 2) return core::Error{"height_m", "needs at least 2 nodes"};
   for (std::size_t i = 0; i < n; ++i) {
-    const auto problem = node_problem(table.height_m[i], table.rho_min[i], table.rho_max[i],
-                                      i == 0 ? nullptr : &table.height_m[i - 1]);
+    std::optional<double> previous_height;
+    if (i > 0) previous_height = table.height_m[i - 1];
+    const auto problem =
+        harris_priester_node_problem(table.height_m[i], table.rho_min[i], table.rho_max[i], previous_height);
     if (problem) return core::Error{"node[" + std::to_string(i) + "]", *problem};
-  }
-  return table;
-}
-
-core::Result<HarrisPriesterTable> read_harris_priester_table(const std::filesystem::path& path,
-                                                             double f107) {
-  const auto level = check_f107(f107);
-  if (!level.ok()) return level.error();
-  constexpr std::array<std::string_view, 3> kColumns{"altitude_km", "rho_min_kg_per_m3",
-                                                     "rho_max_kg_per_m3"};
-  const auto rows = core::read_csv_columns(path, kColumns, "Harris-Priester table");
-  if (!rows.ok()) return rows.error();
-  HarrisPriesterTable table;
-  table.f107 = f107;
-  for (const core::CsvRow& row : rows.value()) {
-    std::array<double, 3> value{};
-    for (std::size_t c = 0; c < kColumns.size(); ++c) {
-      const auto x = core::parse_finite_number(row.fields[c]);
-      if (!x) {
-        return core::line_error(row.line, std::string(kColumns[c]) + ": '" + row.fields[c] + "' is not a number");
-      }
-      value[c] = *x;
-    }
-    const double height = value[0] * 1e3;  // [km] -> [m]
-    const auto problem = node_problem(height, value[1], value[2],
-                                      table.height_m.empty() ? nullptr : &table.height_m.back());
-    if (problem) return core::line_error(row.line, *problem);
-    table.height_m.push_back(height);
-    table.rho_min.push_back(value[1]);
-    table.rho_max.push_back(value[2]);
-  }
-  if (table.height_m.size() < 2) {
-    return core::Error{"", "Harris-Priester table '" + path.string() + "' needs at least 2 data rows"};
   }
   return table;
 }

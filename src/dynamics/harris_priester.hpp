@@ -32,7 +32,8 @@
 // maximum (F10.7 ~ 245); it is NOT a validated high-activity model.
 
 #include <cstddef>
-#include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/status.hpp"
@@ -51,19 +52,22 @@ struct HarrisPriesterTable {
 /// M&G's F10.7 level of the published table [sfu] (mean solar activity, see the file comment).
 inline constexpr double kHarrisPriesterMeanF107 = 150.0;
 
-/// Reads the CSV of shared/data/atmosphere/harris_priester_mg_table3-8.csv: a header naming the
-/// columns altitude_km, rho_min_kg_per_m3, rho_max_kg_per_m3 (found by name; other columns are
-/// ignored), then one row per node. Errors name the line (field "line N") and the column, for
-/// malformed numbers, missing columns, non-increasing heights, non-positive densities,
-/// rho_min > rho_max, fewer than 2 rows; "f107" for a non-positive or non-finite level.
-core::Result<HarrisPriesterTable> read_harris_priester_table(const std::filesystem::path& path,
-                                                             double f107);
-
 /// The published M&G table (50 nodes, 100..1000 km) compiled in, tagged F10.7 = 150 sfu.
 HarrisPriesterTable embedded_harris_priester_table();
 
-/// Checks one table (the rules of read_harris_priester_table); errors name the field and index.
+/// Checks one table: F10.7 level (check_harris_priester_f107), equal sizes, at least 2 nodes,
+/// each node as harris_priester_node_problem; errors name the field and index ("node[i]").
 core::Result<HarrisPriesterTable> validate_harris_priester_table(HarrisPriesterTable table);
+
+/// The problem of one node, or nullopt when it is valid: values finite, height above
+/// `previous_height_m` (the preceding node's, when there is one), densities > 0, rho_min <=
+/// rho_max. The per-node rule of validate_harris_priester_table (the file reader,
+/// dynamics/files/harris_priester_file.hpp, names the line with it).
+std::optional<std::string> harris_priester_node_problem(double height_m, double rho_min, double rho_max,
+                                                        std::optional<double> previous_height_m);
+
+/// `f107` when finite and > 0 [sfu]; else an error naming "f107".
+core::Result<double> check_harris_priester_f107(double f107);
 
 enum class HarrisPriesterBulge {
   kDiurnal,      // rho_m + (rho_M - rho_m) cos^n(psi/2)

@@ -1,11 +1,7 @@
 #pragma once
-// Daily space weather (F10.7, Ap, 3-hourly ap) from a CelesTrak CSV file (the SW-All.csv layout,
-// https://celestrak.org/SpaceData/SpaceWx-format.php), e.g.
+// Daily space weather (F10.7, Ap, 3-hourly ap), as read on the ground from a CelesTrak CSV file
+// (dynamics/files/space_weather_file.hpp), e.g.
 // shared/data/space_weather/SW-Observed_2024-07-01_2025-01-31.csv.
-//
-// Columns are found by their header names (DATE, F10.7_OBS, F10.7_OBS_CENTER81, AP_AVG,
-// AP1..AP8); others are ignored. Rows must be consecutive UTC days with every used field filled:
-// only observed data are accepted (trim CelesTrak's predicted blocks, whose ap fields are blank).
 //
 // at(t) follows the NRLMSISE-00 input convention (Picone et al. 2002; SOURCES.md sec. 2):
 //   f107  = observed F10.7 of the PREVIOUS UTC day (the flux lags the thermosphere by ~1 day),
@@ -15,7 +11,7 @@
 // stands for the whole UTC day (the measurement is at 20 UT at Penticton; not interpolated).
 
 #include <array>
-#include <filesystem>
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,8 +24,18 @@ namespace visors::dynamics {
 
 class SpaceWeatherTable {
  public:
-  /// Parses the CSV. Errors name the line ("line N") and the column (by header name).
-  static core::Result<SpaceWeatherTable> load(const std::filesystem::path& path);
+  /// The values of one UTC day.
+  struct Day {
+    std::string date;                // "YYYY-MM-DD" (for messages)
+    double f107_obs = 0.0;           // observed F10.7 [sfu]
+    double f107_obs_center81 = 0.0;  // 81-day mean of the observed F10.7, centred [sfu]
+    double ap_daily = 0.0;           // daily Ap [2 nT]
+    std::array<double, 8> ap{};      // 3-hourly ap, AP1 = 00-03 UTC .. AP8 = 21-24 UTC [2 nT]
+  };
+
+  /// The table of `days`, consecutive UTC days from `first_mjd` (UTC MJD of days[0]): at least 2
+  /// days, F10.7 finite and > 0, ap finite and >= 0. Errors name "days" or "days[k]".
+  static core::Result<SpaceWeatherTable> create(long first_mjd, std::vector<Day> days);
 
   /// Activity at `t` (NRLMSISE-00 convention above). Valid from the table's second day (f107
   /// needs the previous day) to the end of its last day; outside, an error naming that range.
@@ -44,13 +50,6 @@ class SpaceWeatherTable {
   [[nodiscard]] long last_mjd() const { return first_mjd_ + static_cast<long>(days_.size()) - 1; }
 
  private:
-  struct Day {
-    std::string date;                // "YYYY-MM-DD" as in the file (for messages)
-    double f107_obs = 0.0;           // [sfu]
-    double f107_obs_center81 = 0.0;  // [sfu]
-    double ap_daily = 0.0;           // [2 nT]
-    std::array<double, 8> ap{};      // 3-hourly [2 nT]
-  };
   SpaceWeatherTable(long first_mjd, std::vector<Day> days)
       : first_mjd_(first_mjd), days_(std::move(days)) {}
   // Index of t's UTC day in days_, or an error naming the valid range starting at `first`.

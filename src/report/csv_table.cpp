@@ -5,7 +5,7 @@
 #include <iterator>
 #include <limits>
 
-#include "core/csv_file.hpp"
+#include "core/files/csv_file.hpp"
 
 namespace visors::report {
 namespace {
@@ -71,7 +71,7 @@ bool blank(const std::vector<std::string>& fields) { return fields.size() == 1 &
 
 std::optional<double> parse_cell_number(std::string_view text) {
   if (text.empty()) return std::numeric_limits<double>::quiet_NaN();
-  return core::parse_finite_number(text);
+  return core::files::parse_finite_number(text);
 }
 
 core::Result<CsvTable> CsvTable::read(const std::filesystem::path& path) {

@@ -1,6 +1,6 @@
 #pragma once
 // A CSV table of a run directory (docs/run-directory.md) read whole into memory: a header line,
-// then records. Unlike core::read_csv_columns it understands RFC 4180 quoting, because the
+// then records. Unlike core::files::read_csv_columns it understands RFC 4180 quoting, because the
 // `detail` column of events.csv is free text that may hold commas, quotes and line breaks.
 // Cells are looked up by header name, so the report does not depend on column order. Numbers are
 // parsed strictly (the whole cell, finite); an empty cell is a missing value (NaN). Every error

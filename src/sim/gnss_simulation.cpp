@@ -7,10 +7,11 @@
 #include <optional>
 
 #include "astro/sun_moon.hpp"
-#include "core/data_path.hpp"
 #include "core/earth_frames.hpp"
 #include "core/eop.hpp"
-#include "core/output_file.hpp"
+#include "core/files/data_path.hpp"
+#include "core/files/eop_file.hpp"
+#include "core/files/output_file.hpp"
 #include "gnss/constellation.hpp"
 #include "gnss/ephemeris_set.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
@@ -28,8 +29,8 @@ namespace visors::sim {
 
 namespace {
 
-core::Result<core::OutputFile> open_output(const std::filesystem::path& path) {
-  core::OutputFile f = core::open_output_file(path);
+core::Result<core::files::OutputFile> open_output(const std::filesystem::path& path) {
+  core::files::OutputFile f = core::files::open_output_file(path);
   if (!f) return core::Error{path.string(), "cannot open for writing"};
   return f;
 }
@@ -54,7 +55,7 @@ struct World {
 
 core::Result<World> load_world(const CampaignScenario& s) {
   World w;
-  const auto path = core::find_data_file(s.gnss.nav_file);
+  const auto path = core::files::find_data_file(s.gnss.nav_file);
   if (!path) return core::Error{"gnss.nav_file", "'" + s.gnss.nav_file + "' not found (nor in the data search path)"};
   auto nav = gnss::files::read_rinex_navigation(*path);
   if (!nav.ok()) return core::Error{"gnss.nav_file", nav.error().describe()};
@@ -71,8 +72,8 @@ core::Result<World> load_world(const CampaignScenario& s) {
   if (!satellites.ok()) return core::Error{"gnss.broadcast_errors." + satellites.error().field, satellites.error().message};
   w.satellites.emplace(std::move(satellites).value());
   if (!s.forces.earth_frame.eop.empty()) {
-    if (const auto eop_path = core::find_data_file(s.forces.earth_frame.eop)) {
-      auto table = core::EopTable::load(*eop_path);
+    if (const auto eop_path = core::files::find_data_file(s.forces.earth_frame.eop)) {
+      auto table = core::files::read_eop_file(*eop_path);
       if (!table.ok()) return core::Error{"forces.earth_frame.eop", table.error().describe()};
       w.eop.emplace(std::move(table).value());
     }
@@ -154,8 +155,8 @@ core::Result<bool> open_rinex_observations(Craft& c, const CampaignScenario& s, 
 
 // truth.csv and channels_truth.csv, with their header lines.
 struct TruthFiles {
-  core::OutputFile truth;
-  core::OutputFile channels;
+  core::files::OutputFile truth;
+  core::files::OutputFile channels;
 };
 
 core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) {

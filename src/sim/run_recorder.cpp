@@ -11,8 +11,8 @@ namespace visors::sim {
 
 namespace {
 
-core::Result<core::OutputFile> open_file(const std::filesystem::path& path) {
-  core::OutputFile f = core::open_output_file(path);
+core::Result<core::files::OutputFile> open_file(const std::filesystem::path& path) {
+  core::files::OutputFile f = core::files::open_output_file(path);
   if (!f) return core::Error{"output file " + path.string(), "cannot be written"};
   return f;
 }

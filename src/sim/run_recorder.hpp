@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/output_file.hpp"
+#include "core/files/output_file.hpp"
 #include "core/status.hpp"
 #include "sim/alignment_metrics.hpp"
 
@@ -55,7 +55,7 @@ class RunRecorder {
   ~RunRecorder() = default;
 
  private:
-  using File = core::OutputFile;
+  using File = core::files::OutputFile;
   RunRecorder() = default;
 
   std::filesystem::path dir_;

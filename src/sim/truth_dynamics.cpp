@@ -1,3 +1,4 @@
+#include "dynamics/files/force_model_files.hpp"
 #include "sim/truth_dynamics.hpp"
 
 #include <string>
@@ -8,7 +9,7 @@ core::Result<TruthDynamics> make_truth_dynamics(const CampaignScenario& s, const
                                                 std::string_view name) {
   TruthDynamics d;
   const dynamics::SpacecraftProperties props{sc.mass_kg, 0.35, sc.cd, sc.srp_area_m2, sc.cr};
-  auto forces = dynamics::ForceModel::create(s.forces, props);
+  auto forces = dynamics::files::load_force_model(s.forces, props);
   if (!forces.ok()) return core::Error{"forces (" + std::string(name) + ")", forces.error().describe()};
   d.forces = std::make_unique<dynamics::ForceModel>(std::move(forces).value());
   dynamics::PropagatorSettings ps;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "apps/run_tool.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "support/geographiclib_gravity.hpp"
 
@@ -71,7 +72,7 @@ TEST(ToolGravity, Ggm05s60DigestVectorDataRelative) {
 // JSON numbers round-trip doubles exactly).
 TEST(ToolGravity, MatchesGeographicLibAtDegree90) {
   REQUIRE_SHARED(model, "gravity/GGM05S_d90.gfc");
-  const auto field = visors::dynamics::read_icgem(model, 90);
+  const auto field = visors::dynamics::files::read_icgem(model, 90);
   ASSERT_TRUE(field.ok()) << field.error().describe();
   const visors::test::GeographicLibGravity oracle(field.value(), 90, 90);
   const double radius = field.value().radius;

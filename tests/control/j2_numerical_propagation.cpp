@@ -5,6 +5,7 @@
 #include "astro/mean_osculating.hpp"
 #include "astro/relative_orbital_elements.hpp"
 #include "core/constants.hpp"
+#include "dynamics/files/force_model_files.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 
@@ -15,7 +16,7 @@ astro::RelativeOrbitalElements propagate_j2_numerically(const astro::KeplerianEl
                                                         const std::vector<Impulse>& impulses, double tf) {
   const core::EarthGravityConstants g;
   dynamics::ForceModelConfig c = dynamics::ForceModelConfig::gravity_only(2, 0);
-  auto forces = dynamics::ForceModel::create(c, {});
+  auto forces = dynamics::files::load_force_model(c, {});
   EXPECT_TRUE(forces.ok()) << forces.error().describe();
   dynamics::ForceModel fm = std::move(forces).value();
   dynamics::PropagatorSettings s;

@@ -13,10 +13,11 @@
 #include "astro/keplerian_elements.hpp"
 #include "astro/mean_osculating.hpp"
 #include "astro/roe_stm.hpp"
-#include "control/mission.hpp"
 #include "control/impulse_effect.hpp"
+#include "control/mission.hpp"
 #include "control/stochastic_mpc.hpp"
 #include "core/gps_time.hpp"
+#include "dynamics/files/force_model_files.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 
@@ -212,7 +213,7 @@ ClosedLoopResult run_closed_loop(const astro::RelativeOrbitalElements& roe0, con
                                  double tf, double nav_sigma_m) {
   ClosedLoopResult out;
   dynamics::ForceModelConfig c = dynamics::ForceModelConfig::gravity_only(2, 0);
-  auto forces_r = dynamics::ForceModel::create(c, {});
+  auto forces_r = dynamics::files::load_force_model(c, {});
   EXPECT_TRUE(forces_r.ok()) << forces_r.error().describe();
   if (!forces_r.ok()) return out;
   dynamics::ForceModel forces = std::move(forces_r).value();

@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 
 namespace {
 
@@ -34,22 +34,22 @@ class DataPath : public ::testing::Test {
 };
 
 TEST_F(DataPath, SearchesEveryEntryOfTheEnvironmentVariable) {
-  const auto found = visors::core::find_data_file("eop/x.txt");
+  const auto found = visors::core::files::find_data_file("eop/x.txt");
   ASSERT_TRUE(found.has_value());
   EXPECT_EQ(*found, root_ / "second" / "eop" / "x.txt");
 }
 
 TEST_F(DataPath, EarlierEntryWins) {
   std::ofstream(root_ / "first" / "eop" / "x.txt") << "first";
-  EXPECT_EQ(*visors::core::find_data_file("eop/x.txt"), root_ / "first" / "eop" / "x.txt");
+  EXPECT_EQ(*visors::core::files::find_data_file("eop/x.txt"), root_ / "first" / "eop" / "x.txt");
 }
 
 TEST_F(DataPath, MissingFileIsNullopt) {
-  EXPECT_FALSE(visors::core::find_data_file("eop/none.txt").has_value());
+  EXPECT_FALSE(visors::core::files::find_data_file("eop/none.txt").has_value());
 }
 
 TEST_F(DataPath, RepositoryDataFolderIsLast) {
-  const auto folders = visors::core::data_search_path();
+  const auto folders = visors::core::files::data_search_path();
   ASSERT_EQ(folders.size(), 3u);
   EXPECT_EQ(folders.back().filename(), "data");
 }

@@ -1,21 +1,24 @@
-// EopTable: IERS finals2000A parsing and interpolation.
+// EopTable: IERS finals2000A parsing (core/files/eop_file.hpp), the table's checks and interpolation.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
 #include "core/eop.hpp"
+#include "core/files/data_path.hpp"
+#include "core/files/eop_file.hpp"
 #include "support/temp_file.hpp"
 
 namespace {
 
 using visors::core::EarthOrientation;
 using visors::core::EopTable;
+using visors::core::files::read_eop_file;
 using visors::core::GpsTime;
 using visors::core::kArcsecToRad;
 using visors::core::TimeScale;
@@ -26,7 +29,7 @@ constexpr double kMasToRad = kArcsecToRad * 1e-3;
 GpsTime utc(const char* iso) { return *GpsTime::parse(iso, TimeScale::kUtc); }
 
 std::vector<std::string> real_lines() {
-  const auto path = visors::core::find_data_file(kFinals);
+  const auto path = visors::core::files::find_data_file(kFinals);
   std::vector<std::string> lines;
   if (!path) return lines;
   std::ifstream in(*path);
@@ -71,7 +74,7 @@ class EopFile : public ::testing::Test {
 };
 
 TEST_F(EopFile, LoadsTheWholeFile) {
-  const auto table = EopTable::load(*visors::core::find_data_file(kFinals));
+  const auto table = read_eop_file(*visors::core::files::find_data_file(kFinals));
   ASSERT_TRUE(table.ok()) << table.error().describe();
   EXPECT_EQ(table->size(), 215u);  // shared/data/SOURCES.md: 215 daily rows, MJD 60492..60706
   EXPECT_EQ(table->first_mjd(), 60492.0);
@@ -81,7 +84,7 @@ TEST_F(EopFile, LoadsTheWholeFile) {
 TEST_F(EopFile, ValuesAtTheMissionEpochAreTheFileRow) {
   // Row "2410 1 60584.00" of the file (also quoted in SOURCES.md): x_p 0.226101", y_p 0.407871",
   // UT1-UTC 0.0590197 s, LOD 0.0313 ms, dX 0.440 mas, dY -0.027 mas.
-  const auto table = EopTable::load(*visors::core::find_data_file(kFinals));
+  const auto table = read_eop_file(*visors::core::files::find_data_file(kFinals));
   ASSERT_TRUE(table.ok());
   const auto eop = table->at(utc("2024-10-01T00:00:00"));
   ASSERT_TRUE(eop.ok()) << eop.error().describe();
@@ -97,7 +100,7 @@ TEST_F(EopFile, ValuesAtTheMissionEpochAreTheFileRow) {
 
 TEST_F(EopFile, InterpolatesLinearlyBetweenDays) {
   // Midway between 60584 and 60585 (x_p 0.226493", UT1-UTC 0.0589803 s, LOD 0.0948 ms).
-  const auto table = EopTable::load(*visors::core::find_data_file(kFinals));
+  const auto table = read_eop_file(*visors::core::files::find_data_file(kFinals));
   ASSERT_TRUE(table.ok());
   const auto eop = table->at(utc("2024-10-01T12:00:00"));
   ASSERT_TRUE(eop.ok());
@@ -114,7 +117,7 @@ TEST_F(EopFile, InterpolatesLinearlyBetweenDays) {
 }
 
 TEST_F(EopFile, OutOfRangeErrorNamesTheRange) {
-  const auto table = EopTable::load(*visors::core::find_data_file(kFinals));
+  const auto table = read_eop_file(*visors::core::files::find_data_file(kFinals));
   ASSERT_TRUE(table.ok());
   const auto eop = table->at(utc("2024-06-30T23:00:00"));
   ASSERT_FALSE(eop.ok());
@@ -143,7 +146,7 @@ TEST_F(EopFile, CorruptLineIsRejectedWithItsNumber) {
   std::vector<std::string> lines(lines_.begin(), lines_.begin() + 5);
   lines[2][20] = 'x';  // inside x_p, columns 19-27, of line 3
   TempFile file(lines);
-  const auto table = EopTable::load(file.path());
+  const auto table = read_eop_file(file.path());
   ASSERT_FALSE(table.ok());
   EXPECT_EQ(table.error().field, "line 3");
   EXPECT_NE(table.error().message.find("x_p"), std::string::npos) << table.error().describe();
@@ -153,7 +156,7 @@ TEST_F(EopFile, DateThatDisagreesWithMjdIsRejected) {
   std::vector<std::string> lines(lines_.begin(), lines_.begin() + 5);
   lines[3][5] = '9';  // 24 7 4 -> 24 7 9
   TempFile file(lines);
-  const auto table = EopTable::load(file.path());
+  const auto table = read_eop_file(file.path());
   ASSERT_FALSE(table.ok());
   EXPECT_EQ(table.error().field, "line 4");
   EXPECT_NE(table.error().message.find("does not match MJD"), std::string::npos);
@@ -163,7 +166,7 @@ TEST_F(EopFile, MissingDayIsRejected) {
   std::vector<std::string> lines(lines_.begin(), lines_.begin() + 5);
   lines.erase(lines.begin() + 2);
   TempFile file(lines);
-  const auto table = EopTable::load(file.path());
+  const auto table = read_eop_file(file.path());
   ASSERT_FALSE(table.ok());
   EXPECT_EQ(table.error().field, "line 3");
   EXPECT_NE(table.error().message.find("consecutive"), std::string::npos);
@@ -173,7 +176,7 @@ TEST_F(EopFile, TruncatedLineIsRejected) {
   std::vector<std::string> lines(lines_.begin(), lines_.begin() + 5);
   lines[1] = lines[1].substr(0, 30);  // date, MJD and x_p only
   TempFile file(lines);
-  const auto table = EopTable::load(file.path());
+  const auto table = read_eop_file(file.path());
   ASSERT_FALSE(table.ok());
   EXPECT_EQ(table.error().field, "line 2") << table.error().describe();
 }
@@ -182,18 +185,18 @@ TEST_F(EopFile, RowWithoutValuesMayOnlyEndTheFile) {
   std::vector<std::string> lines(lines_.begin(), lines_.begin() + 5);
   lines[1] = lines[1].substr(0, 16);  // date and MJD only: a "future" row
   TempFile file(lines);
-  const auto table = EopTable::load(file.path());
+  const auto table = read_eop_file(file.path());
   ASSERT_FALSE(table.ok());
   EXPECT_EQ(table.error().field, "line 2") << table.error().describe();
   lines.erase(lines.begin() + 2, lines.end());  // now it ends the file: accepted, dropped
   TempFile ending(lines);
-  const auto ok = EopTable::load(ending.path());
+  const auto ok = read_eop_file(ending.path());
   ASSERT_TRUE(ok.ok()) << ok.error().describe();
   EXPECT_EQ(ok->size(), 1u);
 }
 
 TEST(Eop, MissingFileIsAnError) {
-  const auto table = EopTable::load("/nonexistent/finals2000A.txt");
+  const auto table = read_eop_file("/nonexistent/finals2000A.txt");
   ASSERT_FALSE(table.ok());
   EXPECT_NE(table.error().message.find("cannot open"), std::string::npos);
 }
@@ -205,7 +208,7 @@ TEST(Eop, LeapSecondInsideTheIntervalIsInterpolatedThroughUt1MinusTai) {
                  finals_line(16, 12, 31, 57753.0, 0.1, 0.2, -0.4077601, 1.0, 0.1, 0.1),
                  finals_line(17, 1, 1, 57754.0, 0.1, 0.2, 0.5922000, 1.0, 0.1, 0.1),
                  finals_line(17, 1, 2, 57755.0, 0.1, 0.2, 0.5915000, 1.0, 0.1, 0.1)});
-  const auto table = EopTable::load(file.path());
+  const auto table = read_eop_file(file.path());
   ASSERT_TRUE(table.ok()) << table.error().describe();
   // Noon before the leap: UT1-TAI interpolates (-36.4077601, -36.4078) -> UT1-UTC -0.40778005 s
   // (interpolating UT1-UTC itself would give +0.09).
@@ -238,7 +241,7 @@ TEST(Eop, BlankOptionalColumnsReadAsZero) {
                                  0.440, -0.027);
   line = line.substr(0, 78);  // no LOD, dX, dY
   TempFile file({line});
-  const auto table = EopTable::load(file.path());
+  const auto table = read_eop_file(file.path());
   ASSERT_TRUE(table.ok()) << table.error().describe();
   const auto eop = table->at(utc("2024-10-01T00:00:00"));
   ASSERT_TRUE(eop.ok());
@@ -246,6 +249,51 @@ TEST(Eop, BlankOptionalColumnsReadAsZero) {
   EXPECT_EQ(eop->dx, 0.0);
   // loose: measured 3.4e-16 s (2026-11), bound 1e-12 ~3000x above round-off
   EXPECT_NEAR(eop->dut1, 0.0590197, 1e-12);
+}
+
+}  // namespace
+
+namespace {
+
+// The table built in code (as on board, from uplinked values): the rules the reader's line
+// errors also enforce. Values: the finals2000A rows of 2024-10-01/02 (x_p, y_p arcsec; UT1-TAI =
+// UT1-UTC - 37 s).
+std::vector<EopTable::Row> two_days() {
+  EopTable::Row first;
+  first.mjd = 60584.0;
+  first.xp = 0.226101 * kArcsecToRad;
+  first.yp = 0.407871 * kArcsecToRad;
+  first.ut1_minus_tai = 0.0590197 - 37.0;
+  EopTable::Row second = first;
+  second.mjd = 60585.0;
+  return {first, second};
+}
+
+TEST(Eop, TableFromRowsInterpolates) {
+  const auto table = EopTable::create(two_days());
+  ASSERT_TRUE(table.ok()) << table.error().describe();
+  const auto eop = table->at(utc("2024-10-01T12:00:00"));
+  ASSERT_TRUE(eop.ok());
+  EXPECT_NEAR(eop->dut1, 0.0590197, 1e-12);
+}
+
+TEST(Eop, TableWithoutRowsIsRejected) {
+  EXPECT_EQ(EopTable::create({}).error().field, "rows");
+}
+
+TEST(Eop, TableWithAGapIsRejected) {
+  std::vector<EopTable::Row> rows = two_days();
+  rows[1].mjd = 60586.0;
+  const auto table = EopTable::create(rows);
+  ASSERT_FALSE(table.ok());
+  EXPECT_EQ(table.error().field, "rows[1]");
+  EXPECT_NE(table.error().message.find("consecutive"), std::string::npos);
+}
+
+TEST(Eop, TableWithANonFiniteValueIsRejected) {
+  std::vector<EopTable::Row> rows = two_days();
+  rows[0].xp = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(EopTable::create(rows).error().field, "rows[0]");
 }
 
 }  // namespace

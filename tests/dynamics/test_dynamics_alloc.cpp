@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "astro/keplerian_elements.hpp"
+#include "dynamics/files/force_model_files.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
@@ -23,13 +24,13 @@ core::StateVector chief() {
 }
 
 TEST(DynamicsAllocation, CounterSeesConstructionAllocations) {
-  EXPECT_GT(count_allocations([] { (void)ForceModel::create(ForceModelConfig::onboard(), {}); }), 0);
+  EXPECT_GT(count_allocations([] { (void)files::load_force_model(ForceModelConfig::onboard(), {}); }), 0);
 }
 
 // Both presets: gravity, frame refresh, space weather lookup, atmosphere, SRP, Sun, Moon.
 TEST(DynamicsAllocation, ForceModelEvaluationAllocatesNothing) {
   for (const ForceModelConfig& config : {ForceModelConfig::onboard(), ForceModelConfig::truth()}) {
-    auto created = ForceModel::create(config, {});
+    auto created = files::load_force_model(config, {});
     ASSERT_TRUE(created.ok());
     ForceModel forces = std::move(created).value();
     forces.set_empirical_acceleration_rtn({1e-7, 2e-7, 0.0});
@@ -45,7 +46,7 @@ TEST(DynamicsAllocation, ForceModelEvaluationAllocatesNothing) {
 
 // RK4 (dynamic step) and the DP8(7) reference over 20 minutes with a maneuver.
 TEST(DynamicsAllocation, PropagationAllocatesNothing) {
-  auto created = ForceModel::create(ForceModelConfig::onboard(), {});
+  auto created = files::load_force_model(ForceModelConfig::onboard(), {});
   ASSERT_TRUE(created.ok());
   ForceModel forces = std::move(created).value();
   for (const IntegratorKind kind : {IntegratorKind::kRk4Dynamic, IntegratorKind::kDormandPrince87}) {

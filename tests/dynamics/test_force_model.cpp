@@ -1,9 +1,12 @@
-// The assembled force model: configuration checks, term magnitudes, the truth/on-board model
+// The assembled force model: configuration checks, its creation from loaded data and the loading
+// with fallbacks (dynamics/files/force_model_files.hpp), term magnitudes, the truth/on-board model
 // mismatch and the differential accelerations between the two spacecraft (issue 3 acceptance).
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -11,12 +14,15 @@
 #include "astro/keplerian_elements.hpp"
 #include "astro/sun_moon.hpp"
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
 #include "core/earth_frames.hpp"
+#include "core/files/data_path.hpp"
 #include "core/rtn_frame.hpp"
+#include "dynamics/files/force_model_files.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
+#include "support/temp_file.hpp"
 
 namespace visors::dynamics {
 namespace {
@@ -35,13 +41,13 @@ core::StateVector mission_chief(double gm) {
 std::string missing_files(const ForceModelConfig& config) {
   std::string missing;
   for (const std::string* file : {&config.gravity.model, &config.drag.space_weather, &config.earth_frame.eop}) {
-    if (!file->empty() && !core::find_data_file(*file)) missing += " " + *file;
+    if (!file->empty() && !core::files::find_data_file(*file)) missing += " " + *file;
   }
   return missing;
 }
 
 ForceModel make(const ForceModelConfig& config, const SpacecraftProperties& sc = {}) {
-  auto forces = ForceModel::create(config, sc);
+  auto forces = files::load_force_model(config, sc);
   EXPECT_TRUE(forces.ok()) << forces.error().describe();
   return std::move(forces).value();
 }
@@ -49,14 +55,14 @@ ForceModel make(const ForceModelConfig& config, const SpacecraftProperties& sc =
 TEST(ForceModel, RejectsANonPositiveMass) {
   SpacecraftProperties sc;
   sc.mass = 0.0;
-  EXPECT_EQ(ForceModel::create(ForceModelConfig::onboard(), sc).error().field, "spacecraft.mass");
+  EXPECT_EQ(files::load_force_model(ForceModelConfig::onboard(), sc).error().field, "spacecraft.mass");
 }
 
 TEST(ForceModel, MissingGravityFileIsAnErrorWithoutFallback) {
   ForceModelConfig c = ForceModelConfig::onboard();
   c.gravity.model = "gravity/no_such_model.gfc";
   c.gravity.allow_embedded_fallback = false;
-  EXPECT_EQ(ForceModel::create(c, {}).error().field.rfind("gravity.model", 0), 0u);
+  EXPECT_EQ(files::load_force_model(c, {}).error().field.rfind("gravity.model", 0), 0u);
 }
 
 TEST(ForceModel, MissingGravityFileFallsBackToTheEmbeddedFieldWithAWarning) {
@@ -75,6 +81,58 @@ TEST(ForceModel, MissingSpaceWeatherFileFallsBackWithAWarning) {
   const ForceModel forces = make(c);
   const auto& w = forces.warnings();
   EXPECT_TRUE(std::any_of(w.begin(), w.end(), [](const std::string& m) { return m.rfind("drag.space_weather", 0) == 0; }));
+}
+
+// Files missing, fallbacks allowed: one warning per fallback, in the order gravity, degree
+// truncation, space weather, EOP (the texts `visors run` prints).
+TEST(ForceModel, FallbackWarningsComeInTheOrderOfTheConfiguration) {
+  ForceModelConfig c = ForceModelConfig::onboard();
+  c.gravity.model = "gravity/no_such_model.gfc";
+  c.drag.space_weather = "space_weather/none.csv";
+  c.earth_frame.eop = "eop/none.txt";
+  const ForceModel forces = make(c);
+  ASSERT_EQ(forces.warnings().size(), 4u);
+  EXPECT_EQ(forces.warnings()[0].rfind("gravity.model: gravity/no_such_model.gfc: gravity model file not found", 0), 0u);
+  EXPECT_EQ(forces.warnings()[1], "gravity.degree: truncated to 8, the maximum of the field in use");
+  EXPECT_EQ(forces.warnings()[2],
+            "drag.space_weather: 'space_weather/none.csv' not found; constant f107/f107a/ap of the configuration");
+  EXPECT_EQ(forces.warnings()[3], "earth_frame.eop: 'eop/none.txt' not found; zero polar motion and UT1-UTC");
+}
+
+// The spacecraft is checked before any file is looked for.
+TEST(ForceModel, InvalidSpacecraftComesBeforeAMissingGravityFile) {
+  ForceModelConfig c = ForceModelConfig::onboard();
+  c.gravity.model = "gravity/no_such_model.gfc";
+  c.gravity.allow_embedded_fallback = false;
+  SpacecraftProperties sc;
+  sc.cd = -1.0;
+  EXPECT_EQ(files::load_force_model(c, sc).error().field, "spacecraft.cd");
+}
+
+// An unreadable space-weather file is reported after the drag settings, which come first.
+TEST(ForceModel, InvalidDragSettingsComeBeforeAnUnreadableSpaceWeatherFile) {
+  const visors::test::TempFile garbage("not a space-weather file\n", ".csv");
+  ForceModelConfig c = ForceModelConfig::onboard();
+  c.drag.space_weather = garbage.path().string();
+  EXPECT_EQ(files::load_force_model(c, {}).error().field.rfind("drag.space_weather", 0), 0u);
+  c.drag.cosine_exponent = 0;
+  EXPECT_EQ(files::load_force_model(c, {}).error().field, "drag.cosine_exponent");
+}
+
+// The flight creation reads no file: the data are given, with the fallbacks the loader took.
+TEST(ForceModel, CreateTakesTheDataAndReadsNoFile) {
+  ForceModelConfig c = ForceModelConfig::onboard();
+  c.gravity.model = "gravity/no_such_model.gfc";
+  c.gravity.allow_embedded_fallback = false;  // loading would fail
+  c.earth_frame.eop = "eop/none.txt";
+  ForceModelData data;
+  data.gravity_field = embedded_gravity_field();
+  data.eop_fallback = "eop fallback";
+  auto forces = ForceModel::create(c, {}, std::move(data));
+  ASSERT_TRUE(forces.ok()) << forces.error().describe();
+  EXPECT_EQ(forces->warnings(), (std::vector<std::string>{
+                                    "gravity.degree: truncated to 8, the maximum of the field in use", "eop fallback"}));
+  EXPECT_EQ(forces->gm(), embedded_gravity_field().gm);
 }
 
 // Outside the space-weather file's dates (2024-07-01..2025-01-31) the configured activity is used
@@ -195,7 +253,7 @@ TEST(ForceModel, DifferentialAccelerationsFortyMetresApart) {
 
   // Independent check of the gravity differential: gradient of the same field (60x60 GGM05S
   // or the embedded fallback) in ITRF, rotated to GCRF with the full IAU 2006/2000A frame.
-  const auto file = load_gravity_field(dsc_forces.config().gravity.model, 60);
+  const auto file = files::load_gravity_field(dsc_forces.config().gravity.model, 60);
   const GravityField field = file.ok() ? file.value() : embedded_gravity_field();
   auto sh = SphericalHarmonicGravity::create(field, std::min(60, field.max_degree), std::min(60, field.max_degree));
   ASSERT_TRUE(sh.ok());

@@ -8,17 +8,18 @@
 #include <fstream>
 #include <string>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 
 namespace {
 using visors::dynamics::GravityField;
 using visors::dynamics::TideSystem;
-using visors::dynamics::read_icgem;
+using visors::dynamics::files::read_icgem;
 
 // Path of a shared data file, or empty (the test then skips: VISORS_DATA_PATH=/work/shared/data).
 std::filesystem::path data_file(const std::string& relative) {
-  return visors::core::find_data_file(relative).value_or(std::filesystem::path{});
+  return visors::core::files::find_data_file(relative).value_or(std::filesystem::path{});
 }
 #define REQUIRE_DATA(path_var, relative)                                                       \
   const std::filesystem::path path_var = data_file(relative);                                 \
@@ -199,7 +200,7 @@ TEST(IcgemReader, UnnormalizedConvertedToFullyNormalised) {
 }
 
 TEST(LoadGravityField, NotFoundIsErrorNamingTheModel) {
-  const auto field = visors::dynamics::load_gravity_field("gravity/NO_SUCH_MODEL.gfc", 20);
+  const auto field = visors::dynamics::files::load_gravity_field("gravity/NO_SUCH_MODEL.gfc", 20);
   ASSERT_FALSE(field.ok());
   EXPECT_NE(error_text(field).find("gravity/NO_SUCH_MODEL.gfc: gravity model file not found"), std::string::npos)
       << error_text(field);
@@ -207,7 +208,7 @@ TEST(LoadGravityField, NotFoundIsErrorNamingTheModel) {
 
 TEST(LoadGravityField, ResolvesDataRelativeName) {
   REQUIRE_DATA(path, "gravity/GGM05S_d90.gfc");
-  const auto field = visors::dynamics::load_gravity_field("gravity/GGM05S_d90.gfc", 20);
+  const auto field = visors::dynamics::files::load_gravity_field("gravity/GGM05S_d90.gfc", 20);
   ASSERT_TRUE(field.ok()) << error_text(field);
   EXPECT_EQ(field->max_degree, 20);
 }

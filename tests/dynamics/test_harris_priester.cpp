@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
+#include "dynamics/files/harris_priester_file.hpp"
 #include "dynamics/harris_priester.hpp"
 #include "support/temp_file.hpp"
 
@@ -21,7 +22,7 @@ using visors::dynamics::HarrisPriesterAtmosphere;
 using visors::dynamics::HarrisPriesterBulge;
 using visors::dynamics::HarrisPriesterSettings;
 using visors::dynamics::HarrisPriesterTable;
-using visors::dynamics::read_harris_priester_table;
+using visors::dynamics::files::read_harris_priester_table;
 
 constexpr char kTableFile[] = "atmosphere/harris_priester_mg_table3-8.csv";
 constexpr double kA = visors::core::kWgs84SemiMajorAxis;
@@ -69,7 +70,7 @@ TEST(HarrisPriester, AntapexAt500KmIsTheTableMinimum) {
 class SharedTable : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto path = visors::core::find_data_file(kTableFile);
+    const auto path = visors::core::files::find_data_file(kTableFile);
     if (!path) GTEST_SKIP() << kTableFile << " not found: set VISORS_DATA_PATH to the shared data folder";
     auto table = read_harris_priester_table(*path, 150.0);
     ASSERT_TRUE(table.ok()) << table.error().describe();

@@ -13,6 +13,8 @@
 #include "core/constants.hpp"
 #include "core/earth_frames.hpp"
 #include "core/rtn_frame.hpp"
+#include "dynamics/files/force_model_files.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/orbit_propagator.hpp"
@@ -30,7 +32,7 @@ astro::KeplerianElements mission_chief() {
 }
 
 ForceModel make_forces(const ForceModelConfig& config) {
-  auto forces = ForceModel::create(config, SpacecraftProperties{});
+  auto forces = files::load_force_model(config, SpacecraftProperties{});
   EXPECT_TRUE(forces.ok()) << forces.error().describe();
   return std::move(forces).value();
 }
@@ -98,7 +100,7 @@ TEST(OrbitPropagator, J2OnlySecularRatesMatchFirstOrderTheory) {
   ForceModel forces = make_forces(ForceModelConfig::gravity_only(2, 0));
   OrbitPropagator propagator = make_propagator(forces, reference_settings());
   // J2 = -sqrt(5) C20 of the field the force model loaded (the file, or the embedded fallback).
-  const auto file = load_gravity_field(forces.config().gravity.model, 2);
+  const auto file = files::load_gravity_field(forces.config().gravity.model, 2);
   const GravityField field = file.ok() ? file.value() : embedded_gravity_field();
   const core::EarthGravityConstants earth{field.gm, field.radius, -std::sqrt(5.0) * field.c(2, 0)};
   const astro::KeplerianElements mean0 = mission_chief();

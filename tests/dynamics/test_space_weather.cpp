@@ -6,9 +6,11 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "core/gps_time.hpp"
+#include "dynamics/files/space_weather_file.hpp"
 #include "dynamics/space_weather.hpp"
 #include "support/temp_file.hpp"
 
@@ -17,6 +19,7 @@ namespace {
 using visors::core::GpsTime;
 using visors::core::TimeScale;
 using visors::dynamics::SpaceWeatherTable;
+using visors::dynamics::files::read_space_weather_file;
 
 constexpr char kFile[] = "space_weather/SW-Observed_2024-07-01_2025-01-31.csv";
 
@@ -25,9 +28,9 @@ GpsTime utc(const char* iso) { return *GpsTime::parse(iso, TimeScale::kUtc); }
 class SpaceWeatherFile : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto path = visors::core::find_data_file(kFile);
+    const auto path = visors::core::files::find_data_file(kFile);
     if (!path) GTEST_SKIP() << kFile << " not found: set VISORS_DATA_PATH to the shared data folder";
-    auto table = SpaceWeatherTable::load(*path);
+    auto table = read_space_weather_file(*path);
     ASSERT_TRUE(table.ok()) << table.error().describe();
     table_ = std::move(table).value();
   }
@@ -93,7 +96,7 @@ constexpr char kRow1[] = "5,2024-10-01,215.3,5,7,5,3,4,7,5,4,244.6\n";
 
 TEST(SpaceWeatherReader, ColumnsAreFoundByName) {
   const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-02,214.7,7,6,6,5,7,3,5,4,274.4\n");
-  const auto t = SpaceWeatherTable::load(f.path());
+  const auto t = read_space_weather_file(f.path());
   ASSERT_TRUE(t.ok()) << t.error().describe();
   const auto a = t->at(utc("2024-10-02T12:00:00"));
   ASSERT_TRUE(a.ok()) << a.error().describe();
@@ -104,7 +107,7 @@ TEST(SpaceWeatherReader, ColumnsAreFoundByName) {
 
 TEST(SpaceWeatherReader, MalformedNumberNamesLineAndColumn) {
   const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-02,214.7,7,6,6,5,7,3,5,4,27x4.4\n");
-  const auto t = SpaceWeatherTable::load(f.path());
+  const auto t = read_space_weather_file(f.path());
   ASSERT_FALSE(t.ok());
   EXPECT_EQ(t.error().field, "line 3");
   EXPECT_NE(t.error().message.find("F10.7_OBS"), std::string::npos) << t.error().message;
@@ -112,7 +115,7 @@ TEST(SpaceWeatherReader, MalformedNumberNamesLineAndColumn) {
 
 TEST(SpaceWeatherReader, BlankFieldIsRejected) {
   const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-02,214.7,7,6,6,5,,3,5,4,274.4\n");
-  const auto t = SpaceWeatherTable::load(f.path());
+  const auto t = read_space_weather_file(f.path());
   ASSERT_FALSE(t.ok());
   EXPECT_EQ(t.error().field, "line 3");
   EXPECT_NE(t.error().message.find("AP5"), std::string::npos) << t.error().message;
@@ -120,7 +123,7 @@ TEST(SpaceWeatherReader, BlankFieldIsRejected) {
 
 TEST(SpaceWeatherReader, MissingDayIsRejected) {
   const TempCsv f(std::string(kHeader) + kRow1 + "5,2024-10-03,214.7,7,6,6,5,7,3,5,4,274.4\n");
-  const auto t = SpaceWeatherTable::load(f.path());
+  const auto t = read_space_weather_file(f.path());
   ASSERT_FALSE(t.ok());
   EXPECT_EQ(t.error().field, "line 3");
   EXPECT_NE(t.error().message.find("DATE"), std::string::npos) << t.error().message;
@@ -128,19 +131,54 @@ TEST(SpaceWeatherReader, MissingDayIsRejected) {
 
 TEST(SpaceWeatherReader, BadDateIsRejected) {
   const TempCsv f(std::string(kHeader) + "5,2024-13-01,215.3,5,7,5,3,4,7,5,4,244.6\n");
-  EXPECT_EQ(SpaceWeatherTable::load(f.path()).error().field, "line 2");
+  EXPECT_EQ(read_space_weather_file(f.path()).error().field, "line 2");
 }
 
 TEST(SpaceWeatherReader, MissingColumnIsNamed) {
   const TempCsv f("DATE,F10.7_OBS\n2024-10-01,244.6\n");
-  const auto t = SpaceWeatherTable::load(f.path());
+  const auto t = read_space_weather_file(f.path());
   ASSERT_FALSE(t.ok());
   EXPECT_EQ(t.error().field, "line 1");
   EXPECT_NE(t.error().message.find("F10.7_OBS_CENTER81"), std::string::npos) << t.error().message;
 }
 
 TEST(SpaceWeatherReader, MissingFileIsAnError) {
-  EXPECT_FALSE(SpaceWeatherTable::load("/nonexistent/sw.csv").ok());
+  EXPECT_FALSE(read_space_weather_file("/nonexistent/sw.csv").ok());
+}
+
+// The table built in code (as on board, from uplinked values): the rules the reader's line
+// errors also enforce. Values: the CelesTrak rows of 2024-10-01/02 (MJD 60584/60585).
+std::vector<SpaceWeatherTable::Day> two_days() {
+  SpaceWeatherTable::Day first{"2024-10-01", 244.6, 215.3, 5.0, {5, 7, 5, 3, 4, 7, 5, 4}};
+  SpaceWeatherTable::Day second{"2024-10-02", 274.4, 214.7, 5.0, {7, 6, 6, 5, 7, 3, 5, 4}};
+  return {first, second};
+}
+
+TEST(SpaceWeatherTable, FromDaysFollowsTheNrlmsiseConvention) {
+  const auto t = SpaceWeatherTable::create(60584, two_days());
+  ASSERT_TRUE(t.ok()) << t.error().describe();
+  const auto a = t->at(utc("2024-10-02T12:00:00"));
+  ASSERT_TRUE(a.ok()) << a.error().describe();
+  EXPECT_EQ(a->f107, 244.6);
+  EXPECT_EQ(a->f107a, 214.7);
+}
+
+TEST(SpaceWeatherTable, OneDayIsRejected) {
+  auto days = two_days();
+  days.pop_back();
+  EXPECT_EQ(SpaceWeatherTable::create(60584, days).error().field, "days");
+}
+
+TEST(SpaceWeatherTable, NonPositiveF107IsRejected) {
+  auto days = two_days();
+  days[1].f107_obs_center81 = 0.0;
+  EXPECT_EQ(SpaceWeatherTable::create(60584, days).error().field, "days[1]");
+}
+
+TEST(SpaceWeatherTable, NegativeApIsRejected) {
+  auto days = two_days();
+  days[0].ap[7] = -1.0;
+  EXPECT_EQ(SpaceWeatherTable::create(60584, days).error().field, "days[0]");
 }
 
 }  // namespace

@@ -13,7 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
 #include "support/geographiclib_gravity.hpp"
@@ -24,9 +25,9 @@ using visors::dynamics::SphericalHarmonicGravity;
 
 // Reads a shared-data gravity file; empty when absent (the caller skips).
 std::optional<GravityField> load_field(const std::string& relative, int degree = -1) {
-  const auto path = visors::core::find_data_file(relative);
+  const auto path = visors::core::files::find_data_file(relative);
   if (!path) return std::nullopt;
-  auto field = visors::dynamics::read_icgem(*path, degree);
+  auto field = visors::dynamics::files::read_icgem(*path, degree);
   if (!field.ok()) {
     ADD_FAILURE() << field.error().describe();
     return std::nullopt;

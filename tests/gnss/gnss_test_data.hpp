@@ -9,16 +9,16 @@
 
 #include <gtest/gtest.h>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 
 namespace visors::test {
 
 inline std::filesystem::path gnss_data(const std::string& relative) {
-  const auto path = core::find_data_file("gnss/" + relative);
+  const auto path = core::files::find_data_file("gnss/" + relative);
   return path.value_or(std::filesystem::path("gnss") / relative);
 }
 
-inline bool have_gnss_data(const std::string& relative) { return core::find_data_file("gnss/" + relative).has_value(); }
+inline bool have_gnss_data(const std::string& relative) { return core::files::find_data_file("gnss/" + relative).has_value(); }
 
 /// Skips the current test when a GNSS data file is not in the data search path (README "Data files").
 #define VISORS_SKIP_WITHOUT_GNSS_DATA(relative)                                                              \

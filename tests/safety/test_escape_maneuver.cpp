@@ -20,6 +20,8 @@
 #include "core/earth_frames.hpp"
 #include "core/gps_time.hpp"
 #include "core/rtn_frame.hpp"
+#include "dynamics/files/force_model_files.hpp"
+#include "dynamics/files/icgem_file.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "dynamics/orbit_propagator.hpp"
@@ -176,10 +178,10 @@ TEST(EscapeManeuver, DriftConfirmedByNumericalJ2Propagation) {
   using core::GpsTime;
   const GpsTime epoch = GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kUtc).value();
   dynamics::ForceModelConfig c = dynamics::ForceModelConfig::gravity_only(2, 0);
-  auto forces_or = dynamics::ForceModel::create(c, dynamics::SpacecraftProperties{});
+  auto forces_or = dynamics::files::load_force_model(c, dynamics::SpacecraftProperties{});
   ASSERT_TRUE(forces_or.ok()) << forces_or.error().describe();
   dynamics::ForceModel forces = std::move(forces_or).value();
-  const auto file = dynamics::load_gravity_field(forces.config().gravity.model, 2);
+  const auto file = dynamics::files::load_gravity_field(forces.config().gravity.model, 2);
   const dynamics::GravityField field = file.ok() ? file.value() : dynamics::embedded_gravity_field();
   const core::EarthGravityConstants earth{field.gm, field.radius, -std::sqrt(5.0) * field.c(2, 0)};
   dynamics::PropagatorSettings ps;

@@ -12,7 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "core/constants.hpp"
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "gnss/constellation.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/gps_constants.hpp"
@@ -27,10 +27,10 @@ inline constexpr const char* kMissionNavFile = "gnss/NYA100NOR_S_20241280000_01D
 
 /// Whether the navigation file of the mission constellation is in the data search path (tests
 /// skip without it, README "Data files").
-inline bool have_mission_nav() { return core::find_data_file(kMissionNavFile).has_value(); }
+inline bool have_mission_nav() { return core::files::find_data_file(kMissionNavFile).has_value(); }
 
 inline gnss::GpsConstellation mission_constellation() {
-  const auto path = core::find_data_file(kMissionNavFile);
+  const auto path = core::files::find_data_file(kMissionNavFile);
   if (!path) throw std::runtime_error("gnss/NYA100NOR_S_20241280000_01D_GN.rnx not in the data search path");
   const auto nav = gnss::files::read_rinex_navigation(*path);
   if (!nav.ok()) throw std::runtime_error(nav.error().describe());

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/files/rinex_obs_file.hpp"
 #include "gnss/gps_constants.hpp"
@@ -48,7 +48,7 @@ class GnssSimulation : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new std::filesystem::path(out_dir("run"));
-    if (!visors::core::find_data_file(kNavFile)) return;
+    if (!visors::core::files::find_data_file(kNavFile)) return;
     const auto result = run_gnss_simulation(campaign_from_toml(scenario(120.0)).value(), *dir_);
     ASSERT_TRUE(result.ok()) << result.error().describe();
     summary_ = new nlohmann::json(result->summary);
@@ -127,7 +127,7 @@ TEST(GnssScenario, MissingNavigationFileIsNamed) {
 
 // Same seed, same measurements (deterministic random streams per model).
 TEST(GnssScenario, SameSeedSameTruth) {
-  if (!visors::core::find_data_file(kNavFile)) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNavFile)) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH";
   const auto s = campaign_from_toml(scenario(20.0, "rinex = false\n")).value();
   const auto a = out_dir("a"), b = out_dir("b");
   ASSERT_TRUE(run_gnss_simulation(s, a).ok());

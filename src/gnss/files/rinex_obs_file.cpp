@@ -134,7 +134,7 @@ core::Result<Rinex3ObservationWriter> Rinex3ObservationWriter::open(const std::f
       return core::Error{"observation_types", "'" + type + "' is not a 3-character RINEX 3 code"};
     }
   }
-  core::OutputFile f = core::open_output_file(path);
+  core::files::OutputFile f = core::files::open_output_file(path);
   if (!f) return core::Error{path.string(), "cannot open the RINEX observation file for writing"};
   std::FILE* raw = f.get();
   Rinex3ObservationWriter writer(path, std::move(f), header.observation_types);

@@ -23,8 +23,8 @@
 
 #include <Eigen/Core>
 
+#include "core/files/output_file.hpp"
 #include "core/gps_time.hpp"
-#include "core/output_file.hpp"
 #include "core/status.hpp"
 #include "gnss/gps_measurement.hpp"
 
@@ -92,10 +92,10 @@ class Rinex3ObservationWriter {
   core::Result<bool> close();
 
  private:
-  Rinex3ObservationWriter(std::filesystem::path path, core::OutputFile file, std::vector<std::string> types)
+  Rinex3ObservationWriter(std::filesystem::path path, core::files::OutputFile file, std::vector<std::string> types)
       : path_(std::move(path)), file_(std::move(file)), types_names_(std::move(types)), types_(types_names_.size()) {}
   std::filesystem::path path_;
-  core::OutputFile file_;
+  core::files::OutputFile file_;
   std::vector<std::string> types_names_;  // the header's observation types, for error fields
   std::size_t types_ = 0;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // Ephemeris files of one spacecraft: a CSV table and a CCSDS Orbit Ephemeris Message (OEM, KVN
 // form, CCSDS 502.0-B-3 "Orbit Data Messages", version 3.0 keywords compatible with 2.0 readers).
-// Ground-side I/O (writers only).
+// Ground side (visors_dynamics_files), writers only.
 
 #include <ostream>
 #include <span>
@@ -10,7 +10,7 @@
 #include "core/gps_time.hpp"
 #include "core/state_vector.hpp"
 
-namespace visors::dynamics {
+namespace visors::dynamics::files {
 
 struct EphemerisRecord {
   core::GpsTime t;
@@ -32,4 +32,4 @@ void write_ephemeris_csv(std::ostream& out, std::span<const EphemerisRecord> rec
 /// resolution, epochs with microseconds. Precondition: at least one record.
 void write_oem(std::ostream& out, std::span<const EphemerisRecord> records, const OemHeader& header);
 
-}  // namespace visors::dynamics
+}  // namespace visors::dynamics::files

@@ -1,11 +1,11 @@
-#include "core/csv_file.hpp"
+#include "core/files/csv_file.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 
-namespace visors::core {
+namespace visors::core::files {
 namespace {
 
 std::string_view trimmed(std::string_view s) {
@@ -82,4 +82,4 @@ Result<std::vector<CsvRow>> read_csv_columns(const std::filesystem::path& path,
   return rows;
 }
 
-}  // namespace visors::core
+}  // namespace visors::core::files

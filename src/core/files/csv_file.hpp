@@ -1,8 +1,8 @@
 #pragma once
 // Reading small reference tables in CSV with a header line (Harris-Priester densities, CelesTrak
 // space weather): the wanted columns are found by header name, so column order and extra columns
-// do not matter; blank lines are skipped; fields are trimmed of blanks. Ground-side file I/O:
-// models are built from the returned rows once, at start-up.
+// do not matter; blank lines are skipped; fields are trimmed of blanks. Ground-side file I/O
+// (visors_core_files): models are built from the returned rows once, at start-up.
 
 #include <cstddef>
 #include <filesystem>
@@ -14,7 +14,7 @@
 
 #include "core/status.hpp"
 
-namespace visors::core {
+namespace visors::core::files {
 
 struct CsvRow {
   std::size_t line = 0;             // 1-based line number in the file
@@ -35,4 +35,4 @@ std::optional<double> parse_finite_number(std::string_view text);
 /// The error for line `line` of a file: field "line N".
 Error line_error(std::size_t line, std::string message);
 
-}  // namespace visors::core
+}  // namespace visors::core::files

@@ -1,9 +1,9 @@
-#include "dynamics/ephemeris_file.hpp"
+#include "dynamics/files/ephemeris_file.hpp"
 
 #include <cassert>
 #include <cstdio>
 
-namespace visors::dynamics {
+namespace visors::dynamics::files {
 namespace {
 
 constexpr int kEpochDecimals = 6;  // 1 us: 7.6 mm along-track at LEO
@@ -50,4 +50,4 @@ void write_oem(std::ostream& out, std::span<const EphemerisRecord> records, cons
   }
 }
 
-}  // namespace visors::dynamics
+}  // namespace visors::dynamics::files

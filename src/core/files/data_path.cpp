@@ -1,4 +1,4 @@
-#include "core/data_path.hpp"
+#include "core/files/data_path.hpp"
 
 #include <cstdlib>
 #include <sstream>
@@ -7,7 +7,7 @@
 #define VISORS_REPOSITORY_DATA_DIR ""
 #endif
 
-namespace visors::core {
+namespace visors::core::files {
 
 std::vector<std::filesystem::path> data_search_path() {
   std::vector<std::filesystem::path> folders;
@@ -36,4 +36,4 @@ std::optional<std::filesystem::path> find_data_file(const std::string& relative)
   return std::nullopt;
 }
 
-}  // namespace visors::core
+}  // namespace visors::core::files

@@ -1,14 +1,15 @@
 #pragma once
 // Data search path: reference data files (gravity fields, EOP, space weather, GPS ephemerides)
 // are found at run time through VISORS_DATA_PATH (':'-separated folders), then the repository's
-// own data/ folder. Nothing is copied into the repository.
+// own data/ folder. Nothing is copied into the repository. Ground side (visors_core_files): flight
+// code gets the data, never a path.
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace visors::core {
+namespace visors::core::files {
 
 /// The folders searched, in order: each entry of VISORS_DATA_PATH, then the repository's data/.
 std::vector<std::filesystem::path> data_search_path();
@@ -17,4 +18,4 @@ std::vector<std::filesystem::path> data_search_path();
 /// An absolute or existing path is returned as is. nullopt when found nowhere.
 std::optional<std::filesystem::path> find_data_file(const std::string& relative);
 
-}  // namespace visors::core
+}  // namespace visors::core::files
