@@ -5,15 +5,11 @@
 #include <string>
 
 namespace visors::core {
-namespace {
-
 std::string mjd_text(double mjd) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f", mjd);
   return buf;
 }
-
-}  // namespace
 
 Result<EopTable> EopTable::create(std::vector<Row> rows) {
   if (rows.empty()) return Error{"rows", "needs at least one row"};

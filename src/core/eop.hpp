@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <utility>
+#include <string>
 #include <vector>
 
 #include "core/gps_time.hpp"
@@ -50,5 +51,8 @@ class EopTable {
   explicit EopTable(std::vector<Row> rows) : rows_(std::move(rows)) {}
   std::vector<Row> rows_;
 };
+
+/// An MJD as written in EOP messages (two decimals).
+std::string mjd_text(double mjd);
 
 }  // namespace visors::core

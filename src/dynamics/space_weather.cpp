@@ -7,7 +7,11 @@
 namespace visors::dynamics {
 namespace {
 
-// MJD of 0h UTC of a civil date; an error (field "") for an invalid date.
+bool positive(double x) { return std::isfinite(x) && x > 0.0; }
+bool non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
+
+}  // namespace
+
 core::Result<long> utc_day_mjd(int year, int month, int day) {
   core::CalendarTime c;
   c.year = year;
@@ -17,11 +21,6 @@ core::Result<long> utc_day_mjd(int year, int month, int day) {
   if (!start.ok()) return start.error();
   return std::lround(start->jd_utc().mjd());
 }
-
-bool positive(double x) { return std::isfinite(x) && x > 0.0; }
-bool non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
-
-}  // namespace
 
 core::Result<SpaceWeatherTable> SpaceWeatherTable::create(long first_mjd, std::vector<Day> days) {
   if (days.size() < 2) return core::Error{"days", "needs at least 2 days"};

@@ -59,4 +59,7 @@ class SpaceWeatherTable {
   std::vector<Day> days_;
 };
 
+/// MJD of 0h UTC of a civil date; an error (field "") for an invalid date.
+core::Result<long> utc_day_mjd(int year, int month, int day);
+
 }  // namespace visors::dynamics

@@ -77,12 +77,6 @@ Error line_error(std::size_t line_number, std::string message) {
   return Error{"line " + std::to_string(line_number), std::move(message)};
 }
 
-std::string mjd_text(double mjd) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", mjd);
-  return buf;
-}
-
 }  // namespace
 
 Result<EopTable> read_eop_file(const std::filesystem::path& path) {

@@ -21,16 +21,6 @@ std::optional<int> parse_int(std::string_view text) {
   return value;
 }
 
-// MJD of 0h UTC of a civil date; an error (field "") for an invalid date.
-core::Result<long> utc_day_mjd(int year, int month, int day) {
-  core::CalendarTime c;
-  c.year = year;
-  c.month = month;
-  c.day = day;
-  const auto start = core::GpsTime::from_calendar(c, core::TimeScale::kUtc);
-  if (!start.ok()) return start.error();
-  return std::lround(start->jd_utc().mjd());
-}
 
 // "YYYY-MM-DD" -> MJD, nullopt when malformed or not a date.
 std::optional<long> parse_date(std::string_view text) {
