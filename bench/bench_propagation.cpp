@@ -46,8 +46,8 @@ void propagate(benchmark::State& state, const ForceModelConfig& config, double s
   if (!make(state, config, forces)) return;
   PropagatorSettings settings;
   settings.integrator = IntegratorKind::kRk4Fixed;
-  settings.step = step;
-  settings.min_step = step;
+  settings.step_s = step;
+  settings.min_step_s = step;
   OrbitPropagator propagator = OrbitPropagator::create(*forces, settings).value();
   const core::StateVector x0 = mission_chief();
   for (auto _ : state) {

@@ -74,16 +74,16 @@ core::Result<dynamics::PropagatorSettings> read_integrator(const toml::table& p,
   } else {
     return Error{field_name(s, "integrator"), "must be \"rk4\", \"rk4-fixed\" or \"dp87\""};
   }
-  VISORS_TRY(step, number_at(p, s, "step_s", settings.step));
-  VISORS_TRY(min_step, number_at(p, s, "min_step_s", std::min(settings.min_step, step)));
+  VISORS_TRY(step, number_at(p, s, "step_s", settings.step_s));
+  VISORS_TRY(min_step, number_at(p, s, "min_step_s", std::min(settings.min_step_s, step)));
   VISORS_TRY(rtol, number_at(p, s, "relative_tolerance", settings.reference.relative_tolerance));
   VISORS_TRY(atol, number_at(p, s, "absolute_tolerance", settings.reference.absolute_tolerance));
   if (!(step >= 1e-3) || step > 3600.0) return Error{field_name(s, "step_s"), "must be in [1 ms, 3600 s]"};
   if (!(min_step > 0.0) || min_step > step) return Error{field_name(s, "min_step_s"), "must be in (0, step_s]"};
   if (!(rtol > 0.0) || rtol >= 1.0) return Error{field_name(s, "relative_tolerance"), "must be in (0, 1)"};
   if (!(atol > 0.0)) return Error{field_name(s, "absolute_tolerance"), "must be > 0"};
-  settings.step = step;
-  settings.min_step = min_step;
+  settings.step_s = step;
+  settings.min_step_s = min_step;
   settings.reference.relative_tolerance = rtol;
   settings.reference.absolute_tolerance = atol;
   return settings;

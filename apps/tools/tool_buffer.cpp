@@ -30,7 +30,7 @@ Json run_buffer(const Json& in) {
   for (const control::Impulse& p : out.pieces) pieces.push_back({{"t", p.t}, {"dv_rtn", to_json(p.dv_rtn)}});
   Json residual = Json::array();
   for (int k = 0; k < 6; ++k) residual.push_back(out.residual_roe_m[k]);
-  return Json{{"pieces", pieces}, {"dv_total", out.dv_total}, {"residual_roe_m", residual}};
+  return Json{{"pieces", pieces}, {"dv_total", out.dv_total_mps}, {"residual_roe_m", residual}};
 }
 
 const bool registered = register_tool(

@@ -25,20 +25,26 @@ Json run_escape(const Json& in) {
   const safety::RoeCovariance cov = require_matrix(in, "cov", 6, 6) / (chief.a * chief.a);  // [m^2] -> [-]
   const double t_earliest = require_number(in, "t_earliest");
   safety::EscapeSettings settings;
-  settings.epsilon = require_number(in, "epsilon");
-  settings.da_target = require_number(in, "da_target");
+  settings.epsilon_m = require_number(in, "epsilon");
+  settings.da_target_m = require_number(in, "da_target");
   settings.q_sigma = optional_number(in, "q").value_or(settings.q_sigma);
   auto result = safety::plan_escape(chief, roe, cov, t_earliest, settings, gravity);
   if (!result.ok()) {
+    // The JSON keys of this tool are the settings' names without their unit suffix.
     const std::string& f = result.error().field;
-    throw ToolInputError(f == "covariance" ? "cov" : (f == "q_sigma" ? "q" : f), result.error().message);
+    const std::string key = f == "covariance" ? "cov"
+                            : f == "q_sigma"  ? "q"
+                            : f == "epsilon_m" ? "epsilon"
+                            : f == "da_target_m" ? "da_target"
+                                                 : f;
+    throw ToolInputError(key, result.error().message);
   }
   const safety::EscapeManeuver& e = result.value();
   return Json{{"maneuver", {{"t", e.impulse.t}, {"dv_rtn", to_json(e.impulse.dv_rtn)}}},
               {"roe_after", roe_to_json_m(e.roe_after, chief.a)},
-              {"drift_per_orbit", e.drift_per_orbit},
-              {"min_separation_after", e.safety_after.min_separation},
-              {"min_separation_margin_after", e.safety_after.min_separation_margin}};
+              {"drift_per_orbit", e.drift_per_orbit_m},
+              {"min_separation_after", e.safety_after.min_separation_m},
+              {"min_separation_margin_after", e.safety_after.min_separation_margin_m}};
 }
 
 const bool registered = register_tool(

@@ -51,8 +51,8 @@ Json run_plan(const Json& in) {
   Json maneuvers = Json::array();
   for (const control::Impulse& i : plan.impulses) maneuvers.push_back({{"t", i.t + t0}, {"dv_rtn", to_json(i.dv_rtn)}});
   return Json{{"maneuvers", maneuvers},
-              {"dv_total", plan.dv_total},
-              {"dv_lower_bound", plan.dv_lower_bound},
+              {"dv_total", plan.dv_total_mps},
+              {"dv_lower_bound", plan.dv_lower_bound_mps},
               {"roe_final_predicted", roe_to_json_m(plan.roe_final_predicted, chief.a)}};
 }
 

@@ -46,7 +46,7 @@ Json run_safety(const Json& in) {
     throw ToolInputError("plane", "must be \"rn\" or \"3d\"");
   }
   settings.q_sigma = require_number(in, "q");
-  settings.epsilon = optional_number(in, "epsilon").value_or(settings.epsilon);
+  settings.epsilon_m = optional_number(in, "epsilon").value_or(settings.epsilon_m);
   if (const auto spo = optional_number(in, "samples_per_orbit")) {
     if (*spo != std::floor(*spo) || *spo < 8.0 || *spo > 100000.0) {
       throw ToolInputError("samples_per_orbit", "must be an integer in [8, 100000]");
@@ -56,15 +56,16 @@ Json run_safety(const Json& in) {
   const auto checked = safety::validate(settings);
   if (!checked.ok()) {
     const std::string& f = checked.error().field;
-    throw ToolInputError(f == "q_sigma" ? "q" : (f == "horizon_orbits" ? "horizon" : f), checked.error().message);
+    throw ToolInputError(f == "q_sigma" ? "q" : (f == "horizon_orbits" ? "horizon" : (f == "epsilon_m" ? "epsilon" : f)),
+                         checked.error().message);
   }
   const safety::SafetyAssessment r =
       take_renamed(safety::evaluate_passive_safety(chief, roe, cov, settings, gravity));
-  return Json{{"min_separation", r.min_separation},
-              {"min_separation_margin", r.min_separation_margin},
-              {"t_min", r.t_min},
-              {"t_min_margin", r.t_min_margin},
-              {"sigma_at_t_min", r.sigma_at_t_min},
+  return Json{{"min_separation", r.min_separation_m},
+              {"min_separation_margin", r.min_separation_margin_m},
+              {"t_min", r.t_min_s},
+              {"t_min_margin", r.t_min_margin_s},
+              {"sigma_at_t_min", r.sigma_at_t_min_m},
               {"safe", r.safe}};
 }
 

@@ -355,8 +355,8 @@ core::Result<bool> plan_closed_form_into(ManeuverPlan& plan, const astro::Kepler
                                          const astro::RelativeOrbitalElements& roe_target, double tf,
                                          const ClosedFormSettings& settings, const core::EarthGravityConstants& gravity) {
   plan.impulses.clear();
-  plan.dv_total = 0.0;
-  plan.dv_lower_bound = 0.0;
+  plan.dv_total_mps = 0.0;
+  plan.dv_lower_bound_mps = 0.0;
   if (auto ok = validate_inputs(chief_mean_t0, roe0, roe_target, tf, settings, gravity); !ok) return ok.error();
   const auto problem = set_up(chief_mean_t0, roe0, roe_target, tf, settings, gravity);
   if (!problem.ok()) return problem.error();
@@ -378,8 +378,8 @@ core::Result<bool> plan_closed_form_into(ManeuverPlan& plan, const astro::Kepler
     plan.impulses.push_back(Impulse{set.impulses[static_cast<std::size_t>(k)].t, set.dv[static_cast<std::size_t>(k)]});
   }
   std::sort(plan.impulses.begin(), plan.impulses.end(), [](const Impulse& x, const Impulse& y) { return x.t < y.t; });
-  plan.dv_total = total_delta_v(plan.impulses);
-  plan.dv_lower_bound = bound.value().total;
+  plan.dv_total_mps = total_delta_v(plan.impulses);
+  plan.dv_lower_bound_mps = bound.value().total;
   plan.roe_final_predicted = predict_roe(chief_mean_t0, roe0, plan.impulses, tf, gravity);
   return true;
 }

@@ -21,8 +21,8 @@ struct Impulse {
 /// the lower bound on the total delta-v of the same boundary value problem.
 struct ManeuverPlan {
   std::vector<Impulse> impulses;
-  double dv_total = 0.0;        // sum of |dv_rtn| [m/s]
-  double dv_lower_bound = 0.0;  // [m/s], 0 when not computed
+  double dv_total_mps = 0.0;        // sum of |dv_rtn| [m/s]
+  double dv_lower_bound_mps = 0.0;  // [m/s], 0 when not computed
   astro::RelativeOrbitalElements roe_final_predicted = astro::RelativeOrbitalElements::Zero();  // [-]
 };
 

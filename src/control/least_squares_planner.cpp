@@ -81,11 +81,11 @@ core::Result<bool> plan_least_squares_into(LeastSquaresPlan& out, const astro::K
 
   out.nu = nu;
   out.plan.impulses.clear();
-  out.plan.dv_lower_bound = 0.0;
+  out.plan.dv_lower_bound_mps = 0.0;
   for (int k = 0; k < m; ++k) {
     out.plan.impulses.push_back(Impulse{burn_times[static_cast<std::size_t>(k)], v.segment<3>(3 * k)});
   }
-  out.plan.dv_total = total_delta_v(out.plan.impulses);
+  out.plan.dv_total_mps = total_delta_v(out.plan.impulses);
   out.plan.roe_final_predicted = predict_roe(chief_mean_t0, roe0, out.plan.impulses, tf, gravity);
   out.terminal_error = roe_target - out.plan.roe_final_predicted;
   return true;

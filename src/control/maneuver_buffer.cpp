@@ -147,7 +147,7 @@ core::Result<bool> ImpulseBuffer::buffer(const astro::KeplerianElements& chief_m
     if (p.dv_rtn.squaredNorm() > 0.0) result_.pieces.push_back(p);
   }
   result_.residual_roe_m = chief_mean_t0.a * remaining;
-  result_.dv_total = total_delta_v(result_.pieces);
+  result_.dv_total_mps = total_delta_v(result_.pieces);
   return true;
 }
 

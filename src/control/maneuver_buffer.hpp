@@ -55,7 +55,7 @@ struct BufferedManeuver {
   /// Net-effect error of the pieces against the planned impulse, Phi(t_K, .) frame, a*dROE [m]
   /// (from the quantisation of the last piece and dropped sub-minimum pieces).
   Eigen::Matrix<double, 6, 1> residual_roe_m = Eigen::Matrix<double, 6, 1>::Zero();
-  double dv_total = 0.0;  // sum of the pieces' |dv| [m/s]
+  double dv_total_mps = 0.0;  // sum of the pieces' |dv| [m/s]
 };
 
 /// The buffer with its storage sized once (at most kMaxBufferPieces pieces; fixed-capacity

@@ -216,8 +216,8 @@ core::Result<bool> ReachableSetPlanner::plan_into(ManeuverPlan& result, const as
                                                   const astro::RelativeOrbitalElements& roe_target, double t_earliest,
                                                   double tf) {
   result.impulses.clear();
-  result.dv_total = 0.0;
-  result.dv_lower_bound = 0.0;
+  result.dv_total_mps = 0.0;
+  result.dv_lower_bound_mps = 0.0;
   stats_ = ReachableSetStats{};
   if (auto ok = validate_inputs(chief_mean_t0, roe0, roe_target, t_earliest, tf); !ok) return ok.error();
 
@@ -242,7 +242,7 @@ core::Result<bool> ReachableSetPlanner::plan_into(ManeuverPlan& result, const as
   if (auto ok = exchange_iteration(pb); !ok) return ok.error();
   // lambda / h_max is feasible for every grid constraint: weak duality gives the bound.
   Workspace& w = *work_;
-  result.dv_lower_bound = std::max(0.0, pb.w_hat.dot(w.lambda) / w.h_max) * pb.dv_scale;
+  result.dv_lower_bound_mps = std::max(0.0, pb.w_hat.dot(w.lambda) / w.h_max) * pb.dv_scale;
   collect_candidates(pb);
   if (w.count == 0) return invalid("solver", "no contact time found");
   stats_.candidates = w.count;
@@ -660,8 +660,8 @@ core::Result<bool> ReachableSetPlanner::emit_plan(const Problem& pb, const astro
     result.impulses.push_back(Impulse{w.cand_t[at(j)], dv});
   }
   std::sort(result.impulses.begin(), result.impulses.end(), [](const Impulse& l, const Impulse& r) { return l.t < r.t; });
-  result.dv_total = total_delta_v(result.impulses);
-  if (!std::isfinite(result.dv_total)) return invalid("solver", "non-finite plan");
+  result.dv_total_mps = total_delta_v(result.impulses);
+  if (!std::isfinite(result.dv_total_mps)) return invalid("solver", "non-finite plan");
   const double miss_m = (reached - pb.w_hat).norm() * pb.w_norm;
   if (!(miss_m <= settings_.terminal_tolerance_m)) {
     return invalid("solver", "the plan misses the target by " + std::to_string(miss_m) + " m in the linear model");

@@ -169,7 +169,7 @@ double error_norm(const Vector6d& x, const StepWorkspace& w, const DormandPrince
 double step_after_acceptance(double err, double step, bool after_rejection, const DormandPrince87Settings& s) {
   double factor = err > 0.0 ? s.safety_factor * std::pow(err, kControlExponent) : s.max_step_growth;
   factor = std::min(factor, after_rejection ? 1.0 : s.max_step_growth);
-  return std::clamp(step * factor, s.min_step, s.max_step);
+  return std::clamp(step * factor, s.min_step_s, s.max_step_s);
 }
 
 // Retry after a rejected step of h: shrunk by safety err^(-1/8), at least min_step_shrink (also
@@ -178,7 +178,7 @@ double step_after_rejection(double err, double h, const DormandPrince87Settings&
   const double factor = std::isfinite(err)
                             ? std::max(s.min_step_shrink, s.safety_factor * std::pow(err, kControlExponent))
                             : s.min_step_shrink;
-  return std::max(std::abs(h) * std::min(factor, 1.0), s.min_step);
+  return std::max(std::abs(h) * std::min(factor, 1.0), s.min_step_s);
 }
 
 }  // namespace
@@ -197,14 +197,14 @@ core::Result<DormandPrince87> DormandPrince87::create(const DormandPrince87Setti
   if (s.relative_tolerance == 0.0 && s.absolute_tolerance == 0.0) {
     return core::Error{"absolute_tolerance", "must be > 0 when relative_tolerance is 0"};
   }
-  if (!(s.min_step > 0.0) || !std::isfinite(s.min_step)) {
-    return core::Error{"min_step", "must be a finite number > 0 s"};
+  if (!(s.min_step_s > 0.0) || !std::isfinite(s.min_step_s)) {
+    return core::Error{"min_step_s", "must be a finite number > 0 s"};
   }
-  if (!(s.max_step >= s.min_step) || !std::isfinite(s.max_step)) {
-    return core::Error{"max_step", "must be finite and >= min_step"};
+  if (!(s.max_step_s >= s.min_step_s) || !std::isfinite(s.max_step_s)) {
+    return core::Error{"max_step_s", "must be finite and >= min_step_s"};
   }
-  if (!(s.initial_step >= s.min_step && s.initial_step <= s.max_step)) {
-    return core::Error{"initial_step", "must be in [min_step, max_step]"};
+  if (!(s.initial_step_s >= s.min_step_s && s.initial_step_s <= s.max_step_s)) {
+    return core::Error{"initial_step_s", "must be in [min_step_s, max_step_s]"};
   }
   if (s.max_steps <= 0) return core::Error{"max_steps", "must be > 0"};
   if (!(s.safety_factor > 0.0 && s.safety_factor < 1.0)) {
@@ -230,7 +230,7 @@ core::Result<Vector6d> DormandPrince87::integrate(const Derivative& f, double t0
 
   const DormandPrince87Settings& s = settings_;
   const double direction = t1 > t0 ? 1.0 : -1.0;
-  double step = s.initial_step;  // magnitude the controller asks for [s]
+  double step = s.initial_step_s;  // magnitude the controller asks for [s]
   bool after_rejection = false;
   double t = t0;
   Vector6d x = x0;
@@ -261,8 +261,8 @@ core::Result<Vector6d> DormandPrince87::integrate(const Derivative& f, double t0
       after_rejection = false;
     } else {
       ++count.steps_rejected;
-      if (std::abs(h) <= s.min_step) {
-        return core::Error{"min_step", "step-size underflow: the local error estimate exceeds the "
+      if (std::abs(h) <= s.min_step_s) {
+        return core::Error{"min_step_s", "step-size underflow: the local error estimate exceeds the "
                                        "tolerance with a step of " + seconds(std::abs(h)) + " at " +
                                        at_time(t)};
       }

@@ -60,10 +60,10 @@ class Derivative {
 struct DormandPrince87Settings {
   double relative_tolerance = 1e-13;  // per step, of |r| and |v| [-]; 0 or in [1e-15, 1)
   double absolute_tolerance = 1e-9;   // per step, added to the scale: [m] for r, [m/s] for v
-  double initial_step = 10.0;         // magnitude of the first trial step of each call [s]
-  double min_step = 1e-6;   // shortest step the controller may choose [s] (the final, landing
+  double initial_step_s = 10.0;         // magnitude of the first trial step of each call [s]
+  double min_step_s = 1e-6;   // shortest step the controller may choose [s] (the final, landing
                             // step may be shorter); a rejected step at this size is an error
-  double max_step = 600.0;  // longest step [s]
+  double max_step_s = 600.0;  // longest step [s]
   int max_steps = 10'000'000;  // attempted (accepted + rejected) steps per integrate() call
   double safety_factor = 0.9;      // h_new = h * safety * err^(-1/8), in (0, 1)
   double max_step_growth = 4.0;    // largest factor h_new / h after an accepted step, > 1
@@ -90,12 +90,12 @@ const DormandPrince87Tableau& dormand_prince87_tableau();
 
 class DormandPrince87 {
  public:
-  /// Validates the settings; the error names the field ("relative_tolerance", "min_step", ...).
+  /// Validates the settings; the error names the field ("relative_tolerance", "min_step_s", ...).
   static core::Result<DormandPrince87> create(const DormandPrince87Settings& settings);
 
   /// Integrates dx/dt = f(t, x) from (t0, x0) to t1 (t1 < t0 integrates backward) and lands
   /// exactly on t1: the last step is cut to end there and the stages at c = 1 of that step are
-  /// evaluated at t1 itself. Each call starts again from settings.initial_step (no state is kept
+  /// evaluated at t1 itself. Each call starts again from settings.initial_step_s (no state is kept
   /// between calls, so results do not depend on call history).
   ///
   /// A step is accepted when err <= 1, with err the larger of |dr| / (atol + rtol max(|r_n|,
@@ -104,7 +104,7 @@ class DormandPrince87 {
   /// without growth right after a rejection, within [min_step, max_step].
   ///
   /// Errors: non-finite t0 ("t0"), t1 ("t1") or x0 ("x0"); a non-finite derivative ("f"); a step
-  /// rejected at min_step ("min_step", step-size underflow); more than max_steps attempts
+  /// rejected at min_step_s ("min_step_s", step-size underflow); more than max_steps attempts
   /// ("max_steps"). The message gives the time reached. `stats` (optional) receives the counts of
   /// this call, also when it fails.
   core::Result<Vector6d> integrate(const Derivative& f, double t0, const Vector6d& x0, double t1,

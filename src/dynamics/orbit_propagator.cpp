@@ -31,14 +31,14 @@ core::Error state_error(GpsTime t, const std::string& problem) {
 }  // namespace
 
 core::Result<OrbitPropagator> OrbitPropagator::create(ForceModel& forces, const PropagatorSettings& settings) {
-  if (!(settings.step > 0.0) || !std::isfinite(settings.step)) {
-    return core::Error{"step", "must be a finite number > 0 s"};
+  if (!(settings.step_s > 0.0) || !std::isfinite(settings.step_s)) {
+    return core::Error{"step_s", "must be a finite number > 0 s"};
   }
-  if (!(settings.min_step > 0.0) || settings.min_step > settings.step) {
-    return core::Error{"min_step", "must be > 0 s and <= step"};
+  if (!(settings.min_step_s > 0.0) || settings.min_step_s > settings.step_s) {
+    return core::Error{"min_step_s", "must be > 0 s and <= step_s"};
   }
-  if (settings.step * 1e-9 * static_cast<double>(kNs) < 1e-6) {
-    return core::Error{"step", "must be >= 1 us"};
+  if (settings.step_s * 1e-9 * static_cast<double>(kNs) < 1e-6) {
+    return core::Error{"step_s", "must be >= 1 us"};
   }
   OrbitPropagator propagator(forces, settings);
   if (settings.integrator == IntegratorKind::kDormandPrince87) {
@@ -85,8 +85,8 @@ core::Result<Vector6d> OrbitPropagator::advance(GpsTime from, const Vector6d& x0
     if (!result) return state_error(from, "reference integrator failed: " + result.error().message);
     return result;
   }
-  const std::int64_t h = to_nanos(settings_.step);
-  const std::int64_t h_min = to_nanos(settings_.min_step);
+  const std::int64_t h = to_nanos(settings_.step_s);
+  const std::int64_t h_min = to_nanos(settings_.min_step_s);
   Vector6d x = x0;
   GpsTime t = from;
   while (t < to) {

@@ -33,13 +33,13 @@ enum class IntegratorKind { kRk4Fixed, kRk4Dynamic, kDormandPrince87 };
 
 struct PropagatorSettings {
   IntegratorKind integrator = IntegratorKind::kRk4Dynamic;
-  double step = 10.0;     // RK4 step, the maximum for the dynamic step [s]
-  double min_step = 1.0;  // shortest dynamic step away from clustered events [s]
+  double step_s = 10.0;     // RK4 step, the maximum for the dynamic step [s]
+  double min_step_s = 1.0;  // shortest dynamic step away from clustered events [s]
   /// The reference integrator. Relative tolerance 1e-14 and steps of at most 30 s: at the
   /// integrator's own defaults (1e-13, up to 600 s) its along-track error reaches 5 cm after 10
   /// days (tests/dynamics/test_dormand_prince87.cpp), and over one day with the truth forces it
   /// still differs by ~0.5 mm from these settings, which agree with RK4 at 2 s to 0.15 mm.
-  DormandPrince87Settings reference = {.relative_tolerance = 1e-14, .max_step = 30.0};
+  DormandPrince87Settings reference = {.relative_tolerance = 1e-14, .max_step_s = 30.0};
 };
 
 enum class ManeuverFrame { kGcrf, kRtn };

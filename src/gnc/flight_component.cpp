@@ -172,13 +172,13 @@ void FlightComponent::enter(Mode mode) {
 }
 
 void FlightComponent::check_safety() {
-  if (safety_checked_ && since(last_safety_check_) < config_.safety.check_period) return;
+  if (safety_checked_ && since(last_safety_check_) < config_.safety.check_period_s) return;
   last_safety_check_ = now_;
   const auto assessment = safety::evaluate_passive_safety(estimate_->chief_mean, estimate_->roe_mean,
                                                           estimate_->roe_covariance, config_.safety, config_.gravity);
   if (!assessment.ok()) return;  // an estimate the check cannot use: keep the last verdict
   safety_checked_ = true;
-  safety_margin_m_ = assessment->min_separation_margin;
+  safety_margin_m_ = assessment->min_separation_margin_m;
   safety_violated_ = !assessment->safe;
 }
 

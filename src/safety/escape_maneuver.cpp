@@ -54,17 +54,17 @@ bool solve_for_direction(const astro::ControlInputMatrix& gamma, const RelativeO
 }  // namespace
 
 core::Result<EscapeSettings> validate(const EscapeSettings& s) {
-  if (!(s.epsilon >= 0.0) || !std::isfinite(s.epsilon)) return core::Error{"epsilon", "must be a finite number >= 0 m"};
-  if (!(s.da_target > 0.0) || !std::isfinite(s.da_target)) return core::Error{"da_target", "must be a finite number > 0 m"};
+  if (!(s.epsilon_m >= 0.0) || !std::isfinite(s.epsilon_m)) return core::Error{"epsilon_m", "must be a finite number >= 0 m"};
+  if (!(s.da_target_m > 0.0) || !std::isfinite(s.da_target_m)) return core::Error{"da_target_m", "must be a finite number > 0 m"};
   if (!(s.q_sigma >= 0.0) || s.q_sigma > 10.0) return core::Error{"q_sigma", "must be in [0, 10]"};
   if (!(s.horizon_orbits > 0.0) || s.horizon_orbits > 100.0) return core::Error{"horizon_orbits", "must be in (0, 100] orbits"};
   if (s.samples_per_orbit < 8 || s.samples_per_orbit > 100000) return core::Error{"samples_per_orbit", "must be in [8, 100000]"};
   if (s.psi_samples < 4 || s.psi_samples > kMaxPsiSamples) return core::Error{"psi_samples", "must be in [4, 720]"};
-  if (!(s.time_step >= 0.1) || !std::isfinite(s.time_step)) return core::Error{"time_step", "must be a finite number >= 0.1 s"};
+  if (!(s.time_step_s >= 0.1) || !std::isfinite(s.time_step_s)) return core::Error{"time_step_s", "must be a finite number >= 0.1 s"};
   if (!(s.search_window_orbits >= 0.0) || s.search_window_orbits > 10.0) {
     return core::Error{"search_window_orbits", "must be in [0, 10] orbits"};
   }
-  if (!(s.dv_sigma >= 0.0) || !std::isfinite(s.dv_sigma)) return core::Error{"dv_sigma", "must be a finite number >= 0 m/s"};
+  if (!(s.dv_sigma_mps >= 0.0) || !std::isfinite(s.dv_sigma_mps)) return core::Error{"dv_sigma_mps", "must be a finite number >= 0 m/s"};
   return s;
 }
 
@@ -84,7 +84,7 @@ core::Result<bool> check_escape_inputs(const astro::KeplerianElements& chief_mea
 // Condition (iii) is judged with the escape's margin, plane, horizon and sampling.
 PassiveSafetySettings safety_after_escape(const EscapeSettings& settings) {
   PassiveSafetySettings safety;
-  safety.epsilon = settings.epsilon;
+  safety.epsilon_m = settings.epsilon_m;
   safety.horizon_orbits = settings.horizon_orbits;
   safety.q_sigma = settings.q_sigma;
   safety.plane = settings.plane;
@@ -118,7 +118,7 @@ BurnPoint burn_point(const astro::KeplerianElements& chief_mean_t0, const Relati
 double da_after_burn(const BurnPoint& b, double a, const EscapeSettings& settings) {
   const double sign = b.roe_b[idx::kDlambda] > 0.0 ? -1.0 : 1.0;
   const double sigma_ada = a * std::sqrt(std::max(0.0, b.p_after(idx::kDa, idx::kDa)));
-  return sign * (settings.da_target + settings.q_sigma * sigma_ada) / a;
+  return sign * (settings.da_target_m + settings.q_sigma * sigma_ada) / a;
 }
 
 // The impulses meeting (i)-(ii), ranked by |dv| (fixed capacity: no allocation).
@@ -155,7 +155,7 @@ bool cannot_be_safe(const RelativeOrbitalElements& roe_after, double a, const Pa
   const double de = std::hypot(roe_after[idx::kDex], roe_after[idx::kDey]);
   const double di = std::hypot(roe_after[idx::kDix], roe_after[idx::kDiy]);
   return safety.plane == SafetyPlane::kRadialNormal &&
-         a * (std::min(de, di) + std::abs(roe_after[idx::kDa])) + 1.0 < safety.epsilon;
+         a * (std::min(de, di) + std::abs(roe_after[idx::kDa])) + 1.0 < safety.epsilon_m;
 }
 
 // (iii): the cheapest candidate that is passively safe at q sigma, written to `out` (true), or
@@ -176,7 +176,7 @@ core::Result<bool> first_safe_candidate(const BurnPoint& b, const CandidateSet& 
     out.covariance_after = b.p_after;
     out.safety_after = assessment.value();
     const RelativeOrbitalElements one_orbit = astro::j2_roe_stm(b.chief_b, period, gravity) * roe_after;
-    out.drift_per_orbit = a * (one_orbit[idx::kDlambda] - roe_after[idx::kDlambda]);
+    out.drift_per_orbit_m = a * (one_orbit[idx::kDlambda] - roe_after[idx::kDlambda]);
     return true;
   }
   return false;
@@ -195,13 +195,13 @@ core::Result<EscapeManeuver> plan_escape(const astro::KeplerianElements& chief_m
   const double a = chief_mean_t0.a;
   const double period = orbital_period(chief_mean_t0, gravity.mu);
   const double t_last = t_earliest + settings.search_window_orbits * period;
-  const Eigen::Matrix3d q_dv = Eigen::Matrix3d::Identity() * (settings.dv_sigma * settings.dv_sigma);
+  const Eigen::Matrix3d q_dv = Eigen::Matrix3d::Identity() * (settings.dv_sigma_mps * settings.dv_sigma_mps);
 
   // The first burn time t_earliest + k time_step with a safe candidate: "as soon as allowed".
   CandidateSet set;
   EscapeManeuver out;
   for (long k = 0;; ++k) {
-    const double t = t_earliest + settings.time_step * static_cast<double>(k);
+    const double t = t_earliest + settings.time_step_s * static_cast<double>(k);
     if (t > t_last + 1e-9) break;
     const BurnPoint b = burn_point(chief_mean_t0, roe, covariance, t, q_dv, gravity);
     solve_candidates(b, da_after_burn(b, a, settings), settings.psi_samples, set);

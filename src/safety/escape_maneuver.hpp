@@ -43,19 +43,19 @@
 namespace visors::safety {
 
 struct EscapeSettings {
-  double epsilon = 5.0;               // required separation after the burn, at q sigma [m]
-  double da_target = 5.0;             // |a da| after the burn, before the q-sigma allowance [m]
+  double epsilon_m = 5.0;             // required separation after the burn, at q sigma [m]
+  double da_target_m = 5.0;           // |a da| after the burn, before the q-sigma allowance [m]
   double q_sigma = 3.0;               // [-]
   double horizon_orbits = 1.5;        // safety horizon after the burn [chief orbits]
   SafetyPlane plane = SafetyPlane::kRadialNormal;
   int samples_per_orbit = 120;        // safety sampling of each candidate [-]
   int psi_samples = 180;              // common e/i directions tried in [0, pi) [-]
-  double time_step = 10.0;            // burn-time search step after t_earliest (>= 0.1) [s]
+  double time_step_s = 10.0;          // burn-time search step after t_earliest (>= 0.1) [s]
   double search_window_orbits = 1.0;  // latest burn: t_earliest + this many orbits [orbits]
-  double dv_sigma = 0.0;              // execution error, 1-sigma per RTN axis [m/s]
+  double dv_sigma_mps = 0.0;          // execution error, 1-sigma per RTN axis [m/s]
 };
 
-/// Each value checked; the error names the field ("epsilon", "da_target", ...).
+/// Each value checked; the error names the field ("epsilon_m", "da_target_m", ...).
 core::Result<EscapeSettings> validate(const EscapeSettings& settings);
 
 struct EscapeManeuver {
@@ -64,7 +64,7 @@ struct EscapeManeuver {
   astro::RelativeOrbitalElements roe_after = astro::RelativeOrbitalElements::Zero();   // at t, mean [-]
   RoeCovariance covariance_after = RoeCovariance::Zero();  // at t [-]
   SafetyAssessment safety_after;                    // from t over the horizon (times since t)
-  double drift_per_orbit = 0.0;  // change of a*dlambda over one orbit after the burn (J2 STM) [m]
+  double drift_per_orbit_m = 0.0;  // change of a*dlambda over one orbit after the burn (J2 STM) [m]
 };
 
 /// Plans the escape. chief_mean_t0: chief mean elements at t0; roe, covariance at t0 (mean ROE,

@@ -230,19 +230,19 @@ core::Result<SafetyAssessment> evaluate_passive_safety(const astro::KeplerianEle
   reduced.finish();
 
   SafetyAssessment out;
-  out.min_separation = nominal.f_best();
-  out.t_min = nominal.t_best();
-  out.sigma_at_t_min = model.at(out.t_min).sigma;
+  out.min_separation_m = nominal.f_best();
+  out.t_min_s = nominal.t_best();
+  out.sigma_at_t_min_m = model.at(out.t_min_s).sigma;
   // The refined margin minimum can never exceed the margin at t_min (guards the case where the
   // margin's grid minimum lies in a different lobe than the separation's).
-  out.min_separation_margin = reduced.f_best();
-  out.t_min_margin = reduced.t_best();
-  const double margin_at_t_min = out.min_separation - q * out.sigma_at_t_min;
-  if (margin_at_t_min < out.min_separation_margin) {
-    out.min_separation_margin = margin_at_t_min;
-    out.t_min_margin = out.t_min;
+  out.min_separation_margin_m = reduced.f_best();
+  out.t_min_margin_s = reduced.t_best();
+  const double margin_at_t_min = out.min_separation_m - q * out.sigma_at_t_min_m;
+  if (margin_at_t_min < out.min_separation_margin_m) {
+    out.min_separation_margin_m = margin_at_t_min;
+    out.t_min_margin_s = out.t_min_s;
   }
-  out.safe = out.min_separation_margin >= settings.epsilon;
+  out.safe = out.min_separation_margin_m >= settings.epsilon_m;
   return out;
 }
 

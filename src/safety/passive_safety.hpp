@@ -47,11 +47,11 @@ namespace visors::safety {
 using RoeCovariance = Eigen::Matrix<double, 6, 6>;  // dimensionless ROE^2
 
 struct SafetyAssessment {
-  double min_separation = 0.0;         // minimum over the horizon of the nominal separation [m]
-  double min_separation_margin = 0.0;  // minimum over the horizon of separation - q sigma [m]
-  double t_min = 0.0;                  // time of min_separation since t0 [s]
-  double t_min_margin = 0.0;           // time of min_separation_margin since t0 [s]
-  double sigma_at_t_min = 0.0;         // 1-sigma of the separation at t_min [m]
+  double min_separation_m = 0.0;         // minimum over the horizon of the nominal separation [m]
+  double min_separation_margin_m = 0.0;  // minimum over the horizon of separation - q sigma [m]
+  double t_min_s = 0.0;                  // time of min_separation since t0 [s]
+  double t_min_margin_s = 0.0;           // time of min_separation_margin since t0 [s]
+  double sigma_at_t_min_m = 0.0;         // 1-sigma of the separation at t_min [m]
   bool safe = false;                   // min_separation_margin >= epsilon
 };
 

@@ -10,15 +10,15 @@ namespace visors::safety {
 enum class SafetyPlane { kRadialNormal, kThreeDimensional };
 
 struct PassiveSafetySettings {
-  double epsilon = 5.0;            // minimum separation that is still safe [m]
+  double epsilon_m = 5.0;          // minimum separation that is still safe [m]
   double horizon_orbits = 1.5;     // T: look-ahead of the check [chief orbits]
   double q_sigma = 3.0;            // the separation is reduced by q standard deviations [-]
   SafetyPlane plane = SafetyPlane::kRadialNormal;
-  double check_period = 10.0;      // how often the flight component runs the check [s]
+  double check_period_s = 10.0;    // how often the flight component runs the check [s]
   int samples_per_orbit = 360;     // for the 3D (sampled) check [-]
 };
 
-/// Each value checked; the error names the field ("epsilon", "horizon_orbits", ...).
+/// Each value checked; the error names the field ("epsilon_m", "horizon_orbits", ...).
 core::Result<PassiveSafetySettings> validate(const PassiveSafetySettings& settings);
 
 }  // namespace visors::safety

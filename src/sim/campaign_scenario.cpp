@@ -219,22 +219,22 @@ core::Result<bool> read_gnc(const toml::table& root, CampaignScenario& s) {
   VISORS_TRY(leg, number_at(*g, sec, "transfer_leg_orbits", c.transfer.leg_orbits));
   VISORS_TRY(mpc, number_at(*g, sec, "mpc_period_s", c.science.mpc_period_s));
   VISORS_TRY(ls, number_at(*g, sec, "least_squares_window_s", c.science.least_squares_window_s));
-  VISORS_TRY(eps, number_at(*g, sec, "safety_epsilon_m", c.safety.epsilon));
+  VISORS_TRY(eps, number_at(*g, sec, "safety_epsilon_m", c.safety.epsilon_m));
   VISORS_TRY(q, number_at(*g, sec, "safety_q_sigma", c.safety.q_sigma));
   VISORS_TRY(horizon, number_at(*g, sec, "safety_horizon_orbits", c.safety.horizon_orbits));
-  VISORS_TRY(period, number_at(*g, sec, "safety_check_period_s", c.safety.check_period));
-  VISORS_TRY(da, number_at(*g, sec, "escape_da_target_m", c.escape.da_target));
+  VISORS_TRY(period, number_at(*g, sec, "safety_check_period_s", c.safety.check_period_s));
+  VISORS_TRY(da, number_at(*g, sec, "escape_da_target_m", c.escape.da_target_m));
   VISORS_TRY(north, bool_at(*g, sec, "north", c.science.geometry.north));
   c.standby_keeping.de_deadband_m = de;
   c.standby_keeping.dlambda_threshold_m = dl;
   c.transfer.leg_orbits = leg;
   c.science.mpc_period_s = mpc;
   c.science.least_squares_window_s = ls;
-  c.safety.epsilon = eps;
+  c.safety.epsilon_m = eps;
   c.safety.q_sigma = q;
   c.safety.horizon_orbits = horizon;
-  c.safety.check_period = period;
-  c.escape.da_target = da;
+  c.safety.check_period_s = period;
+  c.escape.da_target_m = da;
   c.science.geometry.north = north;
   if (auto ok = gnc::validate(c); !ok) return Error{"gnc (" + ok.error().field + ")", ok.error().message};
   return true;
@@ -318,8 +318,8 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
   out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\n\n",
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,
-                     g.science.mpc_period_s, g.science.least_squares_window_s, g.safety.epsilon, g.safety.q_sigma,
-                     g.safety.horizon_orbits, g.safety.check_period, g.escape.da_target, g.science.geometry.north);
+                     g.science.mpc_period_s, g.science.least_squares_window_s, g.safety.epsilon_m, g.safety.q_sigma,
+                     g.safety.horizon_orbits, g.safety.check_period_s, g.escape.da_target_m, g.science.geometry.north);
   out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\nnon_gnc_fault_t_s = {:.17g}\n\n",
                      s.fault.impulse_t_s, s.fault.impulse_dv_rtn_mps(0), s.fault.impulse_dv_rtn_mps(1),
                      s.fault.impulse_dv_rtn_mps(2), s.fault.non_gnc_fault_t_s);

@@ -358,7 +358,7 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
   summary["requirements"] = {{"lateral_error_m", requirements_.lateral_error_m},
                              {"lateral_velocity_mps", requirements_.lateral_velocity_mps},
                              {"focus_error_m", requirements_.focus_error_m},
-                             {"safety_epsilon_m", s.gnc.safety.epsilon}};
+                             {"safety_epsilon_m", s.gnc.safety.epsilon_m}};
   nlohmann::json dv;
   for (const SimulatedSpacecraft& v : vehicles_) {
     nlohmann::json by_mode;

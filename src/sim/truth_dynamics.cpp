@@ -14,7 +14,7 @@ core::Result<TruthDynamics> make_truth_dynamics(const CampaignScenario& s, const
   d.forces = std::make_unique<dynamics::ForceModel>(std::move(forces).value());
   dynamics::PropagatorSettings ps;
   ps.integrator = dynamics::IntegratorKind::kRk4Fixed;
-  ps.step = s.integration_step_s;
+  ps.step_s = s.integration_step_s;
   auto propagator = dynamics::OrbitPropagator::create(*d.forces, ps);
   if (!propagator.ok()) return propagator.error();
   d.propagator.emplace(std::move(propagator).value());

@@ -103,7 +103,7 @@ TEST_F(Propagate, CsvHasOneRecordPerOutputStep) {
   ASSERT_EQ(run(kTwoBody).exit_code, 0);
   const auto csv = lines("kepler.csv");
   ASSERT_EQ(csv.size(), 1u + 31u);  // header + 0, 100, ..., 3000 s
-  EXPECT_EQ(csv.front(), "time_utc,t_s,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s");
+  EXPECT_EQ(csv.front(), "time_utc,t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps");
   EXPECT_EQ(csv.back().substr(0, 42), "2024-10-01T00:50:00.000000,3000.000000000,");
 }
 

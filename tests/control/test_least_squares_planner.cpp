@@ -80,9 +80,9 @@ TEST(LeastSquaresPlanner, RegularisationTradesErrorForDeltaV) {
     s.relative_regularisation = rel;
     const auto p = plan_least_squares(chief, perturbed_science(a), science(a), 0.6 * T, times, s, kJ2);
     ASSERT_TRUE(p.ok());
-    EXPECT_LE(p->plan.dv_total, last_dv * (1.0 + 1e-12)) << rel;
+    EXPECT_LE(p->plan.dv_total_mps, last_dv * (1.0 + 1e-12)) << rel;
     EXPECT_GE(a * p->terminal_error.norm(), last_err) << rel;
-    last_dv = p->plan.dv_total;
+    last_dv = p->plan.dv_total_mps;
     last_err = a * p->terminal_error.norm();
   }
   EXPECT_GT(last_err, 0.01);  // nu at the scale of MM' leaves a visible error
@@ -117,7 +117,7 @@ TEST(LeastSquaresPlanner, DigestSingularTimesAndExactFourBurnSolution) {
   ASSERT_TRUE(p.ok());
   // exact four-burn solution, round-off; loose: measured 2.9e-13 m (2026-11), bound 1e-9 m ~3400x above. dv: digest Test 5.6-a prints 1e-4 m/s; measured 4.6e-5 m/s
   EXPECT_LT(a * p->terminal_error.norm(), 1e-9);
-  EXPECT_NEAR(p->plan.dv_total, 0.4257, 1e-4);
+  EXPECT_NEAR(p->plan.dv_total_mps, 0.4257, 1e-4);
 }
 
 // Acceptance (d), J2 numerical propagation (J2-only force model, Dormand-Prince 8(7)): 2 and 3
@@ -136,7 +136,7 @@ TEST(LeastSquaresPlanner, FineControlInJ2NumericalPropagation) {
     const astro::RelativeOrbitalElements final_roe =
         test::propagate_j2_numerically(chief, perturbed_science(a), p->plan.impulses, tf);
     const Eigen::Vector<double, 6> err_m = a * (final_roe - science(a));
-    std::cout << times.size() << " burns: dv " << p->plan.dv_total << " m/s, linear error "
+    std::cout << times.size() << " burns: dv " << p->plan.dv_total_mps << " m/s, linear error "
               << a * p->terminal_error.norm() << " m, numerical error [m] " << err_m.transpose() << " norm "
               << err_m.norm() << "\n";
     RecordProperty("numerical_error_m_" + std::to_string(times.size()), testing::PrintToString(err_m.norm()));

@@ -89,7 +89,7 @@ TEST(ManeuverBuffer, QuantisationResidualIsMillimetres) {
   ASSERT_TRUE(buffered.ok());
   const double residual = buffered->residual_roe_m.norm();
   std::printf("quantisation residual %.3f mm, dv total %.3f mm/s for a %.3f mm/s impulse\n", 1e3 * residual,
-              1e3 * buffered->dv_total, 1e3 * kLargeImpulse.dv_rtn.norm());
+              1e3 * buffered->dv_total_mps, 1e3 * kLargeImpulse.dv_rtn.norm());
   EXPECT_LT(residual, 2.0 * 1800.0 * 0.5 * 6e-5 / kMass);  // [m]
 }
 

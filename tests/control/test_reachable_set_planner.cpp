@@ -137,10 +137,10 @@ TEST(ReachableSetPlanner, TotalDeltaVWithinHalfPercentOfDenseGridReference) {
     // loose: residual measured 9.3e-12 m (2026-11), bound 1e-4 m ~1e7x above; duality gap: solver relative_gap_tolerance 1e-8 (conic_settings.hpp), loose: measured 3.1e-9 relative, bound 1e-6 ~320x above
     EXPECT_LT(ref.residual_m, 1e-4);
     EXPECT_NEAR(ref.primal_dv, ref.dv, 1e-6 * ref.dv);
-    EXPECT_NEAR(plan->dv_total, ref.dv, 5e-3 * ref.dv);
+    EXPECT_NEAR(plan->dv_total_mps, ref.dv, 5e-3 * ref.dv);
     std::printf("[ %-30s] planner %.6f m/s (%zu impulses, lb %.6f), dense %.6f m/s, gap %+.4f%%, %d exch\n", c.name,
-                plan->dv_total, plan->impulses.size(), plan->dv_lower_bound, ref.dv,
-                100.0 * (plan->dv_total / ref.dv - 1.0), planner.stats().exchange_iterations);
+                plan->dv_total_mps, plan->impulses.size(), plan->dv_lower_bound_mps, ref.dv,
+                100.0 * (plan->dv_total_mps / ref.dv - 1.0), planner.stats().exchange_iterations);
   }
 }
 
@@ -238,9 +238,9 @@ TEST(ReachableSetPlanner, TotalDeltaVWithinHalfPercentOfCvxoptDenseOptimum) {
     const double oracle = cvxopt_dense_optimum(c.roe0, c.target, t0, tf, dense);
     // oracle contract: returns -1 when unusable (comment below); measured 0.032 .. 0.347 m/s (2026-11)
     ASSERT_GT(oracle, 0.0) << "CVXOPT oracle failed";
-    EXPECT_NEAR(plan->dv_total, oracle, 5e-3 * oracle);
-    std::printf("[ %-30s] planner %.6f m/s, CVXOPT dense optimum %.6f m/s, gap %+.4f%%\n", c.name, plan->dv_total, oracle,
-                100.0 * (plan->dv_total / oracle - 1.0));
+    EXPECT_NEAR(plan->dv_total_mps, oracle, 5e-3 * oracle);
+    std::printf("[ %-30s] planner %.6f m/s, CVXOPT dense optimum %.6f m/s, gap %+.4f%%\n", c.name, plan->dv_total_mps, oracle,
+                100.0 * (plan->dv_total_mps / oracle - 1.0));
   }
 }
 
@@ -255,7 +255,7 @@ TEST(ReachableSetPlanner, PlanHasAtMostSixSortedImpulsesInsideTheWindow) {
     ASSERT_TRUE(plan.ok()) << plan.error().describe();
     EXPECT_LE(plan->impulses.size(), 6u);
     EXPECT_TRUE(validate_impulses(plan->impulses, t0, tf).ok());
-    EXPECT_NEAR(plan->dv_total, total_delta_v(plan->impulses), 1e-15);
+    EXPECT_NEAR(plan->dv_total_mps, total_delta_v(plan->impulses), 1e-15);
   }
 }
 
@@ -271,8 +271,8 @@ TEST(ReachableSetPlanner, LowerBoundIsTightOnThePlannerGrid) {
     ASSERT_TRUE(plan.ok()) << plan.error().describe();
     const Reference grid = dense_reference(c.roe0, c.target, t0, tf, planner.settings().grid_points);
     ASSERT_TRUE(grid.optimal);
-    EXPECT_LE(plan->dv_lower_bound, grid.dv * (1.0 + 1e-6));
-    EXPECT_GE(plan->dv_lower_bound, grid.dv * (1.0 - 1e-5));
+    EXPECT_LE(plan->dv_lower_bound_mps, grid.dv * (1.0 + 1e-6));
+    EXPECT_GE(plan->dv_lower_bound_mps, grid.dv * (1.0 - 1e-5));
   }
 }
 
@@ -285,8 +285,8 @@ TEST(ReachableSetPlanner, StandbyToScienceBetweenDecoupledBounds) {
   ReachableSetPlanner planner = make_planner();
   const auto plan = planner.plan(mission_chief(), standby(), science(), 0.0, 1.5 * period_s());
   ASSERT_TRUE(plan.ok()) << plan.error().describe();
-  EXPECT_LT(plan->dv_total, 0.32904 * 1.01);
-  EXPECT_GT(plan->dv_total, 0.21933 * 0.99);
+  EXPECT_LT(plan->dv_total_mps, 0.32904 * 1.01);
+  EXPECT_GT(plan->dv_total_mps, 0.21933 * 0.99);
 }
 
 TEST(ReachableSetPlanner, OnTargetGivesAnEmptyPlan) {

@@ -198,7 +198,7 @@ TEST(StochasticMpc, NamesPlannerSettingErrors) {
 
 struct ClosedLoopResult {
   double terminal_error_m = 0.0;  // a |droe_mean(tf) - target|
-  double dv_total = 0.0;
+  double dv_total_mps = 0.0;
   double dv_first_plan = 0.0;
   int replans = 0;
 };
@@ -219,7 +219,7 @@ ClosedLoopResult run_closed_loop(const astro::RelativeOrbitalElements& roe0, con
   dynamics::ForceModel forces = std::move(forces_r).value();
   dynamics::PropagatorSettings ps;
   ps.integrator = dynamics::IntegratorKind::kRk4Dynamic;
-  ps.step = 5.0;
+  ps.step_s = 5.0;
   auto prop_r = dynamics::OrbitPropagator::create(forces, ps);
   EXPECT_TRUE(prop_r.ok());
   if (!prop_r.ok()) return out;
@@ -266,7 +266,7 @@ ClosedLoopResult run_closed_loop(const astro::RelativeOrbitalElements& roe0, con
     for (const Impulse& imp : stepped->remaining) {
       if (imp.t >= t && (imp.t < t_next || (last && imp.t <= tf))) {
         burns.push_back({epoch + imp.t, imp.dv_rtn, dynamics::ManeuverFrame::kRtn});
-        out.dv_total += imp.dv_rtn.norm();
+        out.dv_total_mps += imp.dv_rtn.norm();
       }
     }
     const auto xc_next = prop.propagate_to(epoch + t, xc, epoch + t_next);
@@ -293,17 +293,17 @@ ClosedLoopResult run_closed_loop(const astro::RelativeOrbitalElements& roe0, con
 TEST(StochasticMpc, ClosedLoopJ2ReconfigurationReachesTargetToCentimetres) {
   const ClosedLoopResult r = run_closed_loop(standby(), science(), 0.75 * period_s(), 0.002);
   std::printf("closed loop standby->science 0.75 orbit: terminal %.4f m, dv %.5f m/s (first plan %.5f), %d plans\n",
-              r.terminal_error_m, r.dv_total, r.dv_first_plan, r.replans);
+              r.terminal_error_m, r.dv_total_mps, r.dv_first_plan, r.replans);
   EXPECT_LT(r.terminal_error_m, 0.10);
   // measured regression bound: dv_total / dv_first_plan = 1.00 (0.285 m/s, 2026-11); bound 1.05
-  EXPECT_LT(r.dv_total, 1.05 * r.dv_first_plan);  // the corrections are small
+  EXPECT_LT(r.dv_total_mps, 1.05 * r.dv_first_plan);  // the corrections are small
 }
 
 // Small science-orbit trim over half an orbit.
 TEST(StochasticMpc, ClosedLoopJ2TrimReachesTargetToCentimetres) {
   const ClosedLoopResult r = run_closed_loop(science(), roe_m(-2.0, 40.0, -33.5, 6.5, -18.0, 3.5), 0.5 * period_s(), 0.002);
   std::printf("closed loop science trim 0.5 orbit: terminal %.4f m, dv %.5f m/s (first plan %.5f), %d plans\n",
-              r.terminal_error_m, r.dv_total, r.dv_first_plan, r.replans);
+              r.terminal_error_m, r.dv_total_mps, r.dv_first_plan, r.replans);
   EXPECT_LT(r.terminal_error_m, 0.02);
 }
 

@@ -57,7 +57,7 @@ TEST(Transfer, StandbyToScienceIsPassivelySafeAtEveryInstant) {
     const astro::KeplerianElements chief_leg = astro::propagate_mean_j2(kChief, static_cast<double>(k) * leg);
     const auto plan = plan_closed_form(chief_leg, roe, (*waypoints)[k], leg);
     ASSERT_TRUE(plan.ok()) << "leg " << k << ": " << plan.error().describe();
-    dv_total += plan->dv_total;
+    dv_total += plan->dv_total_mps;
     for (double t = 0.0; t <= leg; t += 10.0) {
       std::vector<Impulse> done;
       for (const Impulse& i : plan->impulses) {

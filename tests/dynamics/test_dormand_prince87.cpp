@@ -241,7 +241,7 @@ TEST(DormandPrince87, TwoBodyNearCircularTenDaysShortSteps) {
   const KeplerianElements el = orbit(0.004);
   const double t1 = 10.0 * kSecondsPerDay;
   DormandPrince87Settings s;
-  s.max_step = 45.0;
+  s.max_step_s = 45.0;
   const Outcome r = propagate(integrator(s), el, 0.0, t1);
   const double error = position_error(r, el, t1);
   std::printf("[ measured ] e = 0.004, 10 days, max_step 45 s: position error %.3e m, %ld steps\n",
@@ -312,9 +312,9 @@ TEST(DormandPrince87, FixedStepConvergenceIsEighthOrder) {
   for (int n : {32, 64, 128}) {
     const double h = t1 / n;
     DormandPrince87Settings s;
-    s.min_step = h;
-    s.initial_step = h;
-    s.max_step = h;
+    s.min_step_s = h;
+    s.initial_step_s = h;
+    s.max_step_s = h;
     s.relative_tolerance = 0.5;
     s.absolute_tolerance = 1e9;
     const Outcome r = propagate(integrator(s), el, 0.0, t1);
@@ -463,13 +463,13 @@ TEST(DormandPrince87Settings, EachInvalidFieldIsNamed) {
          s.absolute_tolerance = 0.0;
          s.relative_tolerance = 0.0;
        }},
-      {"min_step", [](DormandPrince87Settings& s) { s.min_step = 0.0; }},
-      {"min_step", [](DormandPrince87Settings& s) { s.min_step = kNaN; }},
-      {"max_step", [](DormandPrince87Settings& s) { s.max_step = 1e-7; }},
-      {"max_step", [](DormandPrince87Settings& s) { s.max_step = kInf; }},
-      {"initial_step", [](DormandPrince87Settings& s) { s.initial_step = 601.0; }},
-      {"initial_step", [](DormandPrince87Settings& s) { s.initial_step = 1e-7; }},
-      {"initial_step", [](DormandPrince87Settings& s) { s.initial_step = kNaN; }},
+      {"min_step_s", [](DormandPrince87Settings& s) { s.min_step_s = 0.0; }},
+      {"min_step_s", [](DormandPrince87Settings& s) { s.min_step_s = kNaN; }},
+      {"max_step_s", [](DormandPrince87Settings& s) { s.max_step_s = 1e-7; }},
+      {"max_step_s", [](DormandPrince87Settings& s) { s.max_step_s = kInf; }},
+      {"initial_step_s", [](DormandPrince87Settings& s) { s.initial_step_s = 601.0; }},
+      {"initial_step_s", [](DormandPrince87Settings& s) { s.initial_step_s = 1e-7; }},
+      {"initial_step_s", [](DormandPrince87Settings& s) { s.initial_step_s = kNaN; }},
       {"max_steps", [](DormandPrince87Settings& s) { s.max_steps = 0; }},
       {"safety_factor", [](DormandPrince87Settings& s) { s.safety_factor = 1.0; }},
       {"safety_factor", [](DormandPrince87Settings& s) { s.safety_factor = 0.0; }},
@@ -529,14 +529,14 @@ TEST(DormandPrince87, MaxStepsIsHonoured) {
 // step) ends in a step-size underflow error, not an endless loop.
 TEST(DormandPrince87, StepUnderflowIsAnError) {
   DormandPrince87Settings s;
-  s.min_step = 1.0;
+  s.min_step_s = 1.0;
   const auto f = [](double t, const Vector6d&) -> Vector6d {
     return Vector6d::Constant(1e3 * std::cos(50.0 * t));
   };
   IntegrationStats stats;
   const auto x = integrator(s).integrate(f, 0.0, Vector6d::Zero(), 100.0, &stats);
   ASSERT_FALSE(x.ok());
-  EXPECT_EQ(x.error().field, "min_step");
+  EXPECT_EQ(x.error().field, "min_step_s");
   // measured regression bound: 3 rejected steps (2026-11); bound 20
   EXPECT_LT(stats.steps_rejected, 20);
 }

@@ -193,7 +193,7 @@ Eigen::Vector3d mismatch_after_one_orbit(ForceModelConfig truth_config, ForceMod
   const core::StateVector x0 = mission_chief(truth.gm());
   const GpsTime t1 = kEpoch + 5677.0;  // one orbital period of a = R_E + 500 km
   PropagatorSettings settings;
-  settings.step = 5.0;
+  settings.step_s = 5.0;
   OrbitPropagator tp = OrbitPropagator::create(truth, settings).value();
   OrbitPropagator op = OrbitPropagator::create(onboard, settings).value();
   const core::StateVector xt = tp.propagate_to(kEpoch, x0, t1).value();

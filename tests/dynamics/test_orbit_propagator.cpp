@@ -52,8 +52,8 @@ PropagatorSettings reference_settings() {
 PropagatorSettings rk4_settings(double step, IntegratorKind kind = IntegratorKind::kRk4Dynamic) {
   PropagatorSettings s;
   s.integrator = kind;
-  s.step = step;
-  s.min_step = std::min(1.0, step);
+  s.step_s = step;
+  s.min_step_s = std::min(1.0, step);
   return s;
 }
 
@@ -233,7 +233,7 @@ TEST(OrbitPropagator, OutputsLandExactlyOnRequestedTimes) {
 TEST(OrbitPropagator, DynamicStepSplitsTheRemainderEvenly) {
   ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   PropagatorSettings settings = rk4_settings(10.0);
-  settings.min_step = 6.0;
+  settings.min_step_s = 6.0;
   OrbitPropagator propagator = make_propagator(forces, settings);
   ASSERT_TRUE(propagator.propagate_to(kEpoch, astro::cartesian_from_keplerian(mission_chief(), forces.gm()),
                                       kEpoch + 25.0).ok());
@@ -277,7 +277,7 @@ TEST(OrbitPropagator, RejectsANonFiniteState) {
 
 TEST(OrbitPropagator, RejectsANonPositiveStep) {
   ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
-  EXPECT_EQ(OrbitPropagator::create(forces, rk4_settings(0.0)).error().field, "step");
+  EXPECT_EQ(OrbitPropagator::create(forces, rk4_settings(0.0)).error().field, "step_s");
 }
 
 }  // namespace

@@ -69,14 +69,14 @@ TEST(EscapeManeuver, FiveMetresOfDaDriftFortySevenMetresPerOrbit) {
   ASSERT_TRUE(escape.ok()) << escape.error().describe();
   // exact by construction (target a*da = -5 m) and analytic 3 pi a da (comment above); measured 0 and 7.1e-15 m (2026-11); drift bound loose (~1e8x)
   EXPECT_NEAR(chief.a * escape->roe_after[idx::kDa], -5.0, 1e-9);
-  EXPECT_NEAR(escape->drift_per_orbit, 3.0 * core::kPi * 5.0, 1e-6);
+  EXPECT_NEAR(escape->drift_per_orbit_m, 3.0 * core::kPi * 5.0, 1e-6);
   const auto j2 = plan_escape(chief, science_roe(chief.a), RoeCovariance::Zero(), 0.0, EscapeSettings{});
   ASSERT_TRUE(j2.ok());
   // target a*da exact by construction; measured 0 (2026-11)
   EXPECT_NEAR(chief.a * j2->roe_after[idx::kDa], -5.0, 1e-9);
   // issue text: ~47 m per orbit with J2; measured regression bound: 0.18 m (2026-11); bound 0.3 m
-  EXPECT_NEAR(j2->drift_per_orbit, 47.0, 0.3);
-  RecordProperty("j2_drift_per_orbit_m", std::to_string(j2->drift_per_orbit));
+  EXPECT_NEAR(j2->drift_per_orbit_m, 47.0, 0.3);
+  RecordProperty("j2_drift_per_orbit_m", std::to_string(j2->drift_per_orbit_m));
 }
 
 // A deputy behind the chief (dlambda < 0) escapes with da > 0, drifting further behind.
@@ -88,7 +88,7 @@ TEST(EscapeManeuver, DriftIsAwayFromTheChief) {
   ASSERT_TRUE(escape.ok());
   // target a*da exact by construction; issue text ~47 m per orbit: measured a*da error 0, drift -47.1 m (2026-11); bound -46 m
   EXPECT_NEAR(chief.a * escape->roe_after[idx::kDa], 5.0, 1e-9);
-  EXPECT_LT(escape->drift_per_orbit, -46.0);
+  EXPECT_LT(escape->drift_per_orbit_m, -46.0);
 }
 
 // Conditions (ii)-(iii) with uncertainty: after the burn the e/i vectors are parallel, the RN
@@ -99,7 +99,7 @@ TEST(EscapeManeuver, SeparationAfterEscapeExceedsEpsilonPlusQSigma) {
   const auto chief = mission_chief();
   const RoeCovariance p = test_covariance(chief.a);
   EscapeSettings s;
-  s.epsilon = 10.0;
+  s.epsilon_m = 10.0;
   const double t_earliest = 300.0;
   const auto escape = plan_escape(chief, science_roe(chief.a), p, t_earliest, s);
   ASSERT_TRUE(escape.ok()) << escape.error().describe();
@@ -109,15 +109,15 @@ TEST(EscapeManeuver, SeparationAfterEscapeExceedsEpsilonPlusQSigma) {
   EXPECT_LT(std::abs(cross2(after)) * chief.a * chief.a, 1e-9);
   EXPECT_NEAR(chief.a * after[idx::kDa], -(5.0 + 3.0 * 0.3), 1e-9);
   PassiveSafetySettings check;
-  check.epsilon = s.epsilon;
+  check.epsilon_m = s.epsilon_m;
   const auto chief_b = astro::propagate_mean_j2(chief, t_earliest);
   const auto r = evaluate_passive_safety(chief_b, after, escape->covariance_after, check);
   ASSERT_TRUE(r.ok());
   // requirement: margin >= epsilon, q = 3 (digest sec. 6.3, docs/conventions.md Safety); measured margin 16.2 m >= 10 m, min 17.6 m >= 11.3 m (2026-11)
-  EXPECT_GE(r->min_separation_margin, s.epsilon);
-  EXPECT_GE(r->min_separation, s.epsilon + 3.0 * r->sigma_at_t_min);
-  RecordProperty("after_rn_min_m", std::to_string(r->min_separation));
-  RecordProperty("after_margin_m", std::to_string(r->min_separation_margin));
+  EXPECT_GE(r->min_separation_margin_m, s.epsilon_m);
+  EXPECT_GE(r->min_separation_m, s.epsilon_m + 3.0 * r->sigma_at_t_min_m);
+  RecordProperty("after_rn_min_m", std::to_string(r->min_separation_m));
+  RecordProperty("after_margin_m", std::to_string(r->min_separation_margin_m));
 }
 
 // Digest Test 6-b: escape from the science orbit burned at u = phi_e + pi = 352.11 deg, target
@@ -138,7 +138,7 @@ TEST(EscapeManeuver, DigestTest6bFromTheScienceOrbit) {
   EXPECT_NEAR(chief.a * std::hypot(escape->roe_after[idx::kDex], escape->roe_after[idx::kDey]), 37.22, 0.05);
   RecordProperty("test6b_dv_mm_s", std::to_string(dv.x() * 1e3) + " " + std::to_string(dv.y() * 1e3) + " " +
                                        std::to_string(dv.z() * 1e3));
-  RecordProperty("test6b_rn_min_m", std::to_string(escape->safety_after.min_separation));
+  RecordProperty("test6b_rn_min_m", std::to_string(escape->safety_after.min_separation_m));
 }
 
 // The impulse in the exact two-body model: deputy elements from the mean ROE, Cartesian state,
@@ -262,7 +262,7 @@ TEST(EscapeManeuver, DriftConfirmedByNumericalJ2Propagation) {
   EXPECT_NEAR(chief.a * per_orbit[0][idx::kDa], -5.0, 0.02);
   RecordProperty("numeric_rn_min_m", std::to_string(rn_min));
   // requirement: epsilon = 5 m (docs/conventions.md Safety); measured 18.1 m (2026-11)
-  EXPECT_GT(rn_min, EscapeSettings{}.epsilon);
+  EXPECT_GT(rn_min, EscapeSettings{}.epsilon_m);
 }
 
 // No single impulse below 10 m/s can make a 100 km-safe orbit from the science orbit: the
@@ -270,7 +270,7 @@ TEST(EscapeManeuver, DriftConfirmedByNumericalJ2Propagation) {
 TEST(EscapeManeuver, NoSafeCandidateIsAnError) {
   const auto chief = mission_chief();
   EscapeSettings s;
-  s.epsilon = 1e5;
+  s.epsilon_m = 1e5;
   s.search_window_orbits = 0.05;
   const auto escape = plan_escape(chief, science_roe(chief.a), RoeCovariance::Zero(), 0.0, s);
   ASSERT_FALSE(escape.ok());
@@ -283,8 +283,8 @@ TEST(EscapeManeuver, BadInputNamesTheField) {
   EXPECT_EQ(plan_escape(chief, roe, RoeCovariance::Zero(), std::nan(""), EscapeSettings{}).error().field, "t_earliest");
   EXPECT_EQ(plan_escape(chief, roe, RoeCovariance::Zero(), -1.0, EscapeSettings{}).error().field, "t_earliest");
   EscapeSettings s;
-  s.da_target = 0.0;
-  EXPECT_EQ(plan_escape(chief, roe, RoeCovariance::Zero(), 0.0, s).error().field, "da_target");
+  s.da_target_m = 0.0;
+  EXPECT_EQ(plan_escape(chief, roe, RoeCovariance::Zero(), 0.0, s).error().field, "da_target_m");
   s = EscapeSettings{};
   s.psi_samples = 1;
   EXPECT_EQ(plan_escape(chief, roe, RoeCovariance::Zero(), 0.0, s).error().field, "psi_samples");

@@ -100,8 +100,8 @@ TEST(PassiveSafety, HorizonMinimumEqualsClosedFormForCircularKeplerianChief) {
   const auto r = evaluate_passive_safety(chief, roe, RoeCovariance::Zero(), PassiveSafetySettings{}, no_j2);
   ASSERT_TRUE(r.ok()) << r.error().describe();
   // issue acceptance level 1e-6 m (test above; identical model here); measured 3.6e-15 m (2026-11)
-  EXPECT_NEAR(r->min_separation, rn_separation_closed_form(roe, chief.a), 1e-6);
-  RecordProperty("horizon_vs_closed_form_m", sci(r->min_separation - rn_separation_closed_form(roe, chief.a)));
+  EXPECT_NEAR(r->min_separation_m, rn_separation_closed_form(roe, chief.a), 1e-6);
+  RecordProperty("horizon_vs_closed_form_m", sci(r->min_separation_m - rn_separation_closed_form(roe, chief.a)));
 }
 
 // Dense sampling (every 0.02 s) of the same model the evaluation uses: J2 STM from t0, mean chief
@@ -137,19 +137,19 @@ TEST(PassiveSafety, HorizonMinimumMatchesDenseSamplingOfTheModel) {
   const auto rn = evaluate_passive_safety(chief, roe, RoeCovariance::Zero(), s);
   ASSERT_TRUE(rn.ok());
   // issue acceptance 1e-6 m vs dense sampling (grid error < 1e-8 m); measured 2.5e-11 m (2026-11)
-  EXPECT_NEAR(rn->min_separation, ref_rn, 1e-6);
+  EXPECT_NEAR(rn->min_separation_m, ref_rn, 1e-6);
   // loose: measured 9.5e-4 s (2026-11), bound 0.5 s ~500x above (25x the 0.02 s scan step)
-  EXPECT_NEAR(rn->t_min, t_ref, 0.5);
+  EXPECT_NEAR(rn->t_min_s, t_ref, 0.5);
   s.plane = SafetyPlane::kThreeDimensional;
   const double ref_3d = sampled_model_minimum(chief, roe, horizon, false);
   const auto d3 = evaluate_passive_safety(chief, roe, RoeCovariance::Zero(), s);
   ASSERT_TRUE(d3.ok());
   // issue acceptance 1e-6 m vs dense sampling; measured 2.5e-9 m (2026-11). 3D >= RN by definition: measured 18.74 m >= 18.73 m
-  EXPECT_NEAR(d3->min_separation, ref_3d, 1e-6);
-  EXPECT_GE(d3->min_separation, rn->min_separation);
-  RecordProperty("science_3d_min_m", std::to_string(d3->min_separation));
-  RecordProperty("model_vs_dense_rn_m", sci(rn->min_separation - ref_rn));
-  RecordProperty("model_vs_dense_3d_m", sci(d3->min_separation - ref_3d));
+  EXPECT_NEAR(d3->min_separation_m, ref_3d, 1e-6);
+  EXPECT_GE(d3->min_separation_m, rn->min_separation_m);
+  RecordProperty("science_3d_min_m", std::to_string(d3->min_separation_m));
+  RecordProperty("model_vs_dense_rn_m", sci(rn->min_separation_m - ref_rn));
+  RecordProperty("model_vs_dense_3d_m", sci(d3->min_separation_m - ref_3d));
 }
 
 // Mission standby orbit a*[0,0,0,200,0,200] m: parallel e/i of 200 m, RN minimum ~200 m.
@@ -160,9 +160,9 @@ TEST(PassiveSafety, StandbyOrbitIsSafeAtAbout200Metres) {
   const auto r = evaluate_passive_safety(chief, standby_roe(chief.a), RoeCovariance::Zero(), PassiveSafetySettings{});
   ASSERT_TRUE(r.ok());
   // measured regression bound: 0.80 m (2026-11); bound 1.5 m
-  EXPECT_NEAR(r->min_separation, 200.0, 1.5);
+  EXPECT_NEAR(r->min_separation_m, 200.0, 1.5);
   EXPECT_TRUE(r->safe);
-  RecordProperty("standby_rn_min_m", std::to_string(r->min_separation));
+  RecordProperty("standby_rn_min_m", std::to_string(r->min_separation_m));
 }
 
 // Mission science orbit. Digest Test 6-a: closed form 18.916 m (da ignored), near-circular
@@ -175,9 +175,9 @@ TEST(PassiveSafety, ScienceOrbitRnSeparationAbout19Metres) {
   EXPECT_NEAR(rn_separation_closed_form(roe, chief.a), 18.91598, 1e-4);  // digest Test 6-a
   const auto r = evaluate_passive_safety(chief, roe, RoeCovariance::Zero(), PassiveSafetySettings{});
   ASSERT_TRUE(r.ok());
-  EXPECT_NEAR(r->min_separation, 18.827, 0.2);
+  EXPECT_NEAR(r->min_separation_m, 18.827, 0.2);
   EXPECT_TRUE(r->safe);
-  RecordProperty("science_rn_min_m", std::to_string(r->min_separation));
+  RecordProperty("science_rn_min_m", std::to_string(r->min_separation_m));
 }
 
 // Perpendicular e/i vectors: the radial and normal separations vanish together twice per orbit,
@@ -189,7 +189,7 @@ TEST(PassiveSafety, PerpendicularEiVectorsAreUnsafe) {
                                          RoeCovariance::Zero(), PassiveSafetySettings{});
   ASSERT_TRUE(r.ok());
   // analytic 0 m for perpendicular e/i (near-circular closed form); measured regression bound: 0.36 m (2026-11); bound 1 m
-  EXPECT_LT(r->min_separation, 1.0);
+  EXPECT_LT(r->min_separation_m, 1.0);
   EXPECT_FALSE(r->safe);
 }
 
@@ -200,7 +200,7 @@ TEST(PassiveSafety, SmallParallelOrbitBelowEpsilonIsUnsafe) {
                                          RoeCovariance::Zero(), PassiveSafetySettings{});
   ASSERT_TRUE(r.ok());
   // analytic min(|a de|, |a di|) = 4 m; measured regression bound: 0.016 m (2026-11); bound 0.05 m
-  EXPECT_NEAR(r->min_separation, 4.0, 0.05);
+  EXPECT_NEAR(r->min_separation_m, 4.0, 0.05);
   EXPECT_FALSE(r->safe);
 }
 
@@ -212,10 +212,10 @@ TEST(PassiveSafety, LargeUncertaintyMakesTheScienceOrbitUnsafe) {
   const auto r = evaluate_passive_safety(chief, science_roe(chief.a), p, PassiveSafetySettings{});
   ASSERT_TRUE(r.ok());
   // nominal ~18.8 m (digest Test 6-a): measured 18.74 m > 18 m; requirement epsilon = 5 m (docs/conventions.md Safety): measured margin 3.44 m (2026-11)
-  EXPECT_GT(r->min_separation, 18.0);
-  EXPECT_LT(r->min_separation_margin, 5.0);
+  EXPECT_GT(r->min_separation_m, 18.0);
+  EXPECT_LT(r->min_separation_margin_m, 5.0);
   // definition margin = min over t of (d - q sigma), q = 3 (docs/conventions.md), 1e-9 round-off; measured 3.44 m <= 3.79 m (2026-11)
-  EXPECT_LE(r->min_separation_margin, r->min_separation - 3.0 * r->sigma_at_t_min + 1e-9);
+  EXPECT_LE(r->min_separation_margin_m, r->min_separation_m - 3.0 * r->sigma_at_t_min_m + 1e-9);
   EXPECT_FALSE(r->safe);
 }
 
@@ -249,7 +249,7 @@ TEST(PassiveSafety, QSigmaMarginAgreesWithMonteCarlo) {
   s.samples_per_orbit = 90;
   const auto nominal = evaluate_passive_safety(chief, roe, p, s);
   ASSERT_TRUE(nominal.ok());
-  const double sigma = nominal->sigma_at_t_min;
+  const double sigma = nominal->sigma_at_t_min_m;
   // precondition for the MC tolerances below; measured sigma 0.45 m (2026-11)
   ASSERT_GT(sigma, 0.1);
   const Eigen::Matrix<double, 6, 6> l = p.llt().matrixL();
@@ -264,20 +264,20 @@ TEST(PassiveSafety, QSigmaMarginAgreesWithMonteCarlo) {
     const RelativeOrbitalElements draw = roe + l * z;
     const auto r = evaluate_passive_safety(chief, draw, RoeCovariance::Zero(), s);
     ASSERT_TRUE(r.ok());
-    sum += r->min_separation;
-    sum2 += r->min_separation * r->min_separation;
-    if (r->min_separation < nominal->min_separation - 2.0 * sigma) ++below2;
-    if (r->min_separation < nominal->min_separation_margin) ++below3;
+    sum += r->min_separation_m;
+    sum2 += r->min_separation_m * r->min_separation_m;
+    if (r->min_separation_m < nominal->min_separation_m - 2.0 * sigma) ++below2;
+    if (r->min_separation_m < nominal->min_separation_margin_m) ++below3;
   }
   const double mean = sum / n;
   const double std_mc = std::sqrt(sum2 / n - mean * mean);
   RecordProperty("mc_std_over_sigma", std::to_string(std_mc / sigma));
   RecordProperty("mc_below_3sigma_fraction", std::to_string(static_cast<double>(below3) / n));
   RecordProperty("mc_below_2sigma_fraction", std::to_string(static_cast<double>(below2) / n));
-  RecordProperty("mc_mean_minus_nominal_over_sigma", std::to_string((mean - nominal->min_separation) / sigma));
+  RecordProperty("mc_mean_minus_nominal_over_sigma", std::to_string((mean - nominal->min_separation_m) / sigma));
   RecordProperty("linear_sigma_m", std::to_string(sigma));
   EXPECT_NEAR(std_mc / sigma, 1.0, 0.05) << "MC std " << std_mc << " m, linear sigma " << sigma << " m";
-  EXPECT_NEAR(mean, nominal->min_separation, 0.1 * sigma);
+  EXPECT_NEAR(mean, nominal->min_separation_m, 0.1 * sigma);
   EXPECT_NEAR(static_cast<double>(below2) / n, 0.02275, 0.008);
   EXPECT_LE(static_cast<double>(below3) / n, 0.005);
 }
@@ -296,9 +296,9 @@ TEST(PassiveSafety, SigmaIsTheGradientOfTheMinimumAlongTheCovariance) {
   step[astro::roe::kDix] = 0.01 / chief.a;
   const auto plus = evaluate_passive_safety(chief, roe + step, RoeCovariance::Zero(), PassiveSafetySettings{});
   const auto minus = evaluate_passive_safety(chief, roe - step, RoeCovariance::Zero(), PassiveSafetySettings{});
-  const double gradient = (plus->min_separation - minus->min_separation) / 0.02;  // [m per m]
+  const double gradient = (plus->min_separation_m - minus->min_separation_m) / 0.02;  // [m per m]
   // central difference with 0.01 m step; loose: measured 1.1e-8 (2026-11), bound 1e-4 ~9000x above
-  EXPECT_NEAR(r->sigma_at_t_min, std::abs(gradient), 1e-4);
+  EXPECT_NEAR(r->sigma_at_t_min_m, std::abs(gradient), 1e-4);
 }
 
 TEST(PassiveSafety, BadInputNamesTheField) {

@@ -89,12 +89,12 @@ TEST(CampaignScenario, ResolvedScenarioReadsBack) {
   s.seed = 77;
   s.observations = 4;
   s.fault.impulse_t_s = 1234.5;
-  s.gnc.safety.epsilon = 6.5;
+  s.gnc.safety.epsilon_m = 6.5;
   const auto back = campaign_from_toml(campaign_to_toml(s)).value();
   EXPECT_EQ(back.seed, 77U);
   EXPECT_EQ(back.observations, 4);
   EXPECT_EQ(back.fault.impulse_t_s, 1234.5);
-  EXPECT_EQ(back.gnc.safety.epsilon, 6.5);
+  EXPECT_EQ(back.gnc.safety.epsilon_m, 6.5);
   EXPECT_EQ(back.chief_mean.a, s.chief_mean.a);
 }
 

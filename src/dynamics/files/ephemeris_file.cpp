@@ -13,7 +13,7 @@ std::string utc(core::GpsTime t) { return t.format(core::TimeScale::kUtc, kEpoch
 }  // namespace
 
 void write_ephemeris_csv(std::ostream& out, std::span<const EphemerisRecord> records) {
-  out << "time_utc,t_s,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s\n";
+  out << "time_utc,t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps\n";
   if (records.empty()) return;
   const core::GpsTime t0 = records.front().t;
   char line[320];

@@ -24,7 +24,7 @@ struct OemHeader {
   core::GpsTime creation;             // CREATION_DATE (UTC); the caller passes the wall clock
 };
 
-/// CSV with header `time_utc,t_s,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s` (GCRF; t_s from the first
+/// CSV with header `time_utc,t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps` (GCRF; t_s from the first
 /// record; UTC ISO time with microseconds). Full double precision (17 significant digits).
 void write_ephemeris_csv(std::ostream& out, std::span<const EphemerisRecord> records);
 
