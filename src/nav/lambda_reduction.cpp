@@ -1,0 +1,142 @@
+#include "nav/lambda_reduction.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace visors::nav {
+namespace {
+
+using Eigen::Index;
+
+// Eliminates index i from the Schur complement `schur` (its leading (i+1) x (i+1) block): row i of
+// L and d(i), then the rank-one downdate of the leading i x i block. False for a non-positive pivot.
+bool eliminate(Index i, AmbiguityMatrix& schur, AmbiguityMatrix& L, AmbiguityVector& d) {
+  const double pivot = schur(i, i);
+  if (!(pivot > 0.0) || !std::isfinite(pivot)) return false;
+  d(i) = pivot;
+  L(i, i) = 1.0;
+  L.row(i).head(i) = schur.row(i).head(i) / pivot;
+  // Q = L' D L: removing i leaves A(j,k) - A(j,i) A(i,k) / A(i,i) = A(j,k) - d(i) L(i,j) L(i,k).
+  for (Index k = 0; k < i; ++k) {
+    schur.col(k).head(i).noalias() -= (pivot * L(i, k)) * L.row(i).head(i).transpose();
+  }
+  return true;
+}
+
+// Symmetric pivoting: the index of the smallest remaining diagonal goes to position i, so it is
+// eliminated now and ends last among 0..i (MLAMBDA, Chang et al. 2005, sec. 3.1). Rows i+1.. of L
+// are already final; their columns p and i are exchanged with the ambiguities.
+void pivot_smallest_last(Index i, Decorrelation& out, AmbiguityMatrix& schur) {
+  Index p = 0;
+  schur.diagonal().head(i + 1).minCoeff(&p);
+  if (p == i) return;
+  schur.row(p).head(i + 1).swap(schur.row(i).head(i + 1));
+  schur.col(p).head(i + 1).swap(schur.col(i).head(i + 1));
+  const Index n = out.n;
+  for (Index k = i + 1; k < n; ++k) std::swap(out.L(k, p), out.L(k, i));
+  out.Z.col(p).swap(out.Z.col(i));
+  out.Z_inv.row(p).swap(out.Z_inv.row(i));
+}
+
+// Integer Gauss transformation making |L(i,j)| <= 1/2 (i > j): column j of L and Z minus
+// mu = round(L(i,j)) times column i; Z^-1 gets the inverse operation on its rows.
+void gauss_transform(Index i, Index j, Decorrelation& out) {
+  const double mu = std::round(out.L(i, j));
+  if (mu == 0.0) return;
+  const Index n = out.n;
+  out.L.col(j).segment(i, n - i) -= mu * out.L.col(i).segment(i, n - i);
+  out.Z.col(j).head(n) -= mu * out.Z.col(i).head(n);
+  out.Z_inv.row(i).head(n) += mu * out.Z_inv.row(j).head(n);
+}
+
+// Permutation of neighbours j and j+1 with the new conditional variance delta of j+1 (de Jonge &
+// Tiberius 1996, eq. 3.19-3.21; navigation digest sec. 6.2 step 2).
+void permute(Index j, double delta, Decorrelation& out) {
+  const Index n = out.n;
+  AmbiguityMatrix& L = out.L;
+  const double l = L(j + 1, j);
+  const double eta = out.d(j) / delta;
+  const double lambda = out.d(j + 1) * l / delta;
+  out.d(j) = eta * out.d(j + 1);
+  out.d(j + 1) = delta;
+  for (Index k = 0; k < j; ++k) {
+    const double a0 = L(j, k);
+    const double a1 = L(j + 1, k);
+    L(j, k) = -l * a0 + a1;
+    L(j + 1, k) = eta * a0 + lambda * a1;
+  }
+  L(j + 1, j) = lambda;
+  for (Index k = j + 2; k < n; ++k) std::swap(L(k, j), L(k, j + 1));
+  out.Z.col(j).head(n).swap(out.Z.col(j + 1).head(n));
+  out.Z_inv.row(j).head(n).swap(out.Z_inv.row(j + 1).head(n));
+}
+
+// LAMBDA reduction with lazy Gauss transformations: column j is (re)reduced only when a
+// permutation at or below j may have changed it. The relative margin keeps rounding from
+// permuting a pair back and forth.
+void reduce(long max_permutations, Decorrelation& out) {
+  constexpr double kMargin = 1e-12;
+  const Index n = out.n;
+  Index j = n - 2;
+  Index last_permutation = n - 2;
+  while (j >= 0) {
+    if (j <= last_permutation) {
+      for (Index i = j + 1; i < n; ++i) gauss_transform(i, j, out);
+    }
+    const double delta = out.d(j) + out.L(j + 1, j) * out.L(j + 1, j) * out.d(j + 1);
+    if (delta < out.d(j + 1) * (1.0 - kMargin)) {
+      if (out.permutations >= max_permutations) {
+        out.permutation_limit_reached = true;
+        return;
+      }
+      permute(j, delta, out);
+      ++out.permutations;
+      last_permutation = j;
+      j = n - 2;
+    } else {
+      --j;
+    }
+  }
+}
+
+void start(Index n, const Eigen::Ref<const Eigen::MatrixXd>& Q, AmbiguityMatrix& schur) {
+  schur.resize(n, n);
+  // Symmetric by construction from the lower triangle (the caller checked symmetry).
+  schur.triangularView<Eigen::Lower>() = Q.triangularView<Eigen::Lower>();
+  schur.triangularView<Eigen::StrictlyUpper>() = Q.transpose().triangularView<Eigen::StrictlyUpper>();
+}
+
+}  // namespace
+
+bool factor_ltdl(const Eigen::Ref<const Eigen::MatrixXd>& Q, AmbiguityMatrix& L, AmbiguityVector& d,
+                 DecorrelationWorkspace& workspace) {
+  const Index n = Q.rows();
+  start(n, Q, workspace.schur);
+  L.setZero(n, n);
+  d.resize(n);
+  for (Index i = n - 1; i >= 0; --i) {
+    if (!eliminate(i, workspace.schur, L, d)) return false;
+  }
+  return true;
+}
+
+bool decorrelate(const Eigen::Ref<const Eigen::MatrixXd>& Q, long max_permutations, Decorrelation& out,
+                 DecorrelationWorkspace& workspace) {
+  const Index n = Q.rows();
+  out.n = n;
+  out.permutations = 0;
+  out.permutation_limit_reached = false;
+  start(n, Q, workspace.schur);
+  out.L.setZero(n, n);
+  out.d.resize(n);
+  out.Z.setIdentity(n, n);
+  out.Z_inv.setIdentity(n, n);
+  for (Index i = n - 1; i >= 0; --i) {
+    pivot_smallest_last(i, out, workspace.schur);
+    if (!eliminate(i, workspace.schur, out.L, out.d)) return false;
+  }
+  reduce(max_permutations, out);
+  return true;
+}
+
+}  // namespace visors::nav
