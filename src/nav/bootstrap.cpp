@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "nav/nearest_integer.hpp"
+
 namespace visors::nav {
 
 double rounding_success_rate(double d_i) { return std::erf(1.0 / std::sqrt(8.0 * d_i)); }
@@ -32,7 +34,7 @@ void bootstrap_integers(const Eigen::Ref<const Eigen::MatrixXd>& L, const Eigen:
   for (Eigen::Index i = n - 1; i >= 0; --i) {
     double estimate = z_hat(i);
     for (Eigen::Index j = i + 1; j < n; ++j) estimate += residual(j) * L(j, i);
-    z(i) = std::round(estimate);
+    z(i) = nearest_integer(estimate);
     residual(i) = z(i) - estimate;
   }
 }

@@ -134,14 +134,14 @@ IlsStatus IntegerLeastSquares::search(Index k) {
   return IlsStatus::kOk;
 }
 
-// a = Z^-T z, with the exact integer Z^-1 of the reduction; the result is integer up to round-off
+// a = Z^-T z, with the exact integer Z^-T of the reduction; the result is integer up to round-off
 // of the products (exact below 2^53), so it is rounded.
 void IntegerLeastSquares::back_transform() {
   Workspace& w = *w_;
   const Index n = w.decorrelation.n;
   IlsSolution& out = w.solution;
   out.a.resize(n, out.found);
-  out.a.noalias() = w.decorrelation.Z_inv.topLeftCorner(n, n).transpose() * w.z_found.topLeftCorner(n, out.found);
+  out.a.noalias() = w.decorrelation.Z_inv_t.topLeftCorner(n, n) * w.z_found.topLeftCorner(n, out.found);
   out.a = out.a.array().round();
   out.a.colwise() += w.a_integer;
 }

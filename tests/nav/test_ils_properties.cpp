@@ -123,7 +123,7 @@ TEST(IlsProperties, ReductionIsUnimodularAndReproducesTheCovariance) {
     const Eigen::MatrixXd Q = random_spd(n, 1e-6, 1.0, rng);
     ASSERT_TRUE(decorrelate(Q, 100000, dc, ws));
     const Eigen::MatrixXd Z = dc.Z.topLeftCorner(n, n);
-    const Eigen::MatrixXd Z_inv = dc.Z_inv.topLeftCorner(n, n);
+    const Eigen::MatrixXd Z_inv = dc.Z_inv_t.topLeftCorner(n, n).transpose();
     // Integer entries, and Z Z^-1 = I exactly (integer arithmetic in doubles).
     EXPECT_EQ(Z, Z.array().round().matrix()) << "trial " << trial;
     EXPECT_EQ(Z * Z_inv, Eigen::MatrixXd::Identity(n, n)) << "trial " << trial;
