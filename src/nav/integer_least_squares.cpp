@@ -17,6 +17,7 @@ struct IntegerLeastSquares::Workspace {
   DecorrelationWorkspace decorrelation_workspace;
   SearchWorkspace search;
   AmbiguityVector a_integer;    // round(a) [cycles]
+  AmbiguityVector a_fraction;   // a - round(a) [cycles]
   AmbiguityVector z_fraction;   // Z' (a - round(a)): what the search works on [cycles]
   AmbiguityVector z_integer;    // Z' round(a), exact integers
   AmbiguityVector z_hat;        // Z' a = z_fraction + z_integer [cycles]
@@ -91,7 +92,8 @@ IlsStatus IntegerLeastSquares::decorrelate(const Eigen::Ref<const Eigen::VectorX
   const Index n = a.size();
   const auto Z = w.decorrelation.Z.topLeftCorner(n, n);
   w.a_integer = a.array().round();
-  w.z_fraction.noalias() = Z.transpose() * (a - w.a_integer);
+  w.a_fraction = a - w.a_integer;
+  w.z_fraction.noalias() = Z.transpose() * w.a_fraction;
   w.z_integer.noalias() = Z.transpose() * w.a_integer;
   w.z_hat = w.z_fraction + w.z_integer;
   w.decorrelated = true;
