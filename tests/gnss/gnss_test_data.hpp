@@ -31,6 +31,8 @@ inline constexpr const char* kBrdc20100702 = "igs-2010-07-02/brdc1830.10n";
 inline constexpr const char* kSp320100702 = "igs-2010-07-02/igs15905.sp3";
 inline constexpr const char* kHert2024 = "HERT00GBR_R_20240920000_01D_GN.rnx";
 inline constexpr const char* kNya2024 = "NYA100NOR_S_20241280000_01D_GN.rnx";
+inline constexpr const char* kGsi0759Obs = "gsi-2005-04-02/07590920.05o";
+inline constexpr const char* kGsi3040Obs = "gsi-2005-04-02/30400920.05o";
 
 /// The whole text of a file.
 inline std::string file_text(const std::filesystem::path& path) {

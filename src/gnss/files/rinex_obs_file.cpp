@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "gnss/files/rinex_obs_common.hpp"
 #include "gnss/files/text_file.hpp"
 #include "gnss/gps_constants.hpp"
 
@@ -214,9 +215,10 @@ core::Result<bool> write_rinex3_observations(const std::filesystem::path& path, 
 
 namespace {
 
+// RINEX 3.0x header after line 1, then the epoch records.
 class ObservationReader {
  public:
-  explicit ObservationReader(TextFile file) : file_(std::move(file)) {}
+  ObservationReader(TextFile file, double version) : file_(std::move(file)) { result_.version = version; }
 
   core::Result<ObservationFile> read() {
     if (auto error = read_header()) return *error;
@@ -232,90 +234,35 @@ class ObservationReader {
  private:
   std::optional<core::Error> read_header() {
     std::string line;
-    bool first = true, types_seen = false;
     while (file_.next(line)) {
       const std::string_view label = trim(column(line, 60, 20));
-      if (first) {
-        first = false;
-        if (label != "RINEX VERSION / TYPE") return file_.error("the first line must be RINEX VERSION / TYPE");
-        const auto version = parse_number(column(line, 0, 9), "version (columns 1-9)");
-        if (!version || !*version) return file_.error("version (columns 1-9) is not a number");
-        if (**version < 3.0 || **version >= 4.0) return file_.error("version " + std::string(trim(column(line, 0, 9))) + " is not 3.x");
-        if (column(line, 20, 1) != "O") return file_.error("file type (column 21) is not O (observation data)");
-        result_.version = **version;
-        continue;
-      }
-      ObservationHeader& h = result_.header;
       if (label == "END OF HEADER") {
-        if (!types_seen) return file_.error("no SYS / # / OBS TYPES line for GPS (G) before END OF HEADER");
-        if (h.observation_types.size() != announced_types_) {
+        if (!types_seen_) return file_.error("no SYS / # / OBS TYPES line for GPS (G) before END OF HEADER");
+        if (result_.header.observation_types.size() != announced_types_) {
           return file_.error("SYS / # / OBS TYPES announces " + std::to_string(announced_types_) + " GPS types, " +
-                             std::to_string(h.observation_types.size()) + " are listed");
+                             std::to_string(result_.header.observation_types.size()) + " are listed");
         }
         return std::nullopt;
       }
-      if (label == "PGM / RUN BY / DATE") {
-        h.program = std::string(trim(column(line, 0, 20)));
-        h.run_by = std::string(trim(column(line, 20, 20)));
-        h.creation_date = std::string(trim(column(line, 40, 20)));
-      }
-      if (label == "COMMENT") h.comments.emplace_back(trim(column(line, 0, 60)));
-      if (label == "MARKER NAME") h.marker_name = std::string(trim(column(line, 0, 60)));
-      if (label == "MARKER TYPE") h.marker_type = std::string(trim(column(line, 0, 20)));
-      if (label == "OBSERVER / AGENCY") {
-        h.observer = std::string(trim(column(line, 0, 20)));
-        h.agency = std::string(trim(column(line, 20, 40)));
-      }
-      if (label == "REC # / TYPE / VERS") {
-        h.receiver_number = std::string(trim(column(line, 0, 20)));
-        h.receiver_type = std::string(trim(column(line, 20, 20)));
-        h.receiver_version = std::string(trim(column(line, 40, 20)));
-      }
-      if (label == "ANT # / TYPE") {
-        h.antenna_number = std::string(trim(column(line, 0, 20)));
-        h.antenna_type = std::string(trim(column(line, 20, 20)));
-      }
-      if (label == "APPROX POSITION XYZ" || label == "ANTENNA: DELTA H/E/N" || label == "ANTENNA: DELTA X/Y/Z" ||
-          label == "ANTENNA: B.SIGHT XYZ") {
-        Eigen::Vector3d v;
-        for (int k = 0; k < 3; ++k) {
-          const auto value = parse_number(column(line, 14 * static_cast<std::size_t>(k), 14), std::string(label));
-          if (!value) return file_.error(value.error().describe());
-          v(k) = value->value_or(0.0);
-        }
-        if (label == "APPROX POSITION XYZ") h.approx_position_m = v;
-        if (label == "ANTENNA: DELTA H/E/N") h.antenna_delta_hen_m = v;
-        if (label == "ANTENNA: DELTA X/Y/Z") h.antenna_delta_xyz_m = v;
-        if (label == "ANTENNA: B.SIGHT XYZ") h.antenna_boresight_xyz = v;
-      }
-      if (label == "INTERVAL") {
-        const auto value = parse_number(column(line, 0, 10), "INTERVAL (columns 1-10)");
-        if (!value) return file_.error(value.error().describe());
-        h.interval_s = value->value_or(0.0);
-      }
-      if (label == "TIME OF FIRST OBS") {
-        const auto t = first_observation(line);
-        if (!t) return file_.error(t.error().describe());
-        h.first_observation = *t;
-      }
       if (label == "SYS / # / OBS TYPES") {
-        if (auto error = observation_types(line, types_seen)) return error;
+        if (auto error = observation_types(line)) return error;
+      } else if (auto error = detail::read_common_header_record(file_, label, line, result_.header)) {
+        return error;
       }
     }
-    if (first) return file_.file_error("empty file: not a RINEX observation file");
     return file_.error("the file ends here without an END OF HEADER line: the header is truncated");
   }
 
   // Continuation lines have a blank system letter and continue the last system's list.
-  std::optional<core::Error> observation_types(std::string_view line, bool& types_seen) {
+  std::optional<core::Error> observation_types(std::string_view line) {
     const char system = line.empty() ? ' ' : line[0];
     if (system != ' ') {
       current_system_ = system;
       const auto count = parse_integer(column(line, 3, 3), "number of types (columns 4-6)");
       if (!count || !*count || **count < 1) return file_.error("number of types (columns 4-6) must be a positive integer");
       if (system == 'G') {
-        if (types_seen) return file_.error("a second SYS / # / OBS TYPES line for G");
-        types_seen = true;
+        if (types_seen_) return file_.error("a second SYS / # / OBS TYPES line for G");
+        types_seen_ = true;
         announced_types_ = static_cast<std::size_t>(**count);
         result_.header.observation_types.clear();
       }
@@ -328,18 +275,6 @@ class ObservationReader {
       result_.header.observation_types.emplace_back(code);
     }
     return std::nullopt;
-  }
-
-  core::Result<core::GpsTime> first_observation(std::string_view line) const {
-    const std::string_view system = trim(column(line, 48, 3));
-    if (!system.empty() && system != "GPS") {
-      return core::Error{"TIME OF FIRST OBS", "time system '" + std::string(system) + "': only GPS is supported"};
-    }
-    // 5I6, F13.7 (RINEX 3.05 Table A1).
-    static constexpr CalendarColumns kFirst{{2, 4}, {6, 6}, {12, 6}, {18, 6}, {24, 6}, {30, 13}};
-    auto t = parse_gps_calendar(line, kFirst);
-    if (!t) return core::Error{"TIME OF FIRST OBS", t.error().describe()};
-    return t;
   }
 
   std::optional<core::Error> read_epoch(const std::string& line) {
@@ -392,25 +327,9 @@ class ObservationReader {
     SatelliteObservations sat;
     sat.prn = static_cast<int>(**prn);
     for (std::size_t k = 0; k < result_.header.observation_types.size(); ++k) {
-      const std::size_t first = 3 + kValueWidth * k;
-      const std::string name = result_.header.observation_types[k] + " (columns " + std::to_string(first + 1) + "-" +
-                               std::to_string(first + 14) + ")";
-      ObservationValue v;
-      const auto value = parse_number(column(record, first, 14), name);
+      auto value = detail::parse_observation_field(record, 3 + kValueWidth * k, result_.header.observation_types[k]);
       if (!value) return value.error();
-      v.value = *value;
-      const std::string_view lli = column(record, first + 14, 1), ssi = column(record, first + 15, 1);
-      v.lli = (lli.empty() || lli[0] == ' ') ? 0 : lli[0] - '0';
-      v.ssi = (ssi.empty() || ssi[0] == ' ') ? 0 : ssi[0] - '0';
-      if (v.lli < 0 || v.lli > 7) {
-        return core::Error{result_.header.observation_types[k] + " LLI (column " + std::to_string(first + 15) + ")",
-                           "'" + std::string(lli) + "' is not a loss-of-lock indicator 0-7"};
-      }
-      if (v.ssi < 0 || v.ssi > 9) {
-        return core::Error{result_.header.observation_types[k] + " signal strength (column " + std::to_string(first + 16) + ")",
-                           "'" + std::string(ssi) + "' is not a digit 0-9"};
-      }
-      sat.values.push_back(v);
+      sat.values.push_back(*value);
     }
     return sat;
   }
@@ -429,15 +348,41 @@ class ObservationReader {
   TextFile file_;
   ObservationFile result_;
   char current_system_ = ' ';
+  bool types_seen_ = false;
   std::size_t announced_types_ = 0;
 };
 
+// The file opened and its line 1 read.
+core::Result<std::pair<TextFile, detail::ObservationVersion>> open_observations(const std::filesystem::path& path) {
+  auto opened = TextFile::open(path, "RINEX observation file");
+  if (!opened) return opened.error();
+  TextFile file = std::move(opened).value();
+  auto version = detail::read_observation_version(file);
+  if (!version) return version.error();
+  return std::pair<TextFile, detail::ObservationVersion>(std::move(file), std::move(version).value());
+}
+
 }  // namespace
 
+core::Result<ObservationFile> detail::read_rinex3_observation_body(TextFile file, const ObservationVersion& version) {
+  return ObservationReader(std::move(file), version.version).read();
+}
+
 core::Result<ObservationFile> read_rinex3_observations(const std::filesystem::path& path) {
-  auto file = TextFile::open(path, "RINEX observation file");
-  if (!file) return file.error();
-  return ObservationReader(std::move(file).value()).read();
+  auto opened = open_observations(path);
+  if (!opened) return opened.error();
+  auto [file, version] = std::move(opened).value();
+  if (version.version < 3.0 || version.version >= 4.0) return file.error("version " + version.text + " is not 3.x");
+  return detail::read_rinex3_observation_body(std::move(file), version);
+}
+
+core::Result<ObservationFile> read_rinex_observations(const std::filesystem::path& path) {
+  auto opened = open_observations(path);
+  if (!opened) return opened.error();
+  auto [file, version] = std::move(opened).value();
+  if (version.version >= 2.0 && version.version < 3.0) return detail::read_rinex2_observation_body(std::move(file), version);
+  if (version.version >= 3.0 && version.version < 4.0) return detail::read_rinex3_observation_body(std::move(file), version);
+  return file.error("version " + version.text + " is not 2.x or 3.x: not a RINEX observation version read here");
 }
 
 ObservationEpoch to_observation_epoch(const GpsMeasurementEpoch& epoch, std::optional<double> receiver_clock_offset_s) {
