@@ -32,18 +32,21 @@ TEST(ToolDensity, ApexAt500KmIsTheTableMaximum) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   // M&G Table 3.8, 500 km: rho_M = 2.042e-12 kg/m^3 (JSON text round trip: a few ulp).
   EXPECT_NEAR(run.json()["density"].get<double>(), 2.042e-12, 1e-26);
+  // exactly 500 km (comment above kSun), round-off (ulp 5.8e-11 m); measured 0 (2026-11)
   EXPECT_NEAR(run.json()["height_m"].get<double>(), 500e3, 1e-9);
 }
 
 TEST(ToolDensity, AntapexAt500KmIsTheTableMinimum) {
   const auto run = visors::test::run_tool("density", input("harris-priester", kAntapex));
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  // JSON text round trip, a few ulp (first test); loose: measured 0 (2026-11), bound 1e-26 ~200x ulp(3.916e-13) 5.0e-29
   EXPECT_NEAR(run.json()["density"].get<double>(), 3.916e-13, 1e-26);  // M&G Table 3.8, 500 km
 }
 
 TEST(ToolDensity, MaximumModelIsTheMaximumAtTheAntapex) {
   const auto run = visors::test::run_tool("density", input("harris-priester-max", kAntapex));
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  // JSON text round trip, a few ulp (ulp 4.0e-28, first test); measured 0 (2026-11)
   EXPECT_NEAR(run.json()["density"].get<double>(), 2.042e-12, 1e-26);  // M&G Table 3.8, 500 km
 }
 
@@ -57,6 +60,7 @@ TEST(ToolDensity, ItrfDerivedFromTimeWhenAbsent) {
       R"("f107":150,"time":"2024-10-01T00:00:00"})");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NEAR(run.json()["height_m"].get<double>(), 500e3, 1.0);
+  // M&G Table 3.8, n = 6 (comment above); loose: measured 1.1e-18 kg/m^3 (2026-11), bound 1e-15 ~900x above
   EXPECT_NEAR(run.json()["density"].get<double>(), 3.916e-13 + (2.042e-12 - 3.916e-13) / 8.0, 1e-15);
 }
 

@@ -26,6 +26,7 @@ TEST(ToolStm, J2OneOrbitRegression) {
   const auto run = visors::test::run_tool(
       "stm", input(R"(,"dt":5676.977,"model":"j2","mu":3.986004418e14,"re":6378137.0})"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  // digest Test 2.2-b (relative-motion-and-control.md), a regression value: Phi(2,1) measured regression bound: 1.6e-6 (2026-11); bound 2e-5. Phi(6,5) printed to 1e-8: measured 6.2e-9 (2026-11)
   EXPECT_NEAR(run.json()["phi"][1][0].get<double>(), -9.395765, 2e-5);
   EXPECT_NEAR(run.json()["phi"][5][4].get<double>(), 8.61264e-3, 1e-8);
 }
@@ -35,6 +36,7 @@ TEST(ToolStm, KeplerModel) {
   const auto run = visors::test::run_tool("stm", input(R"(,"dt":100.0,"model":"kepler"})"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const double n = std::sqrt(3.986004415e14 / std::pow(6878137.0, 3));
+  // -1.5 n dt (comment above), round-off (ulp 2.8e-17); measured 0 (2026-11)
   EXPECT_NEAR(run.json()["phi"][1][0].get<double>(), -150.0 * n, 1e-15);
   EXPECT_EQ(run.json()["phi"][2][2].get<double>(), 1.0);
 }

@@ -15,19 +15,23 @@ constexpr double kAxisY = 0.366 * 0.100 + 0.115;         // 0.1516 m^2
 constexpr double kAxisZ = 0.366 * 0.2263 + 0.07;         // 0.1528258 m^2
 
 TEST(DragArea, AlongXIsTheHandSum) {
+  // hand sum (comment above), round-off (ulp 1.1e-16 m^2); measured 0 (2026-11)
   EXPECT_NEAR(DragArea::visors_6u().projected_area_m2(Eigen::Vector3d::UnitX()), kAxisX, 1e-15);
 }
 
 TEST(DragArea, AlongYIsTheHandSum) {
+  // hand sum (comment above), round-off (ulp 2.8e-17 m^2); measured 0 (2026-11)
   EXPECT_NEAR(DragArea::visors_6u().projected_area_m2(Eigen::Vector3d::UnitY()), kAxisY, 1e-15);
 }
 
 TEST(DragArea, AlongZIsTheHandSum) {
+  // hand sum (comment above), round-off (ulp 2.8e-17 m^2); measured 0 (2026-11)
   EXPECT_NEAR(DragArea::visors_6u().projected_area_m2(Eigen::Vector3d::UnitZ()), kAxisZ, 1e-15);
 }
 
 // Off-axis: a|vx| + b|vy| + c|vz| for v = (1, -2, 2)/3 (axis-aligned plates, hand).
 TEST(DragArea, OffAxisIsTheWeightedSum) {
+  // round-off (ulp(0.37 m^2) 5.6e-17); measured 5.6e-17 m^2 (2026-11)
   EXPECT_NEAR(DragArea::visors_6u().projected_area_m2(Eigen::Vector3d(1.0, -2.0, 2.0) / 3.0),
               (kAxisX + 2.0 * kAxisY + 2.0 * kAxisZ) / 3.0, 1e-15);
 }
@@ -65,11 +69,13 @@ TEST(DragArea, SymmetricUnderReversal) {
 
 // Scale-free input: a non-unit wind vector gives the area of its direction.
 TEST(DragArea, NormalisesTheDirection) {
+  // round-off (ulp(0.15 m^2) 2.8e-17); measured 0 (2026-11)
   EXPECT_NEAR(DragArea::visors_6u().projected_area_m2({0.0, 7.5e3, 0.0}), kAxisY, 1e-15);
 }
 
 // Fibonacci directions are unit vectors (construction).
 TEST(DragArea, FibonacciDirectionsAreUnit) {
+  // round-off of a unit vector (ulp(1) 2.2e-16); measured 0 (2026-11)
   EXPECT_NEAR(visors::sim::fibonacci_sphere_direction(123, 1000).norm(), 1.0, 1e-15);
 }
 

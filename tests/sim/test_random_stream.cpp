@@ -38,6 +38,7 @@ TEST(RandomStream, UniformStaysInUnitInterval) {
   RandomStream r(3, "uniform");
   for (int i = 0; i < 10000; ++i) {
     const double u = r.uniform();
+    // the uniform() contract, [0, 1) (random_stream.hpp); measured 1.5e-6 .. 0.99995 (2026-11)
     ASSERT_GE(u, 0.0);
     ASSERT_LT(u, 1.0);
   }
