@@ -16,7 +16,6 @@
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Cholesky>
-#include <Eigen/QR>
 #include <algorithm>
 #include <chrono>
 #include <random>
@@ -24,6 +23,7 @@
 
 #include "nav/integer_least_squares.hpp"
 #include "support/dd_geometry.hpp"
+#include "support/random_orthogonal.hpp"
 
 namespace {
 
@@ -54,19 +54,12 @@ std::vector<Instance> dd_family(int n) {
 std::vector<Instance> random_spd_family(int n) {
   std::vector<Instance> out;
   std::mt19937_64 rng(2400 + n);
-  std::normal_distribution<double> gauss;
   std::uniform_real_distribution<double> offset(-1e6, 1e6);
+  Eigen::VectorXd ev(n);
+  for (int i = 0; i < n; ++i) ev(i) = std::pow(10.0, -6.0 + 6.0 * i / (n - 1));  // log-spaced [1e-6, 1]
   for (int k = 0; k < 50; ++k) {
-    Eigen::MatrixXd g(n, n);
-    for (int i = 0; i < n * n; ++i) g.data()[i] = gauss(rng);
-    Eigen::HouseholderQR<Eigen::MatrixXd> qr(g);
-    Eigen::MatrixXd u = qr.householderQ();
-    for (int j = 0; j < n; ++j) u.col(j) *= qr.matrixQR()(j, j) < 0.0 ? -1.0 : 1.0;
-    Eigen::VectorXd ev(n);
-    for (int i = 0; i < n; ++i) ev(i) = std::pow(10.0, -6.0 + 6.0 * i / (n - 1));  // log-spaced [1e-6, 1]
     Instance inst;
-    inst.Q = u * ev.asDiagonal() * u.transpose();
-    inst.Q = 0.5 * (inst.Q + inst.Q.transpose());
+    inst.Q = visors::test::spd_with_eigenvalues(visors::test::haar_orthogonal(n, rng), ev);
     inst.a.resize(n);
     for (int i = 0; i < n; ++i) inst.a(i) = offset(rng);
     out.push_back(inst);

@@ -5,7 +5,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <Eigen/QR>
 #include <cmath>
 #include <algorithm>
 #include <random>
@@ -15,25 +14,20 @@
 #include "nav/bootstrap.hpp"
 #include "nav/integer_least_squares.hpp"
 #include "nav/lambda_reduction.hpp"
+#include "nav/rtklib_lambda_cases.hpp"
+#include "support/random_orthogonal.hpp"
 
 namespace visors::nav {
 namespace {
 
-// Random SPD matrix U diag(ev) U' with U Haar orthogonal (QR of a Gaussian matrix, signs fixed)
-// and eigenvalues log-uniform in [ev_min, ev_max].
+// Random SPD matrix U diag(ev) U' with U Haar orthogonal and eigenvalues log-uniform in
+// [ev_min, ev_max].
 Eigen::MatrixXd random_spd(int n, double ev_min, double ev_max, std::mt19937_64& rng) {
-  std::normal_distribution<double> gauss;
+  const Eigen::MatrixXd u = test::haar_orthogonal(n, rng);
   std::uniform_real_distribution<double> unit;
-  Eigen::MatrixXd g(n, n);
-  for (int i = 0; i < n * n; ++i) g.data()[i] = gauss(rng);
-  Eigen::HouseholderQR<Eigen::MatrixXd> qr(g);
-  Eigen::MatrixXd u = qr.householderQ();
-  const Eigen::VectorXd r_diag = qr.matrixQR().diagonal();
-  for (int j = 0; j < n; ++j) u.col(j) *= r_diag(j) < 0.0 ? -1.0 : 1.0;
   Eigen::VectorXd ev(n);
   for (int i = 0; i < n; ++i) ev(i) = ev_min * std::pow(ev_max / ev_min, unit(rng));
-  Eigen::MatrixXd q = u * ev.asDiagonal() * u.transpose();
-  return 0.5 * (q + q.transpose());
+  return test::spd_with_eigenvalues(u, ev);
 }
 
 double sqnorm(const Eigen::VectorXd& r, const Eigen::LLT<Eigen::MatrixXd>& llt) { return r.dot(llt.solve(r)); }
@@ -159,11 +153,7 @@ TEST(IlsProperties, DecorrelationDoesNotLowerTheBootstrappedSuccessRate) {
 // RTKLIB utest1 covariance, a = z + e with e ~ N(0, Q); success = the bootstrapped integers of the
 // decorrelated problem equal Z' z. 1e5 draws: the binomial sigma is ~1.2e-3 near P = 0.84.
 TEST(IlsProperties, BootstrappedSuccessRateMatchesMonteCarlo) {
-  Eigen::MatrixXd Q = Eigen::MatrixXd::Constant(6, 6, 0.112202);
-  Q.diagonal().setConstant(0.227134);
-  Q(5, 5) = 0.434339;
-  for (int i = 0; i < 5; ++i) Q(i, 5) = Q(5, i) = 0.103473;
-  Q *= 0.25;
+  const Eigen::MatrixXd Q = 0.25 * rtklib::utest1_q();
   Decorrelation dc;
   DecorrelationWorkspace ws;
   ASSERT_TRUE(decorrelate(Q, 100000, dc, ws));
