@@ -10,8 +10,8 @@
 //     lowest layer; the exponent is g0 M0 / (R* L) with the document's constants (g0 = 9.80665 m/s^2,
 //     M0 = 28.9644 kg/kmol, R* = 8.31432 J/(mol K), L = 6.5e-3 K/m). H is the geopotential
 //     height, H = r0 h / (r0 + h) with r0 = 6356.766 km (eq. 18). Written out this is the
-//     p = 1013.25 (1 - 2.25577e-5 H)^5.25588 hPa used with Saastamoinen by RTKLIB (which rounds the
-//     exponent to 5.2568 and uses 273.16 K for 0 degC; neither matters at the 1 mm level);
+//     p = 1013.25 (1 - 2.25577e-5 H)^5.25588 hPa used with Saastamoinen by RTKLIB (which has the
+//     exponent as 5.2568, 273.16 K for 0 degC and the geometric height; none matters at 1 mm);
 //   water-vapour pressure e = RH * e_s(T), e_s = 6.1078 hPa * exp(17.27 t / (t + 237.3 degC)) with
 //     t = T - 273.15 K: the Magnus-type formula of Tetens (1930) with the constants of Murray
 //     (1967), J. Appl. Meteor. 6, 203-204 (saturation over water); RH is a setting (0.7 default).
