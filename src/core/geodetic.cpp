@@ -82,4 +82,14 @@ Eigen::Vector3d itrf_from_geodetic(const GeodeticPosition& geodetic) {
           (n * (1.0 - kE2) + geodetic.height) * sin_lat};
 }
 
+Eigen::Matrix3d enu_from_itrf_rotation(const GeodeticPosition& geodetic) {
+  const double sl = std::sin(geodetic.latitude), cl = std::cos(geodetic.latitude);
+  const double so = std::sin(geodetic.longitude), co = std::cos(geodetic.longitude);
+  Eigen::Matrix3d r;
+  r << -so, co, 0.0,
+       -sl * co, -sl * so, cl,
+       cl * co, cl * so, sl;
+  return r;
+}
+
 }  // namespace visors::core

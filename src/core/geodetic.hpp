@@ -43,4 +43,9 @@ GeodeticPosition geodetic_from_itrf(const Eigen::Vector3d& r_itrf);
 /// (N (1 - e^2) + h) sin lat)).
 Eigen::Vector3d itrf_from_geodetic(const GeodeticPosition& geodetic);
 
+/// Rotation from Earth-fixed to the local east-north-up frame at `geodetic` (rows: east, north,
+/// up = the ellipsoid normal): v_enu = R v_itrf. e = (-sin lon, cos lon, 0),
+/// n = (-sin lat cos lon, -sin lat sin lon, cos lat), u = (cos lat cos lon, cos lat sin lon, sin lat).
+Eigen::Matrix3d enu_from_itrf_rotation(const GeodeticPosition& geodetic);
+
 }  // namespace visors::core

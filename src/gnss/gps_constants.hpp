@@ -13,6 +13,8 @@ inline constexpr double kGpsRelativisticF = -4.442807633e-10;  // F = -2 sqrt(mu
 inline constexpr double kGpsSpeedOfLight = 299792458.0;      // [m/s]
 inline constexpr double kL1FrequencyHz = 1575.42e6;          // L1 carrier [Hz]
 inline constexpr double kL1WavelengthM = kGpsSpeedOfLight / kL1FrequencyHz;  // 0.190293672798 m
+inline constexpr double kL2FrequencyHz = 1227.60e6;          // L2 carrier [Hz]
+inline constexpr double kL2WavelengthM = kGpsSpeedOfLight / kL2FrequencyHz;  // 0.244210213425 m
 inline constexpr int kMaxGpsPrn = 32;                        // PRN 1..32
 
 }  // namespace visors::gnss

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "core/constants.hpp"
 #include "core/geodetic.hpp"
@@ -18,6 +20,7 @@ namespace {
 using visors::core::GeodeticPosition;
 using visors::core::geodetic_from_itrf;
 using visors::core::itrf_from_geodetic;
+using visors::core::enu_from_itrf_rotation;
 using visors::core::kDegToRad;
 using visors::core::kPi;
 
@@ -174,3 +177,20 @@ TEST(Geodetic, OriginIsThePole) {
 }
 
 }  // namespace
+
+// The local east-north-up rotation against GeographicLib's Geocentric::Forward rotation matrix M
+// (Karney; M's columns are the local east, north, up axes in Earth-fixed coordinates), at the GSI
+// base station 3040 (Japan) and at a southern, western point.
+TEST(Geodetic, EnuRotationMatchesGeographicLib) {
+  for (const auto& [lat_deg, lon_deg] : {std::pair{35.15, 139.6}, std::pair{-33.9, -70.7}}) {
+    std::vector<double> m(9);
+    double x = 0.0, y = 0.0, z = 0.0;
+    GeographicLib::Geocentric::WGS84().Forward(lat_deg, lon_deg, 0.0, x, y, z, m);
+    const Eigen::Matrix3d r = enu_from_itrf_rotation({lat_deg * kDegToRad, lon_deg * kDegToRad, 0.0});
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 3; ++col) {
+        EXPECT_NEAR(r(row, col), m[static_cast<std::size_t>(3 * col + row)], 1e-15) << row << "," << col;
+      }
+    }
+  }
+}
