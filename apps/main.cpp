@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "baseline/baseline_command.hpp"
 #include "preview/preview_command.hpp"
 #include "propagate/propagate_command.hpp"
 #include "run/run_command.hpp"
@@ -105,6 +106,22 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   gnss_sim->add_option("--out", gnss_out, "output folder")->capture_default_str();
 
+  visors::baseline_app::BaselineOptions baseline_options;
+  auto* baseline = app.add_subcommand(
+      "baseline", "post-processed differential GPS between two ground receivers (RINEX), integer ambiguity resolution");
+  baseline->add_option("rover", baseline_options.rover, "rover RINEX observation file (2.x or 3.x)")->required();
+  baseline->add_option("base", baseline_options.base, "base RINEX observation file (2.x or 3.x)")->required();
+  baseline->add_option("--nav", baseline_options.nav, "RINEX navigation file (repeatable)")->required();
+  baseline->add_option("--base-ecef", baseline_options.base_ecef, "base position X Y Z, Earth-fixed [m]")
+      ->expected(3)->required();
+  baseline->add_option("--mode", baseline_options.mode, "static | kinematic")->capture_default_str();
+  baseline->add_option("--freq", baseline_options.freq, "L1 | L1L2")->capture_default_str();
+  baseline->add_option("--elevation-mask", baseline_options.elevation_mask_deg, "elevation mask [deg]")
+      ->capture_default_str();
+  baseline->add_option("--ar", baseline_options.ar, "ambiguity resolution: off | continuous | hold")
+      ->capture_default_str();
+  baseline->add_option("--out", baseline_options.out, "output folder")->capture_default_str();
+
   std::string report_dir;
   auto* report = app.add_subcommand(
       "report", "render DIR/report.html (self-contained HTML, inline SVG) from a run directory");
@@ -124,6 +141,7 @@ int main(int argc, char** argv) {
     return visors::propagate::run_propagate_command(propagate_scenario, propagate_out);
   }
   if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out);
+  if (baseline->parsed()) return visors::baseline_app::run_baseline_command(baseline_options);
   if (report->parsed()) return visors::report::run_report_command(report_dir);
   return 0;
 }

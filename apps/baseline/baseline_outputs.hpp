@@ -1,0 +1,33 @@
+#pragma once
+// The outputs of `visors baseline`: baseline.csv, summary.json, baseline.html, and the overview
+// printed on the terminal.
+
+#include <nlohmann/json.hpp>
+
+#include "baseline/baseline_command.hpp"
+#include "baseline/baseline_processor.hpp"
+#include "core/status.hpp"
+
+namespace visors::baseline_app {
+
+struct BaselineRun {
+  const BaselineOptions& options;
+  const baseline::BaselineSettings& settings;
+  const baseline::BaselineInputs& inputs;
+  const baseline::BaselineResult& result;
+  double wall_time_s = 0.0;  // reading, processing (not writing) [s]
+};
+
+/// The summary.json content (statistics over the epochs; see the README's field list).
+nlohmann::json baseline_summary(const BaselineRun& run);
+
+/// Writes the three files into run.options.out; Error names the file.
+core::Result<bool> write_outputs(const BaselineRun& run);
+
+/// A few lines on stdout: epochs per status, fix rate, time to first fix, the static solution.
+void print_overview(const BaselineRun& run);
+
+/// The HTML page (baseline_page.cpp).
+std::string baseline_page(const BaselineRun& run, const nlohmann::json& summary);
+
+}  // namespace visors::baseline_app
