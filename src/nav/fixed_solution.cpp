@@ -92,7 +92,8 @@ Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eige
   if (!W.allFinite() || !v.allFinite()) return Status::kNotFinite;  // overflow of a finite input
   x.noalias() += W.transpose() * v;
   P.noalias() -= W.transpose() * W;
-  // Round-off symmetrisation: the two triangles of W' W need not round alike.
+  // Symmetrisation: P - W' W inherits any round-off asymmetry of the input P (a filter's time
+  // update leaves some), and a filter wants P+ exactly symmetric.
   for (Index j = 0; j < n; ++j) {
     for (Index i = j + 1; i < n; ++i) {
       const double mean = 0.5 * (P(i, j) + P(j, i));

@@ -141,8 +141,11 @@ TEST(FixedSolution, HoldUpdateCovarianceEqualsInformationForm) {
   EXPECT_LT(max_abs(updated(p, s).P - expected.P), 1e-9 * max_abs(p.prior.P));
 }
 
-TEST(FixedSolution, CovarianceStaysExactlySymmetric) {
-  const Problem p = random_problem(12, 5, 8);
+// The input P carries a round-off asymmetry (as a filter's time update may leave): P+ comes out
+// exactly symmetric all the same.
+TEST(FixedSolution, CovarianceComesOutExactlySymmetric) {
+  Problem p = random_problem(12, 5, 8);
+  p.prior.P(3, 7) += 1e-14 * p.prior.P(3, 7);
   const Eigen::MatrixXd P_exact = updated(p, 0.0).P;
   const Eigen::MatrixXd P_hold = updated(p, 1e-3).P;
   EXPECT_EQ(P_exact, P_exact.transpose());
@@ -175,9 +178,18 @@ void expect_refused(const Problem& p, double variance, Status expected) {
   EXPECT_TRUE(same_bits(state.P, p.prior.P));
 }
 
-TEST(FixedSolution, IndefiniteCovarianceIsNotPositiveDefinite) {
+TEST(FixedSolution, NegativeDefiniteCovarianceIsNotPositiveDefinite) {
   Problem p = random_problem(6, 3, 11);
   p.prior.P = -p.prior.P;
+  expect_refused(p, 0.0, Status::kNotPositiveDefinite);
+}
+
+// Positive diagonal, eigenvalues 3 and -1 in the constrained block: Cholesky fails at its second pivot.
+TEST(FixedSolution, IndefiniteCovarianceIsNotPositiveDefinite) {
+  Problem p = random_problem(6, 2, 11);
+  p.prior.P = Eigen::MatrixXd::Identity(6, 6);
+  p.prior.P(0, 1) = p.prior.P(1, 0) = 2.0;
+  p.C = Eigen::MatrixXd::Identity(2, 6);
   expect_refused(p, 0.0, Status::kNotPositiveDefinite);
 }
 
@@ -185,6 +197,24 @@ TEST(FixedSolution, RedundantExactConstraintsAreNotPositiveDefinite) {
   Problem p = random_problem(6, 3, 12);
   p.C.row(2) = p.C.row(0) + p.C.row(1);  // rank 2: C P C' singular with s = 0
   expect_refused(p, 0.0, Status::kNotPositiveDefinite);
+}
+
+// Dependent to 1e-7: C P C' has a smallest eigenvalue ~1e-14 of its largest, positive (well above
+// round-off), so Cholesky succeeds; its squared pivot is below kRelativePivot = 1e-13 of the
+// largest diagonal, where the gain would keep fewer than ~3 digits.
+TEST(FixedSolution, NearlyRedundantExactConstraintsAreNotPositiveDefinite) {
+  Problem p = random_problem(6, 3, 12);
+  p.C.row(2) = p.C.row(0) + p.C.row(1) + 1e-7 * p.C.row(0).reverse();
+  expect_refused(p, 0.0, Status::kNotPositiveDefinite);
+}
+
+// Finite inputs whose update overflows: S = 1e-300, L = 1e-150, L^-1 (z - C x) = 1e450.
+TEST(FixedSolution, OverflowIsNotFinite) {
+  Problem p = random_problem(6, 2, 20);
+  p.prior.P = 1e-300 * Eigen::MatrixXd::Identity(6, 6);
+  p.C = Eigen::MatrixXd::Identity(2, 6);
+  p.z.setConstant(1e300);
+  expect_refused(p, 0.0, Status::kNotFinite);
 }
 
 TEST(FixedSolution, NanInTheFixIsNotFinite) {
@@ -383,7 +413,20 @@ TEST(FixedSolutionEndToEnd, PartialFixConstraintsHoldForTheTruth) {
   EXPECT_LT(max_abs(C.topRows(n - 3) * f.x_true - z.head(n - 3)), 1e-6);
 }
 
+// The contract, whatever the count says: a float outcome never yields constraints.
 TEST(FixedSolutionEndToEnd, FloatOutcomeGivesNoConstraint) {
+  const SdFilter f = simulate_sd_filter(21);
+  const auto dd = dd_of(f);
+  auto ils = IntegerLeastSquares::create().value();
+  AmbiguityFix fix = resolve_ambiguities(ils, dd.a(), dd.Q(), AcceptanceSettings{});
+  ASSERT_EQ(fix.outcome, FixOutcome::kFixed);
+  fix.outcome = FixOutcome::kFloat;
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(kMaxAmbiguities, SdFilter::kStates);
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(kMaxAmbiguities);
+  EXPECT_EQ(fixed_constraints(fix, ils, dd, C, z), 0);
+}
+
+TEST(FixedSolutionEndToEnd, RatioRefusalGivesNoConstraint) {
   const SdFilter f = simulate_sd_filter(21);
   const auto dd = dd_of(f);
   auto ils = IntegerLeastSquares::create().value();
