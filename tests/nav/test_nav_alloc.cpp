@@ -1,13 +1,18 @@
 // The ambiguity resolution allocates nothing after creation (issue 14, CONTRIBUTING "Memory"):
 // this file counts every heap allocation of the test_nav executable
 // (support/allocation_counter.hpp, malloc level) around decorrelation, search, partial search and
-// acceptance, on 24-ambiguity dual-frequency problems and on the capacity-sized 64.
+// acceptance, on 24-ambiguity dual-frequency problems and on the capacity-sized 64; and around the
+// SD -> DD transformation, the fixed constraints and the fixed-solution update of a filter of
+// 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2).
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
 #include <random>
+#include <vector>
 
 #include "nav/ambiguity_acceptance.hpp"
+#include "nav/double_difference.hpp"
+#include "nav/fixed_solution.hpp"
 #include "nav/integer_least_squares.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/dd_geometry.hpp"
@@ -81,6 +86,89 @@ TEST(NavAllocation, RejectedInputAllocatesNothing) {
   IlsStatus status = IlsStatus::kOk;
   EXPECT_EQ(test::count_allocations([&] { status = ils.resolve(a, Q); }), 0);
   EXPECT_EQ(status, IlsStatus::kNotSymmetric);
+}
+
+// An SD filter at capacity: [baseline 3, SD L1 of 32 satellites, SD L2 of the same 32] (67
+// states), DD ambiguities with the highest satellite as reference on both frequencies (62).
+struct SdFilterAtCapacity {
+  static constexpr int kSatellites = 32;
+  static constexpr Eigen::Index kStates = 3 + 2 * kSatellites;
+  Eigen::VectorXd x;
+  Eigen::MatrixXd P;
+  DoubleDifferenceAmbiguities dd = DoubleDifferenceAmbiguities::create(kStates).value();
+};
+
+SdFilterAtCapacity sd_filter_at_capacity(std::mt19937_64& rng) {
+  test::DdGeometryOptions o;
+  o.satellites = SdFilterAtCapacity::kSatellites;
+  o.frequencies = 2;
+  const test::LinesOfSight sight = test::draw_lines_of_sight(o.satellites, rng);
+  SdFilterAtCapacity f;
+  f.P = test::sd_filter_covariance(sight, o, 0.05);
+  Eigen::VectorXd truth = Eigen::VectorXd::Zero(SdFilterAtCapacity::kStates);
+  truth.tail(2 * o.satellites) = test::random_integers(2 * o.satellites, 1e6, rng).array() + 0.37;
+  const Eigen::MatrixXd chol = f.P.llt().matrixL();
+  f.x = test::float_ambiguities(truth, chol, rng);
+  EXPECT_TRUE(f.dd.reset(SdFilterAtCapacity::kStates));
+  for (int frequency = 0; frequency < 2; ++frequency) {
+    const Eigen::Index first = 3 + frequency * o.satellites;
+    std::vector<Eigen::Index> others;
+    for (int i = 0; i < o.satellites; ++i) {
+      if (i != sight.reference) others.push_back(first + i);
+    }
+    EXPECT_TRUE(f.dd.add_group(first + sight.reference, others));
+  }
+  return f;
+}
+
+TEST(NavAllocation, DoubleDifferenceEvaluateAllocatesNothing) {
+  std::mt19937_64 rng(7);
+  SdFilterAtCapacity f = sd_filter_at_capacity(rng);
+  ASSERT_EQ(f.dd.size(), 62);
+  bool ok = false;
+  EXPECT_EQ(test::count_allocations([&] { ok = f.dd.evaluate(f.x, f.P); }), 0);
+  EXPECT_TRUE(ok);
+}
+
+struct FixedAtCapacity {
+  AmbiguityFix fix;
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(kMaxAmbiguities, SdFilterAtCapacity::kStates);
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(kMaxAmbiguities);
+  Eigen::Index k = 0;
+};
+
+TEST(NavAllocation, FixedConstraintsAllocateNothing) {
+  std::mt19937_64 rng(8);
+  SdFilterAtCapacity f = sd_filter_at_capacity(rng);
+  ASSERT_TRUE(f.dd.evaluate(f.x, f.P));
+  auto ils = IntegerLeastSquares::create().value();
+  FixedAtCapacity fixed;
+  fixed.fix = resolve_ambiguities(ils, f.dd.a(), f.dd.Q(), AcceptanceSettings{});
+  ASSERT_EQ(fixed.fix.outcome, FixOutcome::kFixed);
+  EXPECT_EQ(test::count_allocations([&] { fixed.k = fixed_constraints(fixed.fix, ils, f.dd, fixed.C, fixed.z); }), 0);
+  EXPECT_EQ(fixed.k, 62);
+}
+
+TEST(NavAllocation, FixedSolutionUpdateAllocatesNothing) {
+  std::mt19937_64 rng(9);
+  SdFilterAtCapacity f = sd_filter_at_capacity(rng);
+  ASSERT_TRUE(f.dd.evaluate(f.x, f.P));
+  auto ils = IntegerLeastSquares::create().value();
+  FixedAtCapacity fixed;
+  fixed.fix = resolve_ambiguities(ils, f.dd.a(), f.dd.Q(), AcceptanceSettings{});
+  fixed.k = fixed_constraints(fixed.fix, ils, f.dd, fixed.C, fixed.z);
+  ASSERT_EQ(fixed.k, 62);
+  auto update = FixedSolutionUpdate::create(SdFilterAtCapacity::kStates).value();
+  for (const double variance : {0.0, 1e-3}) {  // exact conditioning and hold
+    Eigen::VectorXd x = f.x;
+    Eigen::MatrixXd P = f.P;
+    auto status = FixedSolutionUpdate::Status::kSizeMismatch;
+    EXPECT_EQ(test::count_allocations([&] {
+                status = update.apply(x, P, fixed.C.topRows(fixed.k), fixed.z.head(fixed.k), variance);
+              }),
+              0);
+    EXPECT_EQ(status, FixedSolutionUpdate::Status::kOk) << variance;
+  }
 }
 
 }  // namespace

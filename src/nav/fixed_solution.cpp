@@ -1,0 +1,130 @@
+#include "nav/fixed_solution.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Cholesky>
+
+namespace visors::nav {
+
+using Eigen::Index;
+using Status = FixedSolutionUpdate::Status;
+
+namespace {
+
+// A squared Cholesky pivot below this fraction of the largest diagonal entry of S counts as
+// singular: the solve would keep fewer than ~3 of 16 digits (same rule as optim/separable_kkt).
+// Redundant fixed combinations with s = 0 give pivots at the round-off level, ~1e-16 relative.
+constexpr double kRelativePivot = 1e-13;
+
+}  // namespace
+
+core::Result<FixedSolutionUpdate> FixedSolutionUpdate::create(Index max_states, Index max_constraints) {
+  if (max_states < 1) return core::Error{"max_states", "must be >= 1"};
+  if (max_constraints < 1 || max_constraints > kMaxAmbiguities) {
+    return core::Error{"max_constraints", "must be in [1, " + std::to_string(kMaxAmbiguities) + "]"};
+  }
+  return FixedSolutionUpdate(max_states, max_constraints);
+}
+
+FixedSolutionUpdate::FixedSolutionUpdate(Index max_states, Index max_constraints)
+    : max_states_(max_states),
+      max_constraints_(max_constraints),
+      S_(Eigen::MatrixXd::Zero(max_constraints, max_constraints)),
+      W_(Eigen::MatrixXd::Zero(max_constraints, max_states)),
+      v_(Eigen::VectorXd::Zero(max_constraints)) {}
+
+std::string_view to_string(Status status) {
+  switch (status) {
+    case Status::kOk: return "ok";
+    case Status::kSizeMismatch: return "size_mismatch";
+    case Status::kOutOfCapacity: return "out_of_capacity";
+    case Status::kNotFinite: return "not_finite";
+    case Status::kNegativeVariance: return "negative_variance";
+    case Status::kNotPositiveDefinite: return "not_positive_definite";
+  }
+  return "unknown";
+}
+
+Status FixedSolutionUpdate::check(const Eigen::Ref<const Eigen::VectorXd>& x, const Eigen::Ref<const Eigen::MatrixXd>& P,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
+                                  double variance) const {
+  const Index n = x.size();
+  const Index k = C.rows();
+  if (P.rows() != n || P.cols() != n || C.cols() != n || z.size() != k) return Status::kSizeMismatch;
+  if (n > max_states_ || k > max_constraints_) return Status::kOutOfCapacity;
+  if (!std::isfinite(variance) || !x.allFinite() || !P.allFinite() || !C.allFinite() || !z.allFinite()) {
+    return Status::kNotFinite;
+  }
+  if (variance < 0.0) return Status::kNegativeVariance;
+  return Status::kOk;
+}
+
+// In-place Cholesky S = L L' in the lower triangle of S_'s k x k corner (Eigen's LLT on a Ref
+// works in the referenced storage: nothing allocated). Reads the lower triangle only.
+bool FixedSolutionUpdate::factor(Index k) {
+  Eigen::Ref<Eigen::MatrixXd> s = S_.topLeftCorner(k, k);
+  const double largest = s.diagonal().maxCoeff();
+  if (!(largest > 0.0)) return false;
+  const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(s);
+  if (llt.info() != Eigen::Success) return false;
+  return s.diagonal().cwiseAbs2().minCoeff() > kRelativePivot * largest;
+}
+
+Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eigen::MatrixXd> P,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
+                                  double variance) {
+  if (const Status status = check(x, P, C, z, variance); status != Status::kOk) return status;
+  const Index n = x.size();
+  const Index k = C.rows();
+  if (k == 0) return Status::kOk;
+  auto W = W_.topLeftCorner(k, n);
+  auto v = v_.head(k);
+  W.noalias() = C * P;  // = (P C')' for the symmetric P
+  S_.topLeftCorner(k, k).noalias() = W * C.transpose();
+  S_.topLeftCorner(k, k).diagonal().array() += variance;
+  v = z;
+  v.noalias() -= C * x;
+  if (!factor(k)) return Status::kNotPositiveDefinite;
+  const auto L = S_.topLeftCorner(k, k).triangularView<Eigen::Lower>();
+  L.solveInPlace(W);  // W = L^-1 C P
+  L.solveInPlace(v);  // v = L^-1 (z - C x)
+  if (!W.allFinite() || !v.allFinite()) return Status::kNotFinite;  // overflow of a finite input
+  x.noalias() += W.transpose() * v;
+  P.noalias() -= W.transpose() * W;
+  // Symmetrisation: P - W' W inherits any round-off asymmetry of the input P (a filter's time
+  // update leaves some), and a filter wants P+ exactly symmetric.
+  for (Index j = 0; j < n; ++j) {
+    for (Index i = j + 1; i < n; ++i) {
+      const double mean = 0.5 * (P(i, j) + P(j, i));
+      P(i, j) = mean;
+      P(j, i) = mean;
+    }
+  }
+  return Status::kOk;
+}
+
+Index fixed_constraints(const AmbiguityFix& fix, const IntegerLeastSquares& ils, const DoubleDifferenceAmbiguities& dd,
+                        Eigen::Ref<Eigen::MatrixXd> C, Eigen::Ref<Eigen::VectorXd> z) {
+  if (fix.outcome == FixOutcome::kFloat) return 0;
+  const IlsSolution& solution = ils.solution();
+  const Decorrelation& decorrelation = ils.decorrelated().decorrelation;
+  const Index n = dd.size();
+  const Index k = solution.fixed;
+  const bool consistent = fix.fixed == k && k >= 1 && solution.found >= 1 && solution.n == n && decorrelation.n == n;
+  if (!consistent || C.cols() != dd.states() || C.rows() < k || z.size() < k) return 0;
+  // Row j of C is Z(:, first + j)' G = sum_r Z(r, first + j) (e_{state r} - e_{reference r})'.
+  const Index first = n - k;
+  C.topRows(k).setZero();
+  for (Index j = 0; j < k; ++j) {
+    for (Index r = 0; r < n; ++r) {
+      const double coefficient = decorrelation.Z(r, first + j);
+      C(j, dd.state_of(r)) += coefficient;
+      C(j, dd.reference_of(r)) -= coefficient;
+    }
+  }
+  z.head(k) = solution.z.col(0);
+  return k;
+}
+
+}  // namespace visors::nav
