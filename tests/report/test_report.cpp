@@ -1,7 +1,6 @@
 // render_report / write_report on a synthetic run directory: every figure and table, escaping,
 // optional files, errors that name the file, the size of a long run, and `visors report`.
 
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -113,12 +112,10 @@ TEST(Report, ThirtyFiveOrbitsAtTenSecondsStaysSmall) {
   const test::SyntheticRun run({.orbits = 35.0});
   // construction: 35 orbits x 5677 s / 10 s + 1 = 19870 rows (synthetic_run.cpp), bound chosen below it; measured 19870 (2026-11)
   ASSERT_GT(run.rows(), 19000u);
-  const auto start = std::chrono::steady_clock::now();
   const std::string html = rendered(run);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // measured regression bound: 554602 bytes (2026-11); bound 3 MiB. Time: measured 0.094 s (2026-11, Release, 2 shared cores); bound 5 s (wall clock, machine dependent)
+  // measured regression bound: 554602 bytes (2026-11); bound 3 MiB. (Speed is not a unit-test
+  // property: the report's time is part of the timed `visors run` in the README's performance.)
   EXPECT_LT(html.size(), 3u * 1024u * 1024u) << html.size();
-  EXPECT_LT(seconds, 5.0);
   for (const char* id : kFigureIds) EXPECT_TRUE(test::draws_data(test::figure_svg(html, id))) << id;
 }
 
