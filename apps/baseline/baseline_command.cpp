@@ -100,11 +100,12 @@ int run_baseline_command(const BaselineOptions& options) {
   }
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const BaselineRun run{options, settings, inputs, result.value(), wall_s};
-  if (auto written = write_outputs(run); !written) {
+  const auto summary = baseline_summary(run);
+  if (auto written = write_outputs(run, summary); !written) {
     fmt::print(stderr, "visors baseline: {}\n", written.error().describe());
     return 1;
   }
-  print_overview(run);
+  print_overview(run, summary);
   return 0;
 }
 

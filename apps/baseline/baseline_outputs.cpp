@@ -141,21 +141,19 @@ json baseline_summary(const BaselineRun& run) {
           {"wall_time_s", run.wall_time_s}};
 }
 
-core::Result<bool> write_outputs(const BaselineRun& run) {
+core::Result<bool> write_outputs(const BaselineRun& run, const json& summary) {
   const std::filesystem::path dir = run.options.out;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return core::Error{dir.string(), "cannot be created: " + ec.message()};
   if (auto csv = write_csv(dir / "baseline.csv", run.result); !csv) return csv;
-  const json summary = baseline_summary(run);
   std::ofstream(dir / "summary.json") << summary.dump(2) << '\n';
   std::ofstream(dir / "baseline.html") << baseline_page(run, summary);
   if (!std::filesystem::exists(dir / "baseline.html")) return core::Error{(dir / "baseline.html").string(), "cannot be written"};
   return true;
 }
 
-void print_overview(const BaselineRun& run) {
-  const json s = baseline_summary(run);
+void print_overview(const BaselineRun& run, const json& s) {
   const auto& st = s["statistics"];
   fmt::print("visors baseline: {} paired epochs ({} {} {}), fix {} / partial {} / float {} / code {} / none {}, fix rate {:.1f} %\n",
              s["epochs"]["paired"].get<int>(), baseline::to_string(run.settings.position_model),

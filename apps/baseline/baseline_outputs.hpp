@@ -21,11 +21,12 @@ struct BaselineRun {
 /// The summary.json content (statistics over the epochs; see the README's field list).
 nlohmann::json baseline_summary(const BaselineRun& run);
 
-/// Writes the three files into run.options.out; Error names the file.
-core::Result<bool> write_outputs(const BaselineRun& run);
+/// Writes the three files into run.options.out (`summary` is baseline_summary(run)); Error names
+/// the file.
+core::Result<bool> write_outputs(const BaselineRun& run, const nlohmann::json& summary);
 
-/// A few lines on stdout: epochs per status, fix rate, time to first fix, the static solution.
-void print_overview(const BaselineRun& run);
+/// A few lines on stdout from the summary: epochs per status, fix rate, the last solution.
+void print_overview(const BaselineRun& run, const nlohmann::json& summary);
 
 /// The HTML page (baseline_page.cpp).
 std::string baseline_page(const BaselineRun& run, const nlohmann::json& summary);

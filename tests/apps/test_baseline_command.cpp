@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/files/data_path.hpp"
+#include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
 #include "support/temp_file.hpp"
 
@@ -24,29 +25,22 @@ std::string gsi_args(const std::string& extra) {
          "30400920.05n" + kBase + " " + extra;
 }
 
-std::string text(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(BaselineCommand, WritesCsvSummaryAndPage) {
   if (!have_gsi()) GTEST_SKIP() << "gnss/gsi-2005-04-02 not found: set VISORS_DATA_PATH to the shared data folder";
   const TempDir dir;
   const auto run = run_visors(gsi_args("--out " + dir.path().string()));
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const auto summary = nlohmann::json::parse(text(dir.path() / "summary.json"));
+  const auto summary = nlohmann::json::parse(file_text(dir.path() / "summary.json"));
   EXPECT_EQ(summary["epochs"]["paired"], 120);  // the files' 120 common epochs
   const auto& st = summary["statistics"]["epochs_per_status"];
   EXPECT_EQ(st["fix"].get<int>() + st["partial"].get<int>() + st["float"].get<int>() + st["code"].get<int>() +
                 st["none"].get<int>(),
             120);
-  std::istringstream csv(text(dir.path() / "baseline.csv"));
+  std::istringstream csv(file_text(dir.path() / "baseline.csv"));
   int lines = 0;
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, 121);  // header + one row per paired epoch
-  EXPECT_NE(text(dir.path() / "baseline.html").find("<svg"), std::string::npos);
+  EXPECT_NE(file_text(dir.path() / "baseline.html").find("<svg"), std::string::npos);
 }
 
 TEST(BaselineCommand, UnknownModeNamesTheOption) {
@@ -77,7 +71,7 @@ TEST(BaselineCommand, MalformedObservationFileNamesTheLine) {
   if (!have_gsi()) GTEST_SKIP() << "gnss/gsi-2005-04-02 not found: set VISORS_DATA_PATH to the shared data folder";
   const TempDir dir;
   const auto original = core::files::find_data_file(kDir + "07590920.05o").value();
-  std::istringstream in(text(original));
+  std::istringstream in(file_text(original));
   std::ofstream out(dir.path() / "bad.05o");
   int k = 0;
   for (std::string line; std::getline(in, line);) out << (++k == 20 ? "  garbage that is not a number" : line) << "\n";

@@ -16,23 +16,21 @@
 namespace visors::baseline {
 namespace {
 
-constexpr const char* kNav0759 = "gsi-2005-04-02/07590920.05n";
-constexpr const char* kNav3040 = "gsi-2005-04-02/30400920.05n";
-// Base position given with the data (issue 14; the RINEX header's is ~2 m off).
-const Eigen::Vector3d kBaseEcef{-3978241.958, 3382840.234, 3649900.853};
+using test::kGsi0759Nav;
+using test::kGsi3040Nav;
 
 BaselineInputs gsi_inputs() {
   BaselineInputs in;
   in.rover = extract_observables(gnss::files::read_rinex_observations(test::gnss_data(test::kGsi0759Obs)).value(), "rover").value();
   in.base = extract_observables(gnss::files::read_rinex_observations(test::gnss_data(test::kGsi3040Obs)).value(), "base").value();
   std::vector<gnss::BroadcastEphemeris> records;
-  for (const char* nav : {kNav0759, kNav3040}) {
+  for (const char* nav : {kGsi0759Nav, kGsi3040Nav}) {
     const auto file = gnss::files::read_rinex_navigation(test::gnss_data(nav)).value();
     records.insert(records.end(), file.records.begin(), file.records.end());
     if (!in.ionosphere) in.ionosphere = file.ionosphere;
   }
   in.ephemerides = gnss::EphemerisSet::screen(records);
-  in.base_ecef_m = kBaseEcef;
+  in.base_ecef_m = Eigen::Vector3d(test::kGsi3040Ecef);
   return in;
 }
 
@@ -55,8 +53,8 @@ int count(const BaselineResult& r, SolutionStatus status) {
 #define SKIP_WITHOUT_GSI_DATA()                          \
   VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi0759Obs);      \
   VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi3040Obs);      \
-  VISORS_SKIP_WITHOUT_GNSS_DATA(kNav0759);               \
-  VISORS_SKIP_WITHOUT_GNSS_DATA(kNav3040)
+  VISORS_SKIP_WITHOUT_GNSS_DATA(kGsi0759Nav);               \
+  VISORS_SKIP_WITHOUT_GNSS_DATA(kGsi3040Nav)
 
 TEST(BaselineGsi, EveryEpochIsPaired) {
   SKIP_WITHOUT_GSI_DATA();

@@ -20,16 +20,14 @@
 namespace visors::baseline {
 namespace {
 
-constexpr const char* kNav3040 = "gsi-2005-04-02/30400920.05n";
-const Eigen::Vector3d kBaseEcef{-3978241.958, 3382840.234, 3649900.853};  // issue 14
 
 TEST(SignalModel, BasePseudorangeResidualsShareOneClockOffset) {
   VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi3040Obs);
-  VISORS_SKIP_WITHOUT_GNSS_DATA(kNav3040);
+  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi3040Nav);
   const auto obs = extract_observables(gnss::files::read_rinex_observations(test::gnss_data(test::kGsi3040Obs)).value(), "base").value();
-  const auto nav = gnss::files::read_rinex_navigation(test::gnss_data(kNav3040)).value();
+  const auto nav = gnss::files::read_rinex_navigation(test::gnss_data(test::kGsi3040Nav)).value();
   const auto ephemerides = gnss::EphemerisSet::screen(nav.records);
-  const ReceiverSite site = make_site(kBaseEcef);
+  const ReceiverSite site = make_site(Eigen::Vector3d(test::kGsi3040Ecef));
   double worst = 0.0;
   int checked = 0;
   for (const auto& epoch : obs.epochs) {
