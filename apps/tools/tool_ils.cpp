@@ -50,7 +50,7 @@ Json columns_to_json(const nav::CandidateMatrix& m, Eigen::Index columns) {
 // a - Q G' (G Q G')^-1 (G a - z_fixed).
 Json partial_solution(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, const nav::IntegerLeastSquares& ils) {
   const nav::IlsSolution& s = ils.solution();
-  const Eigen::MatrixXd G = ils.decorrelated().decorrelation.Z.block(0, s.n - s.fixed, s.n, s.fixed).transpose();
+  const Eigen::MatrixXd G = ils.transformation().block(0, s.n - s.fixed, s.n, s.fixed).transpose();
   const Eigen::VectorXd misfit = G * a - s.z.col(0);
   const Eigen::VectorXd conditioned = a - Q * G.transpose() * (G * Q * G.transpose()).ldlt().solve(misfit);
   return std::vector<double>(conditioned.data(), conditioned.data() + conditioned.size());
@@ -60,7 +60,8 @@ Json partial_solution(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, const 
 // in the leading n - k columns.
 Json fixed_indices(const nav::IntegerLeastSquares& ils) {
   const nav::IlsSolution& s = ils.solution();
-  const auto& Z_inv_t = ils.decorrelated().decorrelation.Z_inv_t;
+  nav::AmbiguityMatrix Z_inv_t;
+  ils.decorrelated().decorrelation.transform.inverse_transpose_matrix(Z_inv_t);
   Json out = Json::array();
   for (Eigen::Index i = 0; i < s.n; ++i) {
     if (Z_inv_t.row(i).head(s.n - s.fixed).isZero(0.0)) out.push_back(i);

@@ -108,17 +108,18 @@ Index fixed_constraints(const AmbiguityFix& fix, const IntegerLeastSquares& ils,
                         Eigen::Ref<Eigen::MatrixXd> C, Eigen::Ref<Eigen::VectorXd> z) {
   if (fix.outcome == FixOutcome::kFloat) return 0;
   const IlsSolution& solution = ils.solution();
-  const Decorrelation& decorrelation = ils.decorrelated().decorrelation;
   const Index n = dd.size();
   const Index k = solution.fixed;
-  const bool consistent = fix.fixed == k && k >= 1 && solution.found >= 1 && solution.n == n && decorrelation.n == n;
+  const bool consistent =
+      fix.fixed == k && k >= 1 && solution.found >= 1 && solution.n == n && ils.decorrelated().decorrelation.n == n;
   if (!consistent || C.cols() != dd.states() || C.rows() < k || z.size() < k) return 0;
+  const AmbiguityMatrix& Z = ils.transformation();
   // Row j of C is Z(:, first + j)' G = sum_r Z(r, first + j) (e_{state r} - e_{reference r})'.
   const Index first = n - k;
   C.topRows(k).setZero();
   for (Index j = 0; j < k; ++j) {
     for (Index r = 0; r < n; ++r) {
-      const double coefficient = decorrelation.Z(r, first + j);
+      const double coefficient = Z(r, first + j);
       C(j, dd.state_of(r)) += coefficient;
       C(j, dd.reference_of(r)) -= coefficient;
     }

@@ -17,13 +17,14 @@ struct IntegerLeastSquares::Workspace {
   DecorrelationWorkspace decorrelation_workspace;
   SearchWorkspace search;
   AmbiguityVector a_integer;    // round(a) [cycles]
-  AmbiguityVector a_fraction;   // a - round(a) [cycles]
-  AmbiguityVector z_fraction;   // Z' (a - round(a)): what the search works on [cycles]
-  AmbiguityVector z_integer;    // Z' round(a), exact integers
-  AmbiguityVector z_hat;        // Z' a = z_fraction + z_integer [cycles]
+  // Columns: Z' (a - round(a)), what the search works on [cycles], and Z' round(a), exact integers.
+  Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::ColMajor, kMaxAmbiguities, 2> z_parts;
+  AmbiguityVector z_hat;        // Z' a = the sum of the columns of z_parts [cycles]
   CandidateMatrix z_found;      // candidates of the fractional problem
   IlsSolution solution;
+  AmbiguityMatrix Z;            // formed on request (transformation())
   bool decorrelated = false;
+  bool Z_formed = false;
 };
 
 core::Result<IlsSettings> validate(const IlsSettings& s) {
@@ -73,9 +74,13 @@ IlsStatus IntegerLeastSquares::validate_input(const Eigen::Ref<const Eigen::Vect
   if (!a.allFinite() || !Q.allFinite()) return IlsStatus::kNotFinite;
   for (Index j = 0; j < n; ++j) {
     if (!(Q(j, j) > 0.0)) return IlsStatus::kNotPositiveDefinite;
+  }
+  // |Q_ij - Q_ji| <= tol sqrt(Q_ii Q_jj), squared (no square root per pair).
+  const double tol2 = settings_.symmetry_tolerance * settings_.symmetry_tolerance;
+  for (Index j = 0; j < n; ++j) {
     for (Index i = j + 1; i < n; ++i) {
-      const double scale = std::sqrt(Q(i, i) * Q(j, j));
-      if (std::abs(Q(i, j) - Q(j, i)) > settings_.symmetry_tolerance * scale) return IlsStatus::kNotSymmetric;
+      const double asymmetry = Q(i, j) - Q(j, i);
+      if (asymmetry * asymmetry > tol2 * Q(i, i) * Q(j, j)) return IlsStatus::kNotSymmetric;
     }
   }
   return IlsStatus::kOk;
@@ -89,18 +94,28 @@ IlsStatus IntegerLeastSquares::decorrelate(const Eigen::Ref<const Eigen::VectorX
   if (!nav::decorrelate(Q, settings_.max_permutations, w.decorrelation, w.decorrelation_workspace)) {
     return IlsStatus::kNotPositiveDefinite;
   }
-  const Index n = a.size();
-  const auto Z = w.decorrelation.Z.topLeftCorner(n, n);
   w.a_integer = a.array().round();
-  w.a_fraction = a - w.a_integer;
-  w.z_fraction.noalias() = Z.transpose() * w.a_fraction;
-  w.z_integer.noalias() = Z.transpose() * w.a_integer;
-  w.z_hat = w.z_fraction + w.z_integer;
+  w.z_parts.resize(a.size(), 2);
+  w.z_parts.col(0) = a - w.a_integer;
+  w.z_parts.col(1) = w.a_integer;
+  w.decorrelation.transform.apply_transpose(w.z_parts);
+  w.z_hat = w.z_parts.col(0) + w.z_parts.col(1);
   w.decorrelated = true;
+  w.Z_formed = false;
   return IlsStatus::kOk;
 }
 
 DecorrelatedAmbiguities IntegerLeastSquares::decorrelated() const { return {w_->decorrelation, w_->z_hat}; }
+
+const AmbiguityMatrix& IntegerLeastSquares::transformation() const {
+  Workspace& w = *w_;
+  assert(w.decorrelated);
+  if (!w.Z_formed) {
+    w.decorrelation.transform.matrix(w.Z);
+    w.Z_formed = true;
+  }
+  return w.Z;
+}
 
 double IntegerLeastSquares::success_rate_bootstrap() const {
   return bootstrap_success_rate(w_->decorrelation.d.head(w_->decorrelation.n));
@@ -122,13 +137,13 @@ IlsStatus IntegerLeastSquares::search(Index k) {
   out.found = 0;
   const Index m = settings_.candidates;
   const SearchOutcome outcome =
-      search_integer_candidates(dc.L.block(first, first, k, k), dc.d.segment(first, k), w.z_fraction.segment(first, k), m,
+      search_integer_candidates(dc.L.block(first, first, k, k), dc.d.segment(first, k), w.z_parts.col(0).segment(first, k), m,
                                 settings_.max_search_steps, w.search, w.z_found, out.sqnorm);
   out.search_steps = outcome.steps;
   out.success_rate = bootstrap_success_rate(dc.d.segment(first, k));
   if (outcome.status == SearchStatus::kStepLimit) return IlsStatus::kSearchLimit;
   out.found = outcome.found;
-  out.z = w.z_found.topLeftCorner(k, out.found).colwise() + w.z_integer.segment(first, k);
+  out.z = w.z_found.topLeftCorner(k, out.found).colwise() + w.z_parts.col(1).segment(first, k);
   out.ratio = out.found < 2 ? 0.0
               : out.sqnorm(0) > 0.0 ? out.sqnorm(1) / out.sqnorm(0)
                                     : std::numeric_limits<double>::infinity();
@@ -136,15 +151,13 @@ IlsStatus IntegerLeastSquares::search(Index k) {
   return IlsStatus::kOk;
 }
 
-// a = Z^-T z, with the exact integer Z^-T of the reduction; the result is integer up to round-off
-// of the products (exact below 2^53), so it is rounded.
+// a = Z^-T z by the reduction's integer operations in reverse: exact for integer z (below 2^53).
 void IntegerLeastSquares::back_transform() {
   Workspace& w = *w_;
   const Index n = w.decorrelation.n;
   IlsSolution& out = w.solution;
-  out.a.resize(n, out.found);
-  out.a.noalias() = w.decorrelation.Z_inv_t.topLeftCorner(n, n) * w.z_found.topLeftCorner(n, out.found);
-  out.a = out.a.array().round();
+  out.a = w.z_found.topLeftCorner(n, out.found);
+  w.decorrelation.transform.apply_inverse_transpose(out.a);
   out.a.colwise() += w.a_integer;
 }
 

@@ -8,7 +8,7 @@
 //
 // Steps, each in its own file: validation (here), removal of the integer parts of a (values near
 // 1e9 cycles stay exact), decorrelate (lambda_reduction.hpp), search_integer_candidates
-// (mlambda_search.hpp), back-transform a = Z^-T z exactly with the integer Z^-1.
+// (mlambda_search.hpp), back-transform a = Z^-T z exactly by the reduction's integer operations.
 //
 // Fixed capacity (kMaxAmbiguities, kMaxCandidates); all storage is made by create(), resolve()
 // allocates nothing and returns a status (no Error strings in the step). A capped search returns
@@ -77,6 +77,9 @@ class IntegerLeastSquares {
   IlsStatus decorrelate(const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& Q);
   /// After a successful decorrelate(): the decorrelated problem.
   [[nodiscard]] DecorrelatedAmbiguities decorrelated() const;
+  /// After a successful decorrelate(): Z (n x n, integer, z = Z' a), formed from the reduction's
+  /// operations on the first call and kept until the next decorrelate(). Allocates nothing.
+  [[nodiscard]] const AmbiguityMatrix& transformation() const;
   /// Bootstrapped success rate of all n decorrelated ambiguities (after decorrelate()).
   [[nodiscard]] double success_rate_bootstrap() const;
   /// Largest k whose trailing decorrelated combinations reach min_success_rate (0..n).

@@ -12,16 +12,17 @@
 // 1/2 for i > j) and permutations of neighbours j, j+1 while that lowers d(j+1)
 // (d(j) + L(j+1,j)^2 d(j+1) < d(j+1)), so the d's end as close to ascending from the back as the
 // lattice allows. Every operation is unimodular: Z (integer, det +-1) gives z = Z' a,
-// Q_z = Z' Q Z = L' diag(d) L, and Z^-T (kept alongside, also integer) maps back exactly,
-// a = Z^-T z, with no linear solve.
+// Q_z = Z' Q Z = L' diag(d) L, and maps back exactly, a = Z^-T z, with no linear solve. Z is
+// kept as its sequence of elementary operations (unimodular_transform.hpp).
 //
-// Bounded work: the number of permutations is capped (ReductionSettings); reaching the cap leaves
+// Bounded work: the number of permutations is capped (max_permutations); reaching the cap leaves
 // a valid, only less decorrelated Z (the search stays exact, it may take more steps) and is
-// reported.
+// reported (permutation_limit_reached).
 
 #include <Eigen/Core>
 
 #include "nav/ambiguity_capacity.hpp"
+#include "nav/unimodular_transform.hpp"
 
 namespace visors::nav {
 
@@ -29,8 +30,7 @@ struct Decorrelation {
   Eigen::Index n = 0;
   AmbiguityMatrix L;      // unit lower triangular, Q_z = L' diag(d) L (only i >= j meaningful)
   AmbiguityVector d;      // conditional variances of z [cycles^2]
-  AmbiguityMatrix Z;      // unimodular integer matrix: z = Z' a
-  AmbiguityMatrix Z_inv_t;  // Z^-T (integer), stored so its updates run along columns: a = Z_inv_t z
+  UnimodularTransform transform;  // Z: z = Z' a
   long permutations = 0;  // neighbour permutations done by the reduction
   bool permutation_limit_reached = false;
 };

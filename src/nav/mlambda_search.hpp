@@ -23,8 +23,12 @@ namespace visors::nav {
 enum class SearchStatus { kOk, kStepLimit };
 
 struct SearchWorkspace {
-  AmbiguityMatrix L_t;        // L transposed: the conditional sums then run along contiguous columns
-  AmbiguityMatrix sums_t;     // sums_t(i, k): sum over j > k of (z_j - z_hat_{j|J}) L(j, i), i <= k
+  AmbiguityMatrix L;          // L of the searched block, contiguous
+  // partial_sums(j, k) = sum over i >= j of (z_i - z_hat_{i|I}) L(i, k), j = k+1..n (row n: zero)
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxAmbiguities + 1, kMaxAmbiguities> partial_sums;
+  Eigen::Matrix<Eigen::Index, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxAmbiguities, 1> begin;  // see the search
+  AmbiguityVector inv_d;      // 1 / d [1/cycles^2]
+  AmbiguityVector z_hat;      // float ambiguities of the searched block [cycles]
   AmbiguityVector distance;   // partial distance of the levels above each level
   AmbiguityVector estimate;   // conditional estimate z_hat_{k|K}
   AmbiguityVector z;          // current integer at each level

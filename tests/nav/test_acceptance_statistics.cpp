@@ -55,7 +55,7 @@ struct Tally {
 // Whether the accepted integers equal the true ones: Z_k' z_true for the k trailing combinations.
 bool correct(const IntegerLeastSquares& ils, const Eigen::VectorXd& z_true) {
   const IlsSolution& s = ils.solution();
-  const auto& Z = ils.decorrelated().decorrelation.Z;
+  const auto& Z = ils.transformation();
   const Eigen::VectorXd expected = Z.block(0, s.n - s.fixed, s.n, s.fixed).transpose() * z_true;
   return expected == s.z.col(0);
 }

@@ -116,8 +116,11 @@ TEST(IlsProperties, ReductionIsUnimodularAndReproducesTheCovariance) {
     const int n = 4 + trial % 21;  // 4..24
     const Eigen::MatrixXd Q = random_spd(n, 1e-6, 1.0, rng);
     ASSERT_TRUE(decorrelate(Q, 100000, dc, ws));
-    const Eigen::MatrixXd Z = dc.Z.topLeftCorner(n, n);
-    const Eigen::MatrixXd Z_inv = dc.Z_inv_t.topLeftCorner(n, n).transpose();
+    AmbiguityMatrix Z_formed, Z_inv_t;
+    dc.transform.matrix(Z_formed);
+    dc.transform.inverse_transpose_matrix(Z_inv_t);
+    const Eigen::MatrixXd Z = Z_formed;
+    const Eigen::MatrixXd Z_inv = Z_inv_t.transpose();
     // Integer entries, and Z Z^-1 = I exactly (integer arithmetic in doubles).
     EXPECT_EQ(Z, Z.array().round().matrix()) << "trial " << trial;
     EXPECT_EQ(Z * Z_inv, Eigen::MatrixXd::Identity(n, n)) << "trial " << trial;
@@ -159,7 +162,9 @@ TEST(IlsProperties, BootstrappedSuccessRateMatchesMonteCarlo) {
   ASSERT_TRUE(decorrelate(Q, 100000, dc, ws));
   const double formula = bootstrap_success_rate(dc.d.head(6));
   const Eigen::MatrixXd chol = Q.llt().matrixL();
-  const Eigen::MatrixXd Zt = dc.Z.topLeftCorner(6, 6).transpose();
+  AmbiguityMatrix Z;
+  dc.transform.matrix(Z);
+  const Eigen::MatrixXd Zt = Z.transpose();
   std::mt19937_64 rng(42);
   std::normal_distribution<double> gauss;
   const int draws = 100000;
