@@ -35,7 +35,7 @@
 // random x (log-uniform in [1e-8, 100]) and 1001 x evenly in [1, 5]: every h_ij and Phi_ra / tau^2
 // within 1.9e-15 relative. The assembled Q and Phi agree per element with Van Loan's method in
 // 200-digit arithmetic (tests/nav/test_gauss_markov.cpp, dt = 10 s, dt/tau = 1e-8 .. 100) to
-// 4.1e-16 (Q) and 2.2e-16 (Phi), except Phi_aa = e^-x at dt/tau = 100: 5.5e-15, which is the
+// 4.2e-16 (Q) and 2.2e-16 (Phi), except Phi_aa = e^-x at dt/tau = 100: 5.5e-15, which is the
 // rounding of x = dt / tau times the condition number x of e^-x (the input's limit, not the
 // method's).
 // The series branch is scaled by powers of dt and the closed-form branch by powers of tau, the

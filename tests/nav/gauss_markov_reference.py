@@ -4,9 +4,11 @@ Q of the Gauss-Markov chain r' = v, v' = a, a' = -a/tau + w (PSD q = 2 sigma^2 /
 method (IEEE TAC 23(3), 1978): E = expm([[-A, G q G'], [0, A']] dt), Phi = E22', Q = Phi E12,
 with the 6x6 exponential by scaling and squaring of its Taylor series in 200-digit decimal
 arithmetic (Python's decimal module; 200 digits because at dt/tau = 100 the blocks of E span
-e^(+-100), 87 digits, which Q = Phi E12 cancels; no closed form, no double rounding except the inputs, which are taken as the exact
-values of the doubles the test uses). Prints C++ initialisers {x, dt, tau, sigma, Phi_ra, Phi_va,
-Phi_aa, Q_rr, Q_rv, Q_ra, Q_vv, Q_va, Q_aa} to 17 significant digits.
+e^(+-100), 87 digits, which Q = Phi E12 cancels). No closed form, no double rounding; the inputs
+are the exact values of the doubles the test uses. Prints C++ initialisers {x, dt, tau, sigma,
+Phi_ra, Phi_va, Phi_aa, Q_rr, Q_rv, Q_ra, Q_vv, Q_va, Q_aa}, each the double nearest the 200-digit
+value, to 17 significant digits (which round-trip). dt/tau = 1.4, 2 and 5 put cases on both sides
+of the implementation's switch from series to closed forms (dt/tau = 1.5).
 
   /usr/bin/python3 tests/nav/gauss_markov_reference.py
 """
@@ -15,7 +17,7 @@ from decimal import Decimal, getcontext
 getcontext().prec = 200
 SIGMA = 5e-8  # [m/s^2]
 DT = 10.0     # [s]
-RATIOS = ["1e-8", "1e-6", "1e-4", "1e-3", "1e-2", "0.1", "1", "10", "100"]
+RATIOS = ["1e-8", "1e-6", "1e-4", "1e-3", "1e-2", "0.1", "1", "1.4", "2", "5", "10", "100"]
 
 
 def matmul(a, b):
