@@ -3,7 +3,8 @@
 // (support/allocation_counter.hpp, malloc level) around decorrelation, search, partial search and
 // acceptance, on 24-ambiguity dual-frequency problems and on the capacity-sized 64; and around the
 // SD -> DD transformation, the fixed constraints and the fixed-solution update of a filter of
-// 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2).
+// 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2); and around the Gauss-Markov
+// chain (transition and process noise of the empirical accelerations).
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
@@ -13,6 +14,7 @@
 #include "nav/ambiguity_acceptance.hpp"
 #include "nav/double_difference.hpp"
 #include "nav/fixed_solution.hpp"
+#include "nav/gauss_markov.hpp"
 #include "nav/integer_least_squares.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/dd_geometry.hpp"
@@ -169,6 +171,16 @@ TEST(NavAllocation, FixedSolutionUpdateAllocatesNothing) {
               0);
     EXPECT_EQ(status, FixedSolutionUpdate::Status::kOk) << variance;
   }
+}
+
+// The Gauss-Markov chain is computed in a step when dt varies: fixed-size Eigen only.
+TEST(NavAllocation, GaussMarkovChainAllocatesNothing) {
+  GaussMarkovChain chain{};
+  EXPECT_EQ(test::count_allocations([&] {
+              chain = gauss_markov_chain(10.0, 600.0, 5e-8);  // series branch
+              chain.noise += gauss_markov_chain(10.0, 1.0, 5e-8).noise;  // closed-form branch
+            }),
+            0);
 }
 
 }  // namespace
