@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/rtn_frame.hpp"
+#include "nav/gauss_markov.hpp"
 
 namespace visors::nav {
 namespace {
@@ -59,8 +60,6 @@ DynamicTransition dynamic_transition(const core::StateVector& x0_gcrf, const cor
   const Eigen::Matrix3d G1 = point_mass_gradient(x1_gcrf.r, gm);
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   const double dt = dt_s;
-  const double e1 = std::exp(-dt / tau_s);
-  const double one_minus_e1 = -std::expm1(-dt / tau_s);
   DynamicTransition phi = DynamicTransition::Zero();
   // First order in G, with G linear over the step: Phi_rr = I + int (dt-s) G(s) ds, Phi_rv =
   // dt I + int (dt-s) s G(s) ds, Phi_vr = int G(s) ds, Phi_vv = I + int s G(s) ds.
@@ -75,14 +74,12 @@ DynamicTransition dynamic_transition(const core::StateVector& x0_gcrf, const cor
   const Eigen::Matrix3d R0 = core::gcrf_to_rtn_matrix(x0_gcrf).transpose();
   const Eigen::Matrix3d R1 = core::gcrf_to_rtn_matrix(x1_gcrf).transpose();
   const Eigen::Matrix3d G = 0.5 * (G0 + G1);
-  // tau dt - tau^2 (1 - E1) = tau^2 (x - (1 - e^-x)), x = dt/tau: a difference of nearly equal
-  // terms for small x, evaluated as tau^2 (x^2/2 - x^3/6 + x^4/24) there.
-  const double x = dt / tau_s;
-  const double r_a = x < 1e-3 ? tau_s * tau_s * x * x * (0.5 - x / 6.0 + x * x / 24.0) : tau_s * dt - tau_s * tau_s * one_minus_e1;
+  // tau dt - tau^2 (1 - E1) and tau (1 - E1), evaluated without cancellation (nav/gauss_markov.hpp).
+  const Eigen::Matrix3d chain = gauss_markov_chain(dt, tau_s, 0.0).transition;
   const double dt3 = dt * dt * dt;
-  phi.block<3, 3>(0, 6) = r_a * (2.0 * R0 + R1) / 3.0 + dt3 * dt / 24.0 * G * R0;
-  phi.block<3, 3>(3, 6) = tau_s * one_minus_e1 * (R0 + R1) / 2.0 + dt3 / 6.0 * G * R0;
-  phi.block<3, 3>(6, 6) = e1 * I;
+  phi.block<3, 3>(0, 6) = chain(0, 2) * (2.0 * R0 + R1) / 3.0 + dt3 * dt / 24.0 * G * R0;
+  phi.block<3, 3>(3, 6) = chain(1, 2) * (R0 + R1) / 2.0 + dt3 / 6.0 * G * R0;
+  phi.block<3, 3>(6, 6) = chain(2, 2) * I;
   return phi;
 }
 
