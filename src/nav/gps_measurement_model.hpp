@@ -20,7 +20,6 @@
 
 namespace visors::nav {
 
-using NavRow = Eigen::Matrix<double, 1, kNavStates>;
 
 struct MeasurementPrediction {
   double value_m = 0.0;  // predicted measurement [m]

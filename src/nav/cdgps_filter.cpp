@@ -1,0 +1,436 @@
+#include "nav/cdgps_filter.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+
+#include "core/rtn_frame.hpp"
+#include "gnss/gps_constants.hpp"
+#include "nav/ambiguity_slots.hpp"
+#include "nav/double_difference.hpp"
+#include "nav/fixed_solution.hpp"
+#include "nav/gauss_markov.hpp"
+#include "nav/gps_measurement_model.hpp"
+#include "nav/integer_least_squares.hpp"
+#include "nav/orbit_time_update.hpp"
+#include "nav/scalar_update.hpp"
+
+namespace visors::nav {
+namespace {
+
+constexpr double kLambda = gnss::kL1WavelengthM;
+constexpr Craft kCrafts[2] = {Craft::kDsc, Craft::kOsc};
+
+// One scalar measurement of the epoch, predicted at the prior state.
+struct Scalar {
+  int prn = 0;
+  int slot = -1;
+  int state = -1;          // its ambiguity state
+  double z = 0.0;          // measured [m]
+  double coefficient = 1;  // d value / d ambiguity (1 for B [m], lambda for N [cycles])
+  bool reinitialise = false;
+  MeasurementPrediction p;
+};
+
+}  // namespace
+
+struct CdgpsFilter::Impl {
+  Impl(dynamics::ForceModel dsc, dynamics::ForceModel osc, AmbiguitySlotBank graphic_bank, AmbiguitySlotBank sdcp_bank,
+       DoubleDifferenceAmbiguities dd_, IntegerLeastSquares ils_, FixedSolutionUpdate fixer_)
+      : models{std::move(dsc), std::move(osc)},
+        graphic(std::move(graphic_bank)),
+        sdcp(std::move(sdcp_bank)),
+        dd(std::move(dd_)),
+        ils(std::move(ils_)),
+        fixer(std::move(fixer_)) {}
+
+  std::array<dynamics::ForceModel, 2> models;
+  AmbiguitySlotBank graphic;
+  AmbiguitySlotBank sdcp;
+  DoubleDifferenceAmbiguities dd;
+  IntegerLeastSquares ils;
+  FixedSolutionUpdate fixer;
+  bool initialised = false;
+  core::GpsTime t;
+  NavVector x = NavVector::Zero();
+  NavMatrix P = NavMatrix::Identity();
+  NavVector x_prior = NavVector::Zero();
+  NavVector x_fixed = NavVector::Zero();
+  NavMatrix P_fixed = NavMatrix::Identity();
+  ScalarUpdateWorkspace workspace;
+  std::array<int, kGpsSlots> lock{};  // epochs of continuous SDCP lock per slot
+  std::array<Scalar, kGpsSlots> graphic_scalars{};
+  std::array<Scalar, kGpsSlots> sdcp_scalars{};
+  int graphic_count = 0;
+  int sdcp_count = 0;
+  Eigen::Matrix<double, kMaxAmbiguities, kNavStates> C;
+  Eigen::Matrix<double, kMaxAmbiguities, 1> z_fixed;
+  std::array<Eigen::Index, kGpsSlots> dd_others{};
+  std::array<RangePrediction, 2 * 33> ranges{};  // per craft and PRN, this epoch
+  std::array<bool, 2 * 33> ranged{};
+
+  const RangePrediction* range(Craft c, int prn) const {
+    const auto i = static_cast<std::size_t>(33 * static_cast<int>(c) + prn);
+    return ranged[i] ? &ranges[i] : nullptr;
+  }
+  void compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph, core::OnboardEarthFrame& frame,
+                      CdgpsEpochReport& report);
+  void select(const CdgpsEpochInput& in, Craft local);
+  void assign_slots(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int& count, double variance,
+                    CdgpsEpochReport& report);
+  void predict_scalars(Craft local);
+  void start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count, double variance);
+  double innovation(const Scalar& m) const { return m.z - (m.p.value_m + m.p.h.dot(x - x_prior)); }
+  void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
+  void process(const CdgpsSettings& s, CdgpsEpochReport& report);
+  void resolve(const CdgpsSettings& s, CdgpsEpochReport& report);
+};
+
+core::Result<CdgpsFilter> CdgpsFilter::create(const CdgpsSettings& settings, dynamics::ForceModel dsc_model,
+                                              dynamics::ForceModel osc_model) {
+  if (auto e = check(settings)) return *e;
+  auto graphic = AmbiguitySlotBank::create(state::kGraphicAmbiguities);
+  auto sdcp = AmbiguitySlotBank::create(state::kSdcpAmbiguities);
+  auto dd = DoubleDifferenceAmbiguities::create(kNavStates);
+  auto ils = IntegerLeastSquares::create();
+  auto fixer = FixedSolutionUpdate::create(kNavStates, kGpsSlots);
+  if (!graphic || !sdcp || !dd || !ils || !fixer) return core::Error{"", "internal capacity"};
+  auto impl = std::make_unique<Impl>(std::move(dsc_model), std::move(osc_model), std::move(graphic).value(),
+                                     std::move(sdcp).value(), std::move(dd).value(), std::move(ils).value(),
+                                     std::move(fixer).value());
+  return CdgpsFilter(settings, std::move(impl));
+}
+
+CdgpsFilter::CdgpsFilter(const CdgpsSettings& settings, std::unique_ptr<Impl> impl)
+    : settings_(settings), impl_(std::move(impl)) {}
+CdgpsFilter::CdgpsFilter(CdgpsFilter&&) noexcept = default;
+CdgpsFilter& CdgpsFilter::operator=(CdgpsFilter&&) noexcept = default;
+CdgpsFilter::~CdgpsFilter() = default;
+
+bool CdgpsFilter::initialised() const { return impl_->initialised; }
+core::GpsTime CdgpsFilter::epoch() const { return impl_->t; }
+const NavVector& CdgpsFilter::x() const { return impl_->x; }
+const NavMatrix& CdgpsFilter::P() const { return impl_->P; }
+const NavVector& CdgpsFilter::x_fixed() const { return impl_->x_fixed; }
+const NavMatrix& CdgpsFilter::P_fixed() const { return impl_->P_fixed; }
+
+core::StateVector CdgpsFilter::centre_of_mass(const NavVector& x, Craft craft) {
+  return {x.segment<3>(state::position(craft)), state::kVelocityUnit * x.segment<3>(state::velocity(craft))};
+}
+
+void CdgpsFilter::initialise(core::GpsTime t, const core::StateVector& dsc_gcrf, const core::StateVector& osc_gcrf,
+                             double dsc_clock_m, double osc_clock_m) {
+  Impl& m = *impl_;
+  const CdgpsSettings& s = settings_;
+  m.t = t;
+  m.x.setZero();
+  m.P.setZero();
+  const core::StateVector* states[2] = {&dsc_gcrf, &osc_gcrf};
+  const double clocks[2] = {dsc_clock_m, osc_clock_m};
+  for (int k = 0; k < 2; ++k) {
+    const Craft c = kCrafts[k];
+    m.x.segment<3>(state::position(c)) = states[k]->r;
+    m.x.segment<3>(state::velocity(c)) = states[k]->v / state::kVelocityUnit;
+    m.x(state::clock(c)) = clocks[k];
+    const auto variance = [&](int i, double sigma_si) { m.P(i, i) = std::pow(sigma_si / unit(i), 2); };
+    for (int i = 0; i < 3; ++i) {
+      variance(state::position(c) + i, s.position_sigma_m);
+      variance(state::velocity(c) + i, s.velocity_sigma_mps);
+      variance(state::empirical_acceleration(c) + i, s.empirical_sigma_mps2);
+      variance(state::phase_center(c) + i, s.phase_center_sigma_m);
+    }
+    variance(state::clock(c), s.clock_sigma_m);
+  }
+  for (int i = state::kGraphicAmbiguities; i < kNavStates; ++i) m.P(i, i) = AmbiguitySlotBank::kParkedVariance;
+  m.graphic.release_all(m.x, m.P);
+  m.sdcp.release_all(m.x, m.P);
+  m.lock.fill(0);
+  m.x_fixed = m.x;
+  m.P_fixed = m.P;
+  m.initialised = true;
+}
+
+// Covariance of one spacecraft's (r, v, a_emp) block: P <- Phi P Phi' + Q in the state units,
+// Phi from the mean's two ends, Q the Gauss-Markov chain per RTN axis rotated to GCRF for r, v.
+static void propagate_dynamic_block(NavMatrix& P, Craft c, const core::StateVector& x0, const core::StateVector& x1,
+                                    double gm, double dt, const CdgpsSettings& s) {
+  const int first = state::position(c);
+  Eigen::Matrix<double, 9, 9> phi = dynamic_transition(x0, x1, gm, dt, s.empirical_tau_s);
+  Eigen::Matrix<double, 9, 1> units;
+  for (int i = 0; i < 9; ++i) units(i) = unit(first + i);
+  phi = units.cwiseInverse().asDiagonal() * phi * units.asDiagonal();  // S^-1 Phi S
+  P.middleRows<9>(first) = (phi * P.middleRows<9>(first)).eval();
+  P.middleCols<9>(first) = (P.middleCols<9>(first) * phi.transpose()).eval();
+  const Eigen::Matrix3d q = gauss_markov_chain(dt, s.empirical_tau_s, s.empirical_sigma_mps2).noise;
+  const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(x0).transpose();  // RTN -> GCRF
+  Eigen::Matrix<double, 9, 9> Q = Eigen::Matrix<double, 9, 9>::Zero();
+  const Eigen::Matrix3d frames[3] = {R, R, Eigen::Matrix3d::Identity()};  // r, v in GCRF; a in RTN
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) Q.block<3, 3>(3 * i, 3 * j) = q(i, j) * frames[i] * frames[j].transpose();
+  }
+  P.block<9, 9>(first, first) += units.cwiseInverse().asDiagonal() * Q * units.cwiseInverse().asDiagonal();
+}
+
+void CdgpsFilter::predict(core::GpsTime t) {
+  Impl& m = *impl_;
+  const double dt = t.seconds_since(m.t);
+  if (!m.initialised || !(dt > 0.0)) return;
+  for (int k = 0; k < 2; ++k) {
+    const Craft c = kCrafts[k];
+    const core::StateVector x0 = centre_of_mass(m.x, c);
+    const Eigen::Vector3d a0 = state::kEmpiricalUnit * m.x.segment<3>(state::empirical_acceleration(c));
+    const MeanPropagation mean =
+        propagate_mean(m.models[static_cast<std::size_t>(k)], m.t, x0, a0, settings_.empirical_tau_s, dt, settings_.max_step_s);
+    m.x.segment<3>(state::position(c)) = mean.x_gcrf.r;
+    m.x.segment<3>(state::velocity(c)) = mean.x_gcrf.v / state::kVelocityUnit;
+    m.x.segment<3>(state::empirical_acceleration(c)) = mean.a_emp_rtn_mps2 / state::kEmpiricalUnit;
+    propagate_dynamic_block(m.P, c, x0, mean.x_gcrf, m.models[static_cast<std::size_t>(k)].gm(), dt, settings_);
+    m.P(state::clock(c), state::clock(c)) += settings_.clock_random_walk_m * settings_.clock_random_walk_m * dt;
+  }
+  m.P = (0.5 * (m.P + m.P.transpose())).eval();
+  m.t = t;
+}
+
+void CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps, double sigma_mps) {
+  Impl& m = *impl_;
+  if (!dv_gcrf_mps.allFinite() || !std::isfinite(sigma_mps)) return;
+  const int v = state::velocity(craft);
+  m.x.segment<3>(v) += dv_gcrf_mps / state::kVelocityUnit;
+  for (int i = 0; i < 3; ++i) m.P(v + i, v + i) += std::pow(sigma_mps / state::kVelocityUnit, 2);
+}
+
+
+// Ranges of every satellite each receiver observed and whose ephemeris is usable, at the prior.
+void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph,
+                                       core::OnboardEarthFrame& frame, CdgpsEpochReport& report) {
+  ranged.fill(false);
+  const GpsReceiverEpoch* epochs[2] = {in.dsc, in.osc};
+  const AntennaGeometry* antennas[2] = {&in.dsc_antenna, &in.osc_antenna};
+  for (int k = 0; k < 2; ++k) {
+    if (epochs[k] == nullptr) continue;
+    const ReceiverEstimate receiver = receiver_estimate(x, kCrafts[k]);
+    for (int i = 0; i < epochs[k]->count; ++i) {
+      const int prn = epochs[k]->observations[static_cast<std::size_t>(i)].prn;
+      const gnss::BroadcastEphemeris* e = eph.select(prn, t);
+      if (e == nullptr) {
+        ++report.missing_ephemeris;
+        continue;
+      }
+      const auto index = static_cast<std::size_t>(33 * k + prn);
+      ranges[index] = predict_range(t, receiver, *antennas[k], *e, frame);
+      ranged[index] = true;
+    }
+  }
+}
+
+// The epoch's GRAPHIC (local receiver) and SDCP (both receivers) measurements.
+void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local) {
+  graphic_count = sdcp_count = 0;
+  const GpsReceiverEpoch* own = local == Craft::kDsc ? in.dsc : in.osc;
+  for (int i = 0; own != nullptr && i < own->count; ++i) {
+    const GpsObservation& o = own->observations[static_cast<std::size_t>(i)];
+    if (range(local, o.prn) == nullptr) continue;
+    Scalar& m = graphic_scalars[static_cast<std::size_t>(graphic_count++)];
+    m = Scalar{};
+    m.prn = o.prn;
+    m.z = 0.5 * (o.code_m + kLambda * o.phase_cycles);
+    m.reinitialise = o.loss_of_lock;
+  }
+  for (int i = 0; in.osc != nullptr && in.dsc != nullptr && i < in.osc->count; ++i) {
+    const GpsObservation& o = in.osc->observations[static_cast<std::size_t>(i)];
+    const GpsObservation* d = in.dsc->find(o.prn);
+    if (d == nullptr || range(Craft::kOsc, o.prn) == nullptr || range(Craft::kDsc, o.prn) == nullptr) continue;
+    Scalar& m = sdcp_scalars[static_cast<std::size_t>(sdcp_count++)];
+    m = Scalar{};
+    m.prn = o.prn;
+    m.z = kLambda * (o.phase_cycles - d->phase_cycles);
+    m.coefficient = kLambda;
+    m.reinitialise = o.loss_of_lock || d->loss_of_lock;
+  }
+}
+
+// Releases the slots of satellites no longer measured, takes slots for new ones (marked for
+// initialisation), drops measurements a full bank cannot hold.
+void CdgpsFilter::Impl::assign_slots(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int& count,
+                                     double variance, CdgpsEpochReport& report) {
+  for (int slot : bank.active_slots()) {
+    const int prn = bank.prn_of(slot);
+    const bool measured = std::any_of(scalars.begin(), scalars.begin() + count, [prn](const Scalar& m) { return m.prn == prn; });
+    if (!measured) bank.release(slot, x, P);
+  }
+  int kept = 0;
+  for (int i = 0; i < count; ++i) {
+    Scalar m = scalars[static_cast<std::size_t>(i)];
+    m.slot = bank.slot_of(m.prn);
+    if (m.slot < 0) {
+      m.slot = bank.acquire(m.prn, 0.0, variance, x, P);
+      m.reinitialise = true;
+    }
+    if (m.slot < 0) continue;
+    m.state = bank.state_of(m.slot);
+    report.new_ambiguities += m.reinitialise ? 1 : 0;
+    scalars[static_cast<std::size_t>(kept++)] = m;
+  }
+  count = kept;
+}
+
+void CdgpsFilter::Impl::predict_scalars(Craft local) {
+  x_prior = x;
+  for (int i = 0; i < graphic_count; ++i) {
+    Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
+    m.p = predict_graphic(x, local, *range(local, m.prn), m.state);
+  }
+  for (int i = 0; i < sdcp_count; ++i) {
+    Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
+    m.p = predict_sdcp(x, *range(Craft::kOsc, m.prn), *range(Craft::kDsc, m.prn), m.state, kLambda);
+  }
+}
+
+// New or flagged ambiguities start at the measurement's residual with the prior variance (digest
+// 5.4); the measurement then updates the rest of the state as usual.
+void CdgpsFilter::Impl::start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count,
+                                          double variance) {
+  for (int i = 0; i < count; ++i) {
+    Scalar& m = scalars[static_cast<std::size_t>(i)];
+    if (!m.reinitialise) continue;
+    const double value = x(m.state) + innovation(m) / m.coefficient;
+    (void)bank.reinitialise(m.slot, value, variance, x, P);
+  }
+}
+
+// The order of the sequential updates: the receiver clocks are nearly free at each epoch (a random
+// walk of metres), so the first scalar processed mostly sets the clock (GRAPHIC) or the clock
+// difference (SDCP), and a slip or a code blunder in it would pass its own gate and make every
+// other scalar fail. Processing first the scalar whose innovation is the median of the epoch's
+// (then the others by their distance from it) lets a minority of faulty measurements be the ones
+// that fail.
+void CdgpsFilter::Impl::order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count) {
+  std::array<double, kGpsSlots> values{};
+  for (int i = 0; i < count; ++i) values[static_cast<std::size_t>(i)] = innovation(scalars[static_cast<std::size_t>(i)]);
+  std::array<double, kGpsSlots> sorted = values;
+  std::nth_element(sorted.begin(), sorted.begin() + count / 2, sorted.begin() + count);
+  const double median = count > 0 ? sorted[static_cast<std::size_t>(count / 2)] : 0.0;
+  std::array<int, kGpsSlots> order{};
+  for (int i = 0; i < count; ++i) order[static_cast<std::size_t>(i)] = i;
+  std::sort(order.begin(), order.begin() + count, [&](int a, int b) {
+    return std::abs(values[static_cast<std::size_t>(a)] - median) < std::abs(values[static_cast<std::size_t>(b)] - median);
+  });
+  std::array<Scalar, kGpsSlots> copy = scalars;
+  for (int i = 0; i < count; ++i) scalars[static_cast<std::size_t>(i)] = copy[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])];
+}
+
+// Sequential scalar updates, GRAPHIC then SDCP, each in consensus order (file comment of
+// cdgps_filter.hpp).
+void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report) {
+  const auto account = [&report](const ScalarUpdateResult& r) {
+    report.nis_sum += r.normalised_innovation_squared;
+    ++report.nis_count;
+  };
+  for (int i = 0; i < graphic_count; ++i) {
+    const Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
+    const auto r = scalar_update(x, P, m.p.h, innovation(m), s.graphic_sigma_m * s.graphic_sigma_m, s.gate_sigmas, workspace);
+    if (r.status == ScalarUpdateStatus::kAccepted) {
+      ++report.graphic_used;
+      account(r);
+    } else {
+      ++report.graphic_rejected;
+    }
+  }
+  const double variance = s.sdcp_sigma_m * s.sdcp_sigma_m;
+  for (int i = 0; i < sdcp_count; ++i) {
+    Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
+    if (m.reinitialise) lock[static_cast<std::size_t>(m.slot)] = 0;
+    auto r = scalar_update(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
+    if (r.status == ScalarUpdateStatus::kRejected) {  // a slip the indicator missed
+      ++report.sdcp_rejected;
+      ++report.detected_slips;
+      ++report.new_ambiguities;
+      const double value = x(m.state) + innovation(m) / m.coefficient;
+      (void)sdcp.reinitialise(m.slot, value, std::pow(s.sdcp_ambiguity_sigma_cycles, 2), x, P);
+      lock[static_cast<std::size_t>(m.slot)] = 0;
+      r = scalar_update(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
+    }
+    if (r.status == ScalarUpdateStatus::kAccepted) {
+      ++report.sdcp_used;
+      account(r);
+      ++lock[static_cast<std::size_t>(m.slot)];
+    } else {
+      m.slot = -1;  // not used for the integer resolution of this epoch
+    }
+  }
+}
+
+// Integer ambiguity resolution on the DDs of this epoch's SDCP slots (file comment).
+void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report) {
+  int reference = -1, others = 0;
+  for (int i = 0; i < sdcp_count; ++i) {
+    const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
+    if (m.slot < 0) continue;
+    if (reference < 0 || lock[static_cast<std::size_t>(m.slot)] > lock[static_cast<std::size_t>(sdcp_scalars[static_cast<std::size_t>(reference)].slot)]) {
+      reference = i;
+    }
+  }
+  if (reference < 0) return;
+  for (int i = 0; i < sdcp_count; ++i) {
+    const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
+    if (m.slot >= 0 && i != reference) dd_others[static_cast<std::size_t>(others++)] = m.state;
+  }
+  dd.reset(kNavStates);
+  dd.add_group(sdcp_scalars[static_cast<std::size_t>(reference)].state,
+               std::span<const Eigen::Index>(dd_others.data(), static_cast<std::size_t>(others)));
+  report.double_differences = static_cast<int>(dd.size());
+  if (dd.size() == 0 || !dd.evaluate(x, P)) return;
+  report.fix = resolve_ambiguities(ils, dd.a(), dd.Q(), s.acceptance);
+  if (report.fix.outcome == FixOutcome::kFloat) return;
+  const Eigen::Index k = fixed_constraints(report.fix, ils, dd, C, z_fixed);
+  x_fixed = x;
+  P_fixed = P;
+  if (k == 0 || fixer.apply(x_fixed, P_fixed, C.topRows(k), z_fixed.head(k), 0.0) != FixedSolutionUpdate::Status::kOk) return;
+  // Wrong-fix check (digest 6.6): the fixed solution must explain every SDCP used to the gate.
+  for (int i = 0; i < sdcp_count; ++i) {
+    const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
+    const double residual = m.z - (m.p.value_m + m.p.h.dot(x_fixed - x_prior));
+    if (m.slot >= 0 && std::abs(residual) > s.gate_sigmas * s.sdcp_sigma_m) {
+      report.wrong_fix_refused = true;
+      return;
+    }
+  }
+  report.fix_applied = true;
+  if (s.hold && report.fix.outcome == FixOutcome::kFixed) {
+    report.held = fixer.apply(x, P, C.topRows(k), z_fixed.head(k), s.hold_variance_cycles2) == FixedSolutionUpdate::Status::kOk;
+  }
+}
+
+CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
+                                     core::OnboardEarthFrame& frame) {
+  Impl& m = *impl_;
+  CdgpsEpochReport report;
+  const auto refuse = [&report](const char* reason) {
+    report.reason = reason;
+    return report;
+  };
+  const GpsReceiverEpoch* own = settings_.local == Craft::kDsc ? input.dsc : input.osc;
+  if (!m.initialised) return refuse("not_initialised");
+  if (own == nullptr || own->t != m.t) return refuse("time_tag");
+  if (input.dsc != nullptr && check(*input.dsc)) return refuse("dsc");
+  if (input.osc != nullptr && check(*input.osc)) return refuse("osc");
+  const GpsReceiverEpoch* other = settings_.local == Craft::kDsc ? input.osc : input.dsc;
+  CdgpsEpochInput in = input;
+  if (other != nullptr && other->t != m.t) (settings_.local == Craft::kDsc ? in.osc : in.dsc) = nullptr;  // not this epoch's
+  report.accepted = true;
+  m.compute_ranges(in, ephemerides, frame, report);
+  m.select(in, settings_.local);
+  m.assign_slots(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2), report);
+  m.assign_slots(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2), report);
+  m.predict_scalars(settings_.local);
+  m.start_ambiguities(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2));
+  m.start_ambiguities(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2));
+  m.order_by_consensus(m.graphic_scalars, m.graphic_count);
+  m.order_by_consensus(m.sdcp_scalars, m.sdcp_count);
+  m.process(settings_, report);
+  m.resolve(settings_, report);
+  return report;
+}
+
+}  // namespace visors::nav

@@ -1,0 +1,119 @@
+#pragma once
+// The carrier-phase differential GPS navigation filter each spacecraft runs on board (mission
+// paper sec. 4.2; navigation digest sec. 5-6): one extended Kalman filter estimating both
+// spacecraft (nav/navigation_state.hpp: 74 states), from the local receiver's GRAPHIC and the
+// SDCP of the satellites both receivers track (the remote receiver's phase comes over the
+// crosslink), with integer ambiguity resolution on the double differences of the SDCP
+// ambiguities.
+//
+// Epoch cycle (the caller's order): predict(t) to the measurements' time tag; apply_impulse() for
+// maneuvers executed since; update() with the epoch's observations:
+// 1. Ambiguity slots (nav/ambiguity_slots.hpp): a satellite new to a bank, or flagged by the
+//    loss-of-lock indicator, gets its slot (re)initialised from the measurement's residual with
+//    the prior variance (digest 5.4, large-variance method), so the same measurement then updates
+//    it; satellites no longer observed are released.
+// 2. Sequential scalar updates (nav/scalar_update.hpp, Joseph form): GRAPHIC first, then SDCP,
+//    each predicted once per epoch at the prior state and linearised there (the innovation of a
+//    later scalar is corrected by h (x - x_prior)). A rejected SDCP is a cycle slip the indicator
+//    missed: its slot is reinitialised and the measurement processed again (it then only sets the
+//    new ambiguity); a rejected GRAPHIC is a code outlier and is dropped.
+// 3. Integer ambiguity resolution: the SDCP slots updated this epoch form double differences
+//    against the one with the most epochs of continuous lock (nav/double_difference.hpp); the
+//    acceptance of nav/ambiguity_acceptance.hpp (success rate and ratio, partial fixing) decides;
+//    the fixed solution is the float state conditioned on the fixed integers
+//    (nav/fixed_solution.hpp), refused when an SDCP residual then fails the gate (wrong fix,
+//    digest 6.6). With hold, an accepted full fix is also fed back into the float filter as a
+//    pseudo-measurement; an SDCP of a held satellite that later fails its gate reinitialises that
+//    slot, which releases the held integer (the wrong-fix recovery).
+//
+// Time update: the mean of each spacecraft by RK4 under its on-board force model plus the
+// empirical acceleration (nav/orbit_time_update.hpp); the covariance with the short-step
+// transition and the Gauss-Markov noise of the empirical acceleration (nav/gauss_markov.hpp), a
+// random-walk receiver clock; phase-centre errors and ambiguities constant.
+//
+// Allocation-free after create(); no exception; inputs checked (nav/gps_observations.hpp) and a
+// bad epoch refused with its reason in the report.
+
+#include <memory>
+
+#include "core/earth_frames.hpp"
+#include "core/gps_time.hpp"
+#include "core/state_vector.hpp"
+#include "core/status.hpp"
+#include "dynamics/force_model.hpp"
+#include "gnss/ephemeris_set.hpp"
+#include "nav/ambiguity_acceptance.hpp"
+#include "nav/cdgps_settings.hpp"
+#include "nav/gps_observations.hpp"
+#include "nav/gps_range_model.hpp"
+#include "nav/navigation_state.hpp"
+
+namespace visors::nav {
+
+struct CdgpsEpochInput {
+  const GpsReceiverEpoch* dsc = nullptr;  // the DSC receiver's epoch (local or crosslinked), or none
+  const GpsReceiverEpoch* osc = nullptr;  // the OSC receiver's
+  AntennaGeometry dsc_antenna;
+  AntennaGeometry osc_antenna;
+};
+
+struct CdgpsEpochReport {
+  bool accepted = false;       // false: the epoch was refused (reason) and nothing changed
+  const char* reason = "";     // "not_initialised", "time_tag", "dsc", "osc" (the failing input)
+  int graphic_used = 0, graphic_rejected = 0;
+  int sdcp_used = 0, sdcp_rejected = 0;
+  int new_ambiguities = 0;     // slots (re)initialised: rises, flagged and detected slips
+  int detected_slips = 0;      // SDCP gate failures (slips the indicator did not flag)
+  int missing_ephemeris = 0;
+  double nis_sum = 0.0;        // sum of the accepted scalars' normalised innovations squared
+  int nis_count = 0;
+  int double_differences = 0;
+  AmbiguityFix fix{};
+  bool fix_applied = false;    // the fixed solution is valid for this epoch (x_fixed())
+  bool wrong_fix_refused = false;
+  bool held = false;           // the fix was fed back into the float filter
+};
+
+class CdgpsFilter {
+ public:
+  /// `dsc_model` and `osc_model`: each spacecraft's on-board force model (drag area, mass).
+  /// The error names the settings field.
+  static core::Result<CdgpsFilter> create(const CdgpsSettings& settings, dynamics::ForceModel dsc_model,
+                                          dynamics::ForceModel osc_model);
+
+  /// Starts at t from absolute states (e.g. single-point solutions) and receiver clocks [m], with
+  /// the settings' prior sigmas; every ambiguity slot empty.
+  void initialise(core::GpsTime t, const core::StateVector& dsc_gcrf, const core::StateVector& osc_gcrf,
+                  double dsc_clock_m, double osc_clock_m);
+  [[nodiscard]] bool initialised() const;
+
+  /// Time update to t >= epoch() (nothing when equal).
+  void predict(core::GpsTime t);
+  /// An impulse dv (GCRF) [m/s] of `craft` at the current epoch, executed with sigma [m/s] per axis.
+  void apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps, double sigma_mps);
+  /// Measurement update at the current epoch (the observations' time tag).
+  CdgpsEpochReport update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
+                          core::OnboardEarthFrame& frame);
+
+  [[nodiscard]] core::GpsTime epoch() const;
+  [[nodiscard]] const NavVector& x() const;
+  [[nodiscard]] const NavMatrix& P() const;
+  /// The fixed solution of the last update (valid when its report says fix_applied).
+  [[nodiscard]] const NavVector& x_fixed() const;
+  [[nodiscard]] const NavMatrix& P_fixed() const;
+  /// SI state of one spacecraft's centre of mass from x (or x_fixed()).
+  [[nodiscard]] static core::StateVector centre_of_mass(const NavVector& x, Craft craft);
+  [[nodiscard]] const CdgpsSettings& settings() const { return settings_; }
+
+  CdgpsFilter(CdgpsFilter&&) noexcept;
+  CdgpsFilter& operator=(CdgpsFilter&&) noexcept;
+  ~CdgpsFilter();
+
+ private:
+  struct Impl;
+  CdgpsFilter(const CdgpsSettings& settings, std::unique_ptr<Impl> impl);
+  CdgpsSettings settings_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace visors::nav

@@ -1,0 +1,39 @@
+#include "nav/cdgps_settings.hpp"
+
+#include <cmath>
+
+#include "nav/gauss_markov.hpp"
+
+namespace visors::nav {
+namespace {
+
+bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+
+}  // namespace
+
+std::optional<core::Error> check(const CdgpsSettings& s) {
+  if (s.local != Craft::kDsc && s.local != Craft::kOsc) return core::Error{"local", "must be dsc or osc"};
+  if (!positive(s.max_step_s)) return core::Error{"max_step_s", "must be a finite number > 0"};
+  if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_sigma_mps2)) return e;
+  const struct {
+    const char* field;
+    double value;
+  } sigmas[] = {{"clock_random_walk_m", s.clock_random_walk_m},
+                {"position_sigma_m", s.position_sigma_m},
+                {"velocity_sigma_mps", s.velocity_sigma_mps},
+                {"clock_sigma_m", s.clock_sigma_m},
+                {"phase_center_sigma_m", s.phase_center_sigma_m},
+                {"graphic_ambiguity_sigma_m", s.graphic_ambiguity_sigma_m},
+                {"sdcp_ambiguity_sigma_cycles", s.sdcp_ambiguity_sigma_cycles},
+                {"graphic_sigma_m", s.graphic_sigma_m},
+                {"sdcp_sigma_m", s.sdcp_sigma_m},
+                {"gate_sigmas", s.gate_sigmas},
+                {"hold_variance_cycles2", s.hold_variance_cycles2}};
+  for (const auto& [field, value] : sigmas) {
+    if (!positive(value)) return core::Error{field, "must be a finite number > 0"};
+  }
+  if (auto a = validate(s.acceptance); !a) return core::Error{"acceptance." + a.error().field, a.error().message};
+  return std::nullopt;
+}
+
+}  // namespace visors::nav

@@ -1,0 +1,45 @@
+#pragma once
+// Every tunable of the carrier-phase differential GPS filter (nav/cdgps_filter.hpp), with its
+// default and unit. Defaults: the navigation digest's (sec. 4.3, 5.2, 5.4, 6.4-6.5) and the
+// mission's receiver (20 cm code, 2 mm phase).
+
+#include <optional>
+
+#include "core/status.hpp"
+#include "nav/ambiguity_acceptance.hpp"
+#include "nav/navigation_state.hpp"
+
+namespace visors::nav {
+
+struct CdgpsSettings {
+  Craft local = Craft::kDsc;  // whose receiver gives the GRAPHIC measurements (the one running it)
+
+  // Dynamics (digest 5.2).
+  double max_step_s = 10.0;                // RK4 step of the mean [s]
+  double empirical_tau_s = 600.0;          // Gauss-Markov correlation time [s]
+  double empirical_sigma_mps2 = 5e-8;      // its steady-state sigma, each RTN axis [m/s^2]
+  double clock_random_walk_m = 10.0;       // receiver clock random walk, per sqrt(s) [m/sqrt(s)]
+
+  // Priors at initialise() and for new ambiguities (digest 5.4: large variance, then the update).
+  double position_sigma_m = 10.0;
+  double velocity_sigma_mps = 0.1;
+  double clock_sigma_m = 100.0;
+  double phase_center_sigma_m = 0.01;      // error of the phase-centre offset, each body axis [m]
+  double graphic_ambiguity_sigma_m = 10.0;
+  double sdcp_ambiguity_sigma_cycles = 100.0;
+
+  // Measurements (digest 4.3): GRAPHIC = (code + phase) / 2, SDCP = phase OSC - DSC.
+  double graphic_sigma_m = 0.10;           // ~ sqrt(code^2 + phase^2) / 2
+  double sdcp_sigma_m = 0.00283;           // sqrt(2) x 2 mm
+  double gate_sigmas = 5.0;                // scalar innovation gate [innovation sigmas]
+
+  // Integer ambiguity resolution (digest 6.4-6.5).
+  AcceptanceSettings acceptance{};
+  bool hold = true;                        // feed accepted full fixes back (fix-and-hold)
+  double hold_variance_cycles2 = 0.001;    // variance of the hold pseudo-measurement [cycles^2]
+};
+
+/// Each value checked; the error names the field.
+std::optional<core::Error> check(const CdgpsSettings& settings);
+
+}  // namespace visors::nav
