@@ -48,6 +48,8 @@ inline constexpr double kPhaseCenterUnit = 1e-3;  // [m] per state unit
 
 using NavVector = Eigen::Matrix<double, kNavStates, 1>;
 using NavMatrix = Eigen::Matrix<double, kNavStates, kNavStates>;
+/// One scalar measurement's partials dh/dx (a row of H), in state units.
+using NavRow = Eigen::Matrix<double, 1, kNavStates>;
 
 /// SI value of one unit of state i (m, m/s, m/s^2 or cycles): the diagonal of the scaling S with
 /// x_si = S x.

@@ -3,19 +3,24 @@
 // (support/allocation_counter.hpp, malloc level) around decorrelation, search, partial search and
 // acceptance, on 24-ambiguity dual-frequency problems and on the capacity-sized 64; and around the
 // SD -> DD transformation, the fixed constraints and the fixed-solution update of a filter of
-// 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2); and around the Gauss-Markov
-// chain (transition and process noise of the empirical accelerations).
+// 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2); around the Gauss-Markov
+// chain (transition and process noise of the empirical accelerations); and around the 74-state
+// navigation filter's ambiguity slots (acquire, reinitialise, release, checks) and its scalar
+// Joseph update (accepted, gated, refused).
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
+#include <memory>
 #include <random>
 #include <vector>
 
 #include "nav/ambiguity_acceptance.hpp"
+#include "nav/ambiguity_slots.hpp"
 #include "nav/double_difference.hpp"
 #include "nav/fixed_solution.hpp"
 #include "nav/gauss_markov.hpp"
 #include "nav/integer_least_squares.hpp"
+#include "nav/scalar_update.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/dd_geometry.hpp"
 
@@ -181,6 +186,58 @@ TEST(NavAllocation, GaussMarkovChainAllocatesNothing) {
               chain.noise += gauss_markov_chain(10.0, 1.0, 5e-8).noise;  // closed-form branch
             }),
             0);
+}
+
+// The 74-state filter, built (heap) before counting.
+struct NavFilter {
+  NavVector x = NavVector::Zero();
+  NavMatrix P = NavMatrix::Identity();
+  ScalarUpdateWorkspace ws;
+  AmbiguitySlotBank sdcp = AmbiguitySlotBank::create(state::kSdcpAmbiguities).value();
+};
+
+TEST(NavAllocation, AmbiguitySlotsAllocateNothing) {
+  auto f = std::make_unique<NavFilter>();
+  f->sdcp.release_all(f->x, f->P);
+  int refused = 0;
+  bool all_ok = true;
+  EXPECT_EQ(test::count_allocations([&] {
+              for (int prn = 1; prn <= kGpsSlots + 1; ++prn) {  // the 25th is refused: bank full
+                if (f->sdcp.acquire(prn, 0.5 * prn, 1e4, f->x, f->P) < 0) ++refused;
+              }
+              all_ok = f->sdcp.reinitialise(3, 1.0, 1e4, f->x, f->P) && f->sdcp.consistent(f->x, f->P);
+              for (const int slot : f->sdcp.active_slots()) all_ok = f->sdcp.release(slot, f->x, f->P) && all_ok;
+              all_ok = all_ok && f->sdcp.consistent(f->x, f->P);
+            }),
+            0);
+  EXPECT_EQ(refused, 1);
+  EXPECT_TRUE(all_ok);
+}
+
+TEST(NavAllocation, ScalarUpdateAllocatesNothing) {
+  auto f = std::make_unique<NavFilter>();
+  f->sdcp.release_all(f->x, f->P);
+  const int slot = f->sdcp.acquire(7, 2.0, 1e4, f->x, f->P);
+  ASSERT_GE(slot, 0);
+  NavRow h = NavRow::Zero();
+  h(state::position(Craft::kOsc)) = -0.6;
+  h(state::position(Craft::kDsc)) = 0.6;
+  h(f->sdcp.state_of(slot)) = 0.19;  // lambda [m/cycle]
+  ScalarUpdateStatus accepted = ScalarUpdateStatus::kInvalid;
+  ScalarUpdateStatus gated = ScalarUpdateStatus::kInvalid;
+  ScalarUpdateStatus refused = ScalarUpdateStatus::kAccepted;
+  bool row_ok = false;
+  EXPECT_EQ(test::count_allocations([&] {
+              row_ok = f->sdcp.row_on_active_only(h);
+              accepted = scalar_update(f->x, f->P, h, 0.01, 1e-5, 5.0, f->ws).status;
+              gated = scalar_update(f->x, f->P, h, 1e3, 1e-5, 5.0, f->ws).status;
+              refused = scalar_update(f->x, f->P, h, 0.01, -1.0, 5.0, f->ws).status;
+            }),
+            0);
+  EXPECT_TRUE(row_ok);
+  EXPECT_EQ(accepted, ScalarUpdateStatus::kAccepted);
+  EXPECT_EQ(gated, ScalarUpdateStatus::kRejected);
+  EXPECT_EQ(refused, ScalarUpdateStatus::kInvalid);
 }
 
 }  // namespace
