@@ -3,6 +3,8 @@
 // that physically resizes its matrices (std::vector + Eigen::MatrixXd holding the 26 core states
 // plus one state per tracked satellite; rows and columns inserted when a satellite rises, deleted
 // when it sets; dense textbook batch update), driven by the same scripted and random sequences.
+// After every step: the fixed filter's active subset equals the reference through the PRN maps,
+// the rest of its layout is parked (checked here and by consistent()), the counts agree.
 #include "nav/ambiguity_slots.hpp"
 
 #include <gtest/gtest.h>
@@ -449,6 +451,7 @@ struct Findings {
   double P_entrywise = 0.0;  // max_ij |P - P_ref|_ij / (sigma_i sigma_j)
   int worst_epoch = -1;      // of P_entrywise
   int inconsistent = 0;     // checks where consistent() failed on either bank
+  long unparked = 0;        // entries of x, P outside the active subset that are not parked
   int count_mismatches = 0;  // active_count != reference's, or a reference satellite without a slot
   int refusal_mismatches = 0;  // acquire/release refused when the reference expected otherwise, or not
   int gate_mismatches = 0;     // scalar_update's verdict differs from the reference's
@@ -577,6 +580,17 @@ void Twin::check(int epoch) {
     }
   }
   findings_.x_relative = std::max(findings_.x_relative, dx_max / x.cwiseAbs().maxCoeff());
+  // The rest of the 74-state layout, independently of consistent(): what a deleted state leaves,
+  // x = 0, P = 0 but the parked diagonal.
+  std::array<bool, kNavStates> in_subset{};
+  for (const int a : to_fixed) in_subset[a] = true;
+  for (int b = 0; b < kNavStates; ++b) {
+    if (!in_subset[b] && fixed_.x(b) != 0.0) ++findings_.unparked;
+    for (int a = 0; a < kNavStates; ++a) {
+      const double parked = a == b ? AmbiguitySlotBank::kParkedVariance : 0.0;
+      if (!(in_subset[a] && in_subset[b]) && fixed_.P(a, b) != parked) ++findings_.unparked;
+    }
+  }
   findings_.P_relative = std::max(findings_.P_relative, dP_max / P.cwiseAbs().maxCoeff());
   int active = 0;
   for (const int bank : {kGraphic, kSdcp}) {
@@ -687,6 +701,7 @@ TEST(AmbiguitySlotsAgainstResizingFilter, ScriptedRiseSetSlipSequence) {
   EXPECT_LT(f.P_entrywise, kTolerance);
   EXPECT_LT(f.x_entrywise, kTolerance);
   EXPECT_EQ(f.inconsistent, 0);
+  EXPECT_EQ(f.unparked, 0);
   EXPECT_EQ(f.count_mismatches, 0);
   EXPECT_EQ(f.refusal_mismatches, 0);
   EXPECT_EQ(f.gate_mismatches, 0);
@@ -767,6 +782,7 @@ TEST(AmbiguitySlotsAgainstResizingFilter, HundredThousandRandomEpochs) {
   EXPECT_LT(f.P_entrywise, kTolerance) << "worst at epoch " << f.worst_epoch;
   EXPECT_LT(f.x_entrywise, kTolerance);
   EXPECT_EQ(f.inconsistent, 0);
+  EXPECT_EQ(f.unparked, 0);
   EXPECT_EQ(f.count_mismatches, 0);  // no leak: the banks hold exactly the reference's satellites
   EXPECT_EQ(f.refusal_mismatches, 0);
   EXPECT_EQ(f.gate_mismatches, 0);
@@ -798,6 +814,7 @@ TEST(AmbiguitySlotsAgainstResizingFilter, FlightDynamicRangeAgreesToTheRoundOffO
   EXPECT_LT(f.P_entrywise, 1e-6) << "worst at epoch " << f.worst_epoch;
   EXPECT_LT(f.x_entrywise, 1e-6);
   EXPECT_EQ(f.inconsistent, 0);
+  EXPECT_EQ(f.unparked, 0);
   EXPECT_EQ(f.count_mismatches, 0);
   EXPECT_EQ(f.gate_mismatches, 0);
   RecordProperty("worst_P_relative", scientific(f.P_relative));
