@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "baseline/baseline_command.hpp"
+#include "nav/nav_command.hpp"
 #include "preview/preview_command.hpp"
 #include "propagate/propagate_command.hpp"
 #include "run/run_command.hpp"
@@ -122,6 +123,13 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   baseline->add_option("--out", baseline_options.out, "output folder")->capture_default_str();
 
+  visors::nav_app::NavOptions nav_options;
+  auto* nav = app.add_subcommand(
+      "nav", "replay a gnss-sim run through both spacecraft's carrier-phase GPS filters, scored against its truth");
+  nav->add_option("run_dir", nav_options.run_dir, "run directory written by 'visors gnss-sim'")->required();
+  nav->add_option("--out", nav_options.out, "output folder")->capture_default_str();
+  nav->add_option("--duration", nav_options.duration_s, "replay only the first S seconds (0: all)")->capture_default_str();
+
   std::string report_dir;
   auto* report = app.add_subcommand(
       "report", "render DIR/report.html (self-contained HTML, inline SVG) from a run directory");
@@ -142,6 +150,7 @@ int main(int argc, char** argv) {
   }
   if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out);
   if (baseline->parsed()) return visors::baseline_app::run_baseline_command(baseline_options);
+  if (nav->parsed()) return visors::nav_app::run_nav_command(nav_options);
   if (report->parsed()) return visors::report::run_report_command(report_dir);
   return 0;
 }

@@ -115,6 +115,16 @@ const NavMatrix& CdgpsFilter::P() const { return impl_->P; }
 const NavVector& CdgpsFilter::x_fixed() const { return impl_->x_fixed; }
 const NavMatrix& CdgpsFilter::P_fixed() const { return impl_->P_fixed; }
 
+CdgpsFilter::SlotList CdgpsFilter::sdcp_slots() const {
+  SlotList out;
+  for (int slot : impl_->sdcp.active_slots()) {
+    out.prn[static_cast<std::size_t>(out.count)] = impl_->sdcp.prn_of(slot);
+    out.state[static_cast<std::size_t>(out.count)] = impl_->sdcp.state_of(slot);
+    ++out.count;
+  }
+  return out;
+}
+
 core::StateVector CdgpsFilter::centre_of_mass(const NavVector& x, Craft craft) {
   return {x.segment<3>(state::position(craft)), state::kVelocityUnit * x.segment<3>(state::velocity(craft))};
 }
@@ -211,7 +221,12 @@ void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::Ep
     if (epochs[k] == nullptr) continue;
     const ReceiverEstimate receiver = receiver_estimate(x, kCrafts[k]);
     for (int i = 0; i < epochs[k]->count; ++i) {
-      const int prn = epochs[k]->observations[static_cast<std::size_t>(i)].prn;
+      const GpsObservation& o = epochs[k]->observations[static_cast<std::size_t>(i)];
+      if (!plausible(o)) {
+        ++report.implausible_observations;
+        continue;
+      }
+      const int prn = o.prn;
       const gnss::BroadcastEphemeris* e = eph.select(prn, t);
       if (e == nullptr) {
         ++report.missing_ephemeris;

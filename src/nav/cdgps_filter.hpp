@@ -34,6 +34,7 @@
 // Allocation-free after create(); no exception; inputs checked (nav/gps_observations.hpp) and a
 // bad epoch refused with its reason in the report.
 
+#include <array>
 #include <memory>
 
 #include "core/earth_frames.hpp"
@@ -65,6 +66,7 @@ struct CdgpsEpochReport {
   int new_ambiguities = 0;     // slots (re)initialised: rises, flagged and detected slips
   int detected_slips = 0;      // SDCP gate failures (slips the indicator did not flag)
   int missing_ephemeris = 0;
+  int implausible_observations = 0;  // skipped (nav/gps_observations.hpp plausible())
   double nis_sum = 0.0;        // sum of the accepted scalars' normalised innovations squared
   int nis_count = 0;
   int double_differences = 0;
@@ -101,6 +103,13 @@ class CdgpsFilter {
   /// The fixed solution of the last update (valid when its report says fix_applied).
   [[nodiscard]] const NavVector& x_fixed() const;
   [[nodiscard]] const NavMatrix& P_fixed() const;
+  /// The satellites holding an SDCP slot: PRN and ambiguity state index, `count` of them.
+  struct SlotList {
+    int count = 0;
+    std::array<int, kGpsSlots> prn{};
+    std::array<int, kGpsSlots> state{};
+  };
+  [[nodiscard]] SlotList sdcp_slots() const;
   /// SI state of one spacecraft's centre of mass from x (or x_fixed()).
   [[nodiscard]] static core::StateVector centre_of_mass(const NavVector& x, Craft craft);
   [[nodiscard]] const CdgpsSettings& settings() const { return settings_; }

@@ -28,9 +28,14 @@ struct GpsReceiverEpoch {
   [[nodiscard]] const GpsObservation* find(int prn) const;
 };
 
-/// Input validation at the filter's boundary: count in range, PRNs in 1..32 and distinct, values
-/// finite, code in [1.9e7, 3.0e7] m (a LEO receiver's GPS ranges, plus a clock offset of up to
-/// 1 ms). The error names the field ("observations[3].code_m").
+/// Input validation of an epoch's structure at the filter's boundary: count in range, PRNs in
+/// 1..32 and distinct. The error names the field ("observations[3].prn"); such an epoch is refused.
 std::optional<core::Error> check(const GpsReceiverEpoch& epoch);
+
+/// Whether one observation's values are usable: finite, code in [1.5e7, 3.5e7] m (a LEO
+/// receiver's geometric ranges to GPS, 1.97e7-2.6e7 m, plus satellite and receiver clock offsets
+/// of a few milliseconds: a broadcast a_f0 of 2.3 ms was seen in the simulation's navigation
+/// file). An implausible observation is skipped and counted, the rest of its epoch used.
+bool plausible(const GpsObservation& observation);
 
 }  // namespace visors::nav

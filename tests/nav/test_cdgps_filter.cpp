@@ -84,6 +84,7 @@ struct RunOutcome {
 RunOutcome simulate(int epochs, int slip_epoch = -1) {
   Simulation sim;
   CdgpsSettings settings;
+  settings.graphic_sigma_m = 0.1;  // no broadcast error here: (0.2 m code + 2 mm phase) / 2
   auto filter = CdgpsFilter::create(settings, model(), model()).value();
   core::GpsTime t = epoch();
   const Eigen::Vector3d dr(4.0, -3.0, 2.5), dv(0.03, 0.02, -0.04);
@@ -161,6 +162,59 @@ TEST(CdgpsFilterSlip, UnflaggedSlipIsDetectedAndRecovered) {
   const RunOutcome r = simulate(420, 300);
   EXPECT_EQ(r.detected_slips, 1);
   EXPECT_LT(r.relative_error_m, 0.005);
+}
+
+// Refusals name their reason and change nothing.
+TEST(CdgpsFilterInput, RefusesAnEpochBeforeInitialisation) {
+  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
+  Simulation sim;
+  const GpsReceiverEpoch dsc = sim.observe(epoch(), 0), osc = sim.observe(epoch(), 1);
+  EXPECT_STREQ(filter.update({&dsc, &osc, {}, {}}, sim.ephemerides, sim.frame).reason, "not_initialised");
+}
+
+TEST(CdgpsFilterInput, RefusesAnEpochOfAnotherTime) {
+  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
+  Simulation sim;
+  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  const GpsReceiverEpoch dsc = sim.observe(epoch() + 1.0, 0), osc = sim.observe(epoch() + 1.0, 1);
+  EXPECT_STREQ(filter.update({&dsc, &osc, {}, {}}, sim.ephemerides, sim.frame).reason, "time_tag");
+}
+
+TEST(CdgpsFilterInput, RefusesARepeatedPrnAndLeavesTheStateUntouched) {
+  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
+  Simulation sim;
+  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  GpsReceiverEpoch dsc = sim.observe(epoch(), 0);
+  const GpsReceiverEpoch osc = sim.observe(epoch(), 1);
+  dsc.observations[1].prn = dsc.observations[0].prn;
+  const NavVector before = filter.x();
+  EXPECT_STREQ(filter.update({&dsc, &osc, {}, {}}, sim.ephemerides, sim.frame).reason, "dsc");
+  EXPECT_EQ(filter.x(), before);
+}
+
+// An implausible code is skipped and counted; the rest of the epoch is used.
+TEST(CdgpsFilterInput, SkipsAnImplausibleObservation) {
+  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
+  Simulation sim;
+  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  GpsReceiverEpoch dsc = sim.observe(epoch(), 0);
+  const GpsReceiverEpoch osc = sim.observe(epoch(), 1);
+  dsc.observations[0].code_m = std::nan("");
+  const CdgpsEpochReport r = filter.update({&dsc, &osc, {}, {}}, sim.ephemerides, sim.frame);
+  EXPECT_EQ(r.implausible_observations, 1);
+  EXPECT_EQ(r.graphic_used, dsc.count - 1);
+}
+
+TEST(CdgpsSettings, NameTheFieldOfABadValue) {
+  CdgpsSettings s;
+  s.sdcp_sigma_m = -1.0;
+  EXPECT_EQ(check(s)->field, "sdcp_sigma_m");
+}
+
+TEST(CdgpsSettings, NameTheAcceptanceField) {
+  CdgpsSettings s;
+  s.acceptance.min_ratio = 0.5;
+  EXPECT_EQ(check(s)->field, "acceptance.min_ratio");
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 // SD -> DD transformation, the fixed constraints and the fixed-solution update of a filter of
 // 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2); around the Gauss-Markov
 // chain (transition and process noise of the empirical accelerations); and around the 74-state
-// navigation filter's ambiguity slots (acquire, reinitialise, release, checks) and its scalar
-// Joseph update (accepted, gated, refused).
+// navigation filter's ambiguity slots (acquire, reinitialise, release, checks), its scalar
+// Joseph update (accepted, gated, refused) and its whole epoch (CdgpsFilter predict + update).
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
@@ -16,6 +16,7 @@
 
 #include "nav/ambiguity_acceptance.hpp"
 #include "nav/ambiguity_slots.hpp"
+#include "nav/cdgps_filter.hpp"
 #include "nav/double_difference.hpp"
 #include "nav/fixed_solution.hpp"
 #include "nav/gauss_markov.hpp"
@@ -23,6 +24,7 @@
 #include "nav/scalar_update.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/dd_geometry.hpp"
+#include "support/synthetic_gps.hpp"
 
 namespace visors::nav {
 namespace {
@@ -238,6 +240,47 @@ TEST(NavAllocation, ScalarUpdateAllocatesNothing) {
   EXPECT_EQ(accepted, ScalarUpdateStatus::kAccepted);
   EXPECT_EQ(gated, ScalarUpdateStatus::kRejected);
   EXPECT_EQ(refused, ScalarUpdateStatus::kInvalid);
+}
+
+
+// The navigation filter's epoch (time update, slot management, GRAPHIC and SDCP updates, integer
+// resolution, fixed solution, hold) on the synthetic constellation (support/synthetic_gps.hpp),
+// after a warm-up that fixes the integers: nothing allocated.
+TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) {
+  const core::GpsTime t0 = core::GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kGps).value();
+  const auto records = test::synthetic_constellation(t0);
+  const auto ephemerides = gnss::EphemerisSet::screen(records);
+  core::OnboardEarthFrame frame;
+  const auto model = [] {
+    dynamics::ForceModelData data;
+    data.gravity_field = dynamics::embedded_gravity_field();
+    return dynamics::ForceModel::create(dynamics::ForceModelConfig::gravity_only(8, 8), {}, std::move(data)).value();
+  };
+  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
+  const double r = 6878137.0, v = std::sqrt(3.986004415e14 / r);
+  const core::StateVector dsc{Eigen::Vector3d(r, 0, 0), Eigen::Vector3d(0, v * 0.13, v * 0.99)};
+  const core::StateVector osc{dsc.r + Eigen::Vector3d(0, 0, 40), dsc.v};
+  std::vector<double> integers(33, 1000.0);
+  std::mt19937_64 rng(5);
+  std::vector<GpsReceiverEpoch> dsc_epochs, osc_epochs;
+  for (int n = 0; n < 40; ++n) {  // static truth states: enough for the algebra, not for dynamics
+    const core::GpsTime t = t0 + static_cast<double>(n);
+    dsc_epochs.push_back(test::synthetic_observations(t, {dsc.r, dsc.v, 10.0, {}}, records, frame, integers, 0.1, 0.2, 0.002, rng));
+    osc_epochs.push_back(test::synthetic_observations(t, {osc.r, osc.v, -5.0, {}}, records, frame, integers, 0.3, 0.2, 0.002, rng));
+  }
+  filter.initialise(t0, dsc, osc, 10.0, -5.0);
+  const auto epoch = [&](int n) {
+    filter.predict(t0 + static_cast<double>(n));
+    return filter.update({&dsc_epochs[static_cast<std::size_t>(n)], &osc_epochs[static_cast<std::size_t>(n)], {}, {}},
+                         ephemerides, frame);
+  };
+  for (int n = 0; n < 30; ++n) epoch(n);
+  int updates = 0;
+  EXPECT_EQ(test::count_allocations([&] {
+              for (int n = 30; n < 40; ++n) updates += epoch(n).sdcp_used;
+            }),
+            0);
+  EXPECT_GT(updates, 0);
 }
 
 }  // namespace

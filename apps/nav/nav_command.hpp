@@ -1,0 +1,23 @@
+#pragma once
+// `visors nav RUN_DIR [--out DIR] [--duration S]`: replays a `visors gnss-sim` run directory
+// through the on-board carrier-phase differential GPS filter (src/nav/cdgps_filter.hpp) of each
+// spacecraft at 1 Hz, and scores it against the run's truth: relative position and velocity
+// (OSC minus DSC, RTN of the DSC), absolute position and velocity, fix rate, time to first fix,
+// wrong fixes (a full fix whose double-difference integers differ from the truth), NIS.
+// Writes DIR/nav_<craft>.csv (one row per epoch) and DIR/summary.json.
+
+#include <string>
+
+namespace visors::nav_app {
+
+struct NavOptions {
+  std::string run_dir;
+  std::string out = "out/nav";
+  double duration_s = 0.0;  // 0: the whole run
+};
+
+/// The process exit code: 0 on success, 2 on bad input (the message names the option or file),
+/// 1 when the outputs cannot be written.
+int run_nav_command(const NavOptions& options);
+
+}  // namespace visors::nav_app
