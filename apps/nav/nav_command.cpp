@@ -73,6 +73,7 @@ struct EpochScore {
   double nis_sum = 0.0;
   int nis_count = 0, detected_slips = 0;
   double step_us = 0.0;
+  double nees = 0.0;  // of the antennas' relative position (3 degrees of freedom)
 };
 
 struct Replay {
@@ -101,6 +102,19 @@ bool wrong_fix(const nav::CdgpsFilter& filter, const std::map<int, std::pair<dou
   return false;
 }
 
+// Normalised estimation error squared of the antennas' relative position, r_osc + C_osc p_osc -
+// r_dsc - C_dsc p_dsc, with its covariance J P J' (J over the scaled states).
+double antenna_nees(const nav::NavMatrix& P, const Eigen::Vector3d& error_gcrf, const Eigen::Matrix3d& c_dsc,
+                    const Eigen::Matrix3d& c_osc) {
+  Eigen::Matrix<double, 3, nav::kNavStates> J = Eigen::Matrix<double, 3, nav::kNavStates>::Zero();
+  J.block<3, 3>(0, nav::state::position(Craft::kOsc)) = Eigen::Matrix3d::Identity();
+  J.block<3, 3>(0, nav::state::position(Craft::kDsc)) = -Eigen::Matrix3d::Identity();
+  J.block<3, 3>(0, nav::state::phase_center(Craft::kOsc)) = nav::state::kPhaseCenterUnit * c_osc;
+  J.block<3, 3>(0, nav::state::phase_center(Craft::kDsc)) = -nav::state::kPhaseCenterUnit * c_dsc;
+  const Eigen::Matrix3d S = J * P * J.transpose();
+  return error_gcrf.dot(S.ldlt().solve(error_gcrf));
+}
+
 EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r, const RunInputs& in, double t_s,
                  Craft local) {
   EpochScore e;
@@ -127,6 +141,8 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   };
   const Eigen::Vector3d com_offsets = lever_error(osc, Craft::kOsc, 1) - lever_error(dsc, Craft::kDsc, 0);
   e.relative_antenna_rtn_m = e.relative_position_rtn_m + to_rtn * com_offsets;
+  e.nees = antenna_nees(r.fix_applied ? filter.P_fixed() : filter.P(), to_rtn.transpose() * e.relative_antenna_rtn_m,
+                        antenna_for(dsc, t, in.scenario).body_to_gcrf, antenna_for(osc, t, in.scenario).body_to_gcrf);
   const core::StateVector& own_truth = local == Craft::kDsc ? dsc : osc;
   const core::StateVector& own = local == Craft::kDsc ? est_dsc : est_osc;
   e.absolute_position_m = (own.r - own_truth.r).norm();
@@ -255,6 +271,7 @@ double percentile(std::vector<double> v, double p) {
 // Error statistics over a window of epochs.
 struct WindowStats {
   std::vector<double> rel_pos, rel_antenna, rel_vel, abs_pos, abs_vel;
+  double nees_sum = 0.0;
   double worst = 0.0, worst_antenna = 0.0;
   int fixed = 0, partial = 0, wrong = 0;
 
@@ -269,6 +286,7 @@ struct WindowStats {
     fixed += std::string_view(e.status) == "fixed" ? 1 : 0;
     partial += std::string_view(e.status) == "partial" ? 1 : 0;
     wrong += e.wrong_fix ? 1 : 0;
+    nees_sum += e.nees;
   }
 
   [[nodiscard]] Json json() const {
@@ -283,7 +301,8 @@ struct WindowStats {
                 {"relative_antenna_worst_m", worst_antenna},
                 {"relative_velocity_rms_mps", rms(rel_vel)},
                 {"absolute_position_rms_m", rms(abs_pos)},
-                {"absolute_velocity_rms_mps", rms(abs_vel)}};
+                {"absolute_velocity_rms_mps", rms(abs_vel)},
+                {"antenna_nees_mean", n > 0 ? nees_sum / n : 0.0}};
   }
 };
 
@@ -336,11 +355,13 @@ void write_epochs(const Replay& r, const std::filesystem::path& dir) {
 
 void print_window(const char* label, const Json& w) {
   fmt::print("    {}: fix {:.2f} %, partial {:.2f} %, wrong-fix epochs {}; relative position {:.2f} mm RMS (worst {:.2f}), "
-             "antennas {:.2f} mm RMS (worst {:.2f}); relative velocity {:.1f} um/s RMS; absolute {:.2f} m, {:.2f} mm/s RMS\n",
+             "antennas {:.2f} mm RMS (worst {:.2f}, NEES {:.2f} of 3); relative velocity {:.1f} um/s RMS; absolute {:.2f} m, "
+             "{:.2f} mm/s RMS\n",
              label, 100.0 * w["fix_rate"].get<double>(), 100.0 * w["partial_rate"].get<double>(),
              w["wrong_fix_epochs"].get<int>(), 1e3 * w["relative_position_rms_m"].get<double>(),
              1e3 * w["relative_position_worst_m"].get<double>(), 1e3 * w["relative_antenna_rms_m"].get<double>(),
-             1e3 * w["relative_antenna_worst_m"].get<double>(), 1e6 * w["relative_velocity_rms_mps"].get<double>(),
+             1e3 * w["relative_antenna_worst_m"].get<double>(), w["antenna_nees_mean"].get<double>(),
+             1e6 * w["relative_velocity_rms_mps"].get<double>(),
              w["absolute_position_rms_m"].get<double>(), 1e3 * w["absolute_velocity_rms_mps"].get<double>());
 }
 
