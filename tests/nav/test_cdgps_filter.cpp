@@ -164,6 +164,13 @@ TEST(CdgpsFilterSlip, UnflaggedSlipIsDetectedAndRecovered) {
   EXPECT_LT(r.relative_error_m, 0.005);
 }
 
+// A filter started at the simulation's true states.
+CdgpsFilter initialised_filter(const Simulation& sim) {
+  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
+  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  return filter;
+}
+
 // Refusals name their reason and change nothing.
 TEST(CdgpsFilterInput, RefusesAnEpochBeforeInitialisation) {
   auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
@@ -173,17 +180,15 @@ TEST(CdgpsFilterInput, RefusesAnEpochBeforeInitialisation) {
 }
 
 TEST(CdgpsFilterInput, RefusesAnEpochOfAnotherTime) {
-  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
   Simulation sim;
-  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  CdgpsFilter filter = initialised_filter(sim);
   const GpsReceiverEpoch dsc = sim.observe(epoch() + 1.0, 0), osc = sim.observe(epoch() + 1.0, 1);
   EXPECT_STREQ(filter.update({&dsc, &osc, {}, {}}, sim.ephemerides, sim.frame).reason, "time_tag");
 }
 
 TEST(CdgpsFilterInput, RefusesARepeatedPrnAndLeavesTheStateUntouched) {
-  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
   Simulation sim;
-  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  CdgpsFilter filter = initialised_filter(sim);
   GpsReceiverEpoch dsc = sim.observe(epoch(), 0);
   const GpsReceiverEpoch osc = sim.observe(epoch(), 1);
   dsc.observations[1].prn = dsc.observations[0].prn;
@@ -194,9 +199,8 @@ TEST(CdgpsFilterInput, RefusesARepeatedPrnAndLeavesTheStateUntouched) {
 
 // An implausible code is skipped and counted; the rest of the epoch is used.
 TEST(CdgpsFilterInput, SkipsAnImplausibleObservation) {
-  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
   Simulation sim;
-  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  CdgpsFilter filter = initialised_filter(sim);
   GpsReceiverEpoch dsc = sim.observe(epoch(), 0);
   const GpsReceiverEpoch osc = sim.observe(epoch(), 1);
   dsc.observations[0].code_m = std::nan("");
