@@ -64,6 +64,7 @@ struct CdgpsFilter::Impl {
   std::array<Scalar, kGpsSlots> sdcp_scalars{};
   int graphic_count = 0;
   int sdcp_count = 0;
+  bool fixed_valid = false;  // x_fixed, P_fixed hold this epoch's fixed solution
   Eigen::Matrix<double, kMaxAmbiguities, kNavStates> C;
   Eigen::Matrix<double, kMaxAmbiguities, 1> z_fixed;
   std::array<Eigen::Index, kGpsSlots> dd_others{};
@@ -200,6 +201,21 @@ void CdgpsFilter::predict(core::GpsTime t) {
   }
   m.P = (0.5 * (m.P + m.P.transpose())).eval();
   m.t = t;
+  m.fixed_valid = false;  // the fixed solution was of the previous epoch
+}
+
+ScalarUpdateStatus CdgpsFilter::update_laser_range(double z_m, double sigma_m, const LaserRangeGeometry& geometry) {
+  Impl& m = *impl_;
+  if (!m.initialised || !std::isfinite(z_m) || !(sigma_m > 0.0)) return ScalarUpdateStatus::kInvalid;
+  const MeasurementPrediction p = predict_laser_range(m.x, geometry);
+  const auto status =
+      scalar_update(m.x, m.P, p.h, z_m - p.value_m, sigma_m * sigma_m, settings_.gate_sigmas, m.workspace).status;
+  if (m.fixed_valid) {
+    const MeasurementPrediction fixed = predict_laser_range(m.x_fixed, geometry);
+    (void)scalar_update(m.x_fixed, m.P_fixed, fixed.h, z_m - fixed.value_m, sigma_m * sigma_m, settings_.gate_sigmas,
+                        m.workspace);
+  }
+  return status;
 }
 
 void CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps, double sigma_mps) {
@@ -445,6 +461,7 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.order_by_consensus(m.sdcp_scalars, m.sdcp_count);
   m.process(settings_, report);
   m.resolve(settings_, report);
+  m.fixed_valid = report.fix_applied;
   return report;
 }
 

@@ -47,7 +47,9 @@
 #include "nav/cdgps_settings.hpp"
 #include "nav/gps_observations.hpp"
 #include "nav/gps_range_model.hpp"
+#include "nav/laser_range_model.hpp"
 #include "nav/navigation_state.hpp"
+#include "nav/scalar_update.hpp"
 
 namespace visors::nav {
 
@@ -96,6 +98,11 @@ class CdgpsFilter {
   /// Measurement update at the current epoch (the observations' time tag).
   CdgpsEpochReport update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
                           core::OnboardEarthFrame& frame);
+
+  /// One laser-rangefinder range z [m] at the current epoch (nav/laser_range_model.hpp), noise
+  /// sigma [m], gated like the GPS scalars; applied to the float filter, and to the fixed solution
+  /// of this epoch when there is one. The outcome (accepted, rejected: an outlier, or invalid).
+  ScalarUpdateStatus update_laser_range(double z_m, double sigma_m, const LaserRangeGeometry& geometry);
 
   [[nodiscard]] core::GpsTime epoch() const;
   [[nodiscard]] const NavVector& x() const;
