@@ -129,6 +129,16 @@ int main(int argc, char** argv) {
   nav->add_option("run_dir", nav_options.run_dir, "run directory written by 'visors gnss-sim'")->required();
   nav->add_option("--out", nav_options.out, "output folder")->capture_default_str();
   nav->add_option("--duration", nav_options.duration_s, "replay only the first S seconds (0: all)")->capture_default_str();
+  nav->add_option("--crosslink-drop", nav_options.crosslink_drop, "probability that the other receiver's epoch is lost")
+      ->capture_default_str();
+  std::vector<double> outage;
+  nav->add_option("--outage", outage, "GPS outage of both receivers: START DURATION [s]")->expected(2);
+  nav->callback([&] {
+    if (outage.size() == 2) {
+      nav_options.outage_start_s = outage[0];
+      nav_options.outage_s = outage[1];
+    }
+  });
 
   std::string report_dir;
   auto* report = app.add_subcommand(

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <random>
 #include <vector>
 
 #include <fmt/core.h>
@@ -86,17 +87,26 @@ struct Replay {
 
 long long key_ms(double t_s) { return std::llround(t_s * 1000.0); }
 
-// A full fix is wrong when any double difference of the fixed SDCP ambiguities differs from the
-// truth's by more than half a cycle.
-bool wrong_fix(const nav::CdgpsFilter& filter, const std::map<int, std::pair<double, double>>& truth) {
+// A full fix is wrong when any of the epoch's double differences of the fixed SDCP ambiguities
+// differs from the truth's by more than half a cycle.
+bool wrong_fix(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
+               const std::map<int, std::pair<double, double>>& truth) {
   const auto slots = filter.sdcp_slots();
+  const auto state_of = [&slots](int prn) {
+    for (int i = 0; i < slots.count; ++i) {
+      if (slots.prn[static_cast<std::size_t>(i)] == prn) return slots.state[static_cast<std::size_t>(i)];
+    }
+    return -1;
+  };
   const auto true_sd = [&truth](int prn) {
     const auto it = truth.find(prn);
     return it == truth.end() ? NAN : it->second.second - it->second.first;
   };
-  for (int j = 1; j < slots.count; ++j) {
-    const double estimated = filter.x_fixed()(slots.state[static_cast<std::size_t>(j)]) - filter.x_fixed()(slots.state[0]);
-    const double expected = true_sd(slots.prn[static_cast<std::size_t>(j)]) - true_sd(slots.prn[0]);
+  const int reference = r.dd_prns[0];
+  for (int j = 1; j <= r.double_differences; ++j) {
+    const int prn = r.dd_prns[static_cast<std::size_t>(j)];
+    const double estimated = filter.x_fixed()(state_of(prn)) - filter.x_fixed()(state_of(reference));
+    const double expected = true_sd(prn) - true_sd(reference);
     if (std::isfinite(expected) && std::abs(estimated - expected) > 0.5) return true;
   }
   return false;
@@ -149,7 +159,7 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   e.absolute_velocity_mps = (own.v - own_truth.v).norm();
   if (full) {
     const auto phases = in.phase_truth.find(key_ms(t_s));
-    e.wrong_fix = phases != in.phase_truth.end() && wrong_fix(filter, phases->second);
+    e.wrong_fix = phases != in.phase_truth.end() && wrong_fix(filter, r, phases->second);
   }
   e.double_differences = r.double_differences;
   e.satellites = r.sdcp_used;
@@ -220,7 +230,26 @@ core::EarthOrientation uplinked_earth_orientation(const sim::CampaignScenario& s
   return at.ok() ? at.value() : core::EarthOrientation{};
 }
 
-Replay replay(const RunInputs& in, Craft local, double duration_s) {
+// Faults injected by the replay (the data stay those of the run): crosslink drops of the other
+// receiver's epoch, and a GPS outage of both receivers, after which every satellite is
+// re-acquired (loss of lock flagged on its first epoch back).
+struct ReplayFaults {
+  double crosslink_drop = 0.0;   // probability per epoch
+  double outage_start_s = -1.0;  // [s after the scenario start]; < 0: none
+  double outage_s = 0.0;
+};
+
+bool in_outage(const ReplayFaults& f, double t_s) {
+  return f.outage_start_s >= 0.0 && t_s >= f.outage_start_s && t_s < f.outage_start_s + f.outage_s;
+}
+
+nav::GpsReceiverEpoch reacquired(const nav::GpsReceiverEpoch& e) {
+  nav::GpsReceiverEpoch out = e;
+  for (int i = 0; i < out.count; ++i) out.observations[static_cast<std::size_t>(i)].loss_of_lock = true;
+  return out;
+}
+
+Replay replay(const RunInputs& in, Craft local, double duration_s, const ReplayFaults& faults) {
   Replay out;
   out.local = local;
   out.name = local == Craft::kDsc ? "dsc" : "osc";
@@ -231,11 +260,30 @@ Replay replay(const RunInputs& in, Craft local, double duration_s) {
   nav::CdgpsFilter f = std::move(created).value();
   core::OnboardEarthFrame frame(uplinked_earth_orientation(in.scenario));
   ColdStart cold;
+  std::mt19937_64 rng(in.scenario.seed + 7 + static_cast<std::uint64_t>(local));  // the drops
+  std::bernoulli_distribution drop(faults.crosslink_drop);
+  bool back_from_outage = false;
+  nav::GpsReceiverEpoch flagged[2];
   for (std::size_t i = 0; i < in.dsc.size(); ++i) {
     const core::GpsTime t = in.dsc[i].t;
     const double t_s = t.seconds_since(in.scenario.t0);
     if (duration_s > 0.0 && t_s > duration_s) break;
     const nav::GpsReceiverEpoch* epochs[2] = {&in.dsc[i], at(in.osc, i, t)};
+    if (f.initialised() && in_outage(faults, t_s)) {
+      f.predict(t);
+      EpochScore e = score(f, nav::CdgpsEpochReport{}, in, t_s, local);
+      e.status = "outage";
+      out.epochs.push_back(e);
+      back_from_outage = true;
+      continue;
+    }
+    if (back_from_outage) {
+      for (int k = 0; k < 2; ++k) {
+        if (epochs[k] != nullptr) epochs[k] = &(flagged[k] = reacquired(*epochs[k]));
+      }
+      back_from_outage = false;
+    }
+    if (drop(rng)) epochs[local == Craft::kDsc ? 1 : 0] = nullptr;  // the crosslinked epoch lost
     if (!f.initialised()) {
       if (try_cold_start(f, cold, epochs, in, frame)) out.start_s = t_s;
       continue;
@@ -313,9 +361,13 @@ constexpr double kConvergenceS = 300.0;  // the "converged" window starts this l
 Json summarise(const Replay& r) {
   WindowStats after_fix, converged;
   std::vector<double> steps;
-  int slips = 0, nis_count = 0;
-  double nis = 0.0;
+  int slips = 0, nis_count = 0, wrong_run = 0, longest_wrong_run = 0;
+  double nis = 0.0, outage_end_s = -1.0, refix_s = -1.0;
   for (const EpochScore& e : r.epochs) {
+    if (std::string_view(e.status) == "outage") outage_end_s = e.t_s + 1.0;
+    if (outage_end_s >= 0.0 && refix_s < 0.0 && std::string_view(e.status) == "fixed") refix_s = e.t_s - outage_end_s;
+    wrong_run = e.wrong_fix ? wrong_run + 1 : 0;
+    longest_wrong_run = std::max(longest_wrong_run, wrong_run);
     steps.push_back(e.step_us);
     slips += e.detected_slips;
     nis += e.nis_sum;
@@ -331,6 +383,8 @@ Json summarise(const Replay& r) {
               {"after_first_fix", after_fix.json()},
               {"converged", converged.json()},
               {"detected_slips", slips},
+              {"longest_wrong_fix_s", longest_wrong_run},
+              {"refix_after_outage_s", refix_s},
               {"nis_mean", nis_count > 0 ? nis / nis_count : 0.0},
               {"step_us", {{"median", percentile(steps, 0.5)}, {"p99_9", percentile(steps, 0.999)}}}};
 }
@@ -371,6 +425,10 @@ void print_overview(const Json& s) {
              s["filter"].get<std::string>(), s["start_s"].get<double>(), s["time_to_first_fix_s"].get<double>(),
              s["nis_mean"].get<double>(), s["detected_slips"].get<int>(), s["step_us"]["median"].get<double>(),
              s["step_us"]["p99_9"].get<double>());
+  if (s["refix_after_outage_s"].get<double>() >= 0.0) {
+    fmt::print("    refixed {:.0f} s after the outage; longest wrong fix held {} s\n", s["refix_after_outage_s"].get<double>(),
+               s["longest_wrong_fix_s"].get<int>());
+  }
   print_window("after the first fix", s["after_first_fix"]);
   print_window("from 300 s after it", s["converged"]);
 }
@@ -381,6 +439,8 @@ int run_nav_command(const NavOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   try {
     if (!(options.duration_s >= 0.0)) throw InputError("--duration: must be >= 0 s");
+    if (!(options.crosslink_drop >= 0.0 && options.crosslink_drop <= 1.0)) throw InputError("--crosslink-drop: must be in [0, 1]");
+    if (!(options.outage_s >= 0.0)) throw InputError("--outage: the duration must be >= 0 s");
     auto inputs = read_run(options.run_dir);
     if (!inputs) throw InputError(inputs.error().describe());
     if (inputs.value().scenario.gnss.attitude != "nominal") {
@@ -391,7 +451,8 @@ int run_nav_command(const NavOptions& options) {
     Json summary{{"run_dir", options.run_dir}, {"filters", Json::array()}};
     fmt::print("visors nav: {} ({} epochs)\n", options.run_dir, inputs.value().dsc.size());
     for (Craft local : {Craft::kDsc, Craft::kOsc}) {
-      const Replay r = replay(inputs.value(), local, options.duration_s);
+      const Replay r = replay(inputs.value(), local, options.duration_s,
+                              {options.crosslink_drop, options.outage_start_s, options.outage_s});
       const Json s = summarise(r);
       write_epochs(r, options.out);
       print_overview(s);

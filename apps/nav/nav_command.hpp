@@ -1,5 +1,6 @@
 #pragma once
-// `visors nav RUN_DIR [--out DIR] [--duration S]`: replays a `visors gnss-sim` run directory
+// `visors nav RUN_DIR [--out DIR] [--duration S] [--crosslink-drop P] [--outage START DURATION]`:
+// replays a `visors gnss-sim` run directory
 // through the on-board carrier-phase differential GPS filter (src/nav/cdgps_filter.hpp) of each
 // spacecraft at 1 Hz, and scores it against the run's truth: relative position and velocity
 // (OSC minus DSC, RTN of the DSC), absolute position and velocity, fix rate, time to first fix,
@@ -14,6 +15,10 @@ struct NavOptions {
   std::string run_dir;
   std::string out = "out/nav";
   double duration_s = 0.0;  // 0: the whole run
+  // Faults injected by the replay (the run's data unchanged otherwise).
+  double crosslink_drop = 0.0;   // probability that the other receiver's epoch is lost
+  double outage_start_s = -1.0;  // GPS outage of both receivers from this time [s]; < 0: none
+  double outage_s = 0.0;         // its duration [s]
 };
 
 /// The process exit code: 0 on success, 2 on bad input (the message names the option or file),

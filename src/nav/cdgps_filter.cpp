@@ -60,6 +60,7 @@ struct CdgpsFilter::Impl {
   NavMatrix P_fixed = NavMatrix::Identity();
   ScalarUpdateWorkspace workspace;
   std::array<int, kGpsSlots> lock{};  // epochs of continuous SDCP lock per slot
+  std::array<core::GpsTime, kGpsSlots> graphic_last{}, sdcp_last{};  // last epoch each slot was measured
   std::array<Scalar, kGpsSlots> graphic_scalars{};
   std::array<Scalar, kGpsSlots> sdcp_scalars{};
   int graphic_count = 0;
@@ -78,7 +79,8 @@ struct CdgpsFilter::Impl {
   void compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph, core::OnboardEarthFrame& frame,
                       CdgpsEpochReport& report);
   void select(const CdgpsEpochInput& in, Craft local);
-  void assign_slots(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int& count, double variance,
+  void assign_slots(AmbiguitySlotBank& bank, std::array<core::GpsTime, kGpsSlots>& last_measured,
+                    std::array<Scalar, kGpsSlots>& scalars, int& count, double variance, double timeout_s,
                     CdgpsEpochReport& report);
   void predict_scalars(Craft local);
   void start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count, double variance);
@@ -283,12 +285,18 @@ void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local) {
 
 // Releases the slots of satellites no longer measured, takes slots for new ones (marked for
 // initialisation), drops measurements a full bank cannot hold.
-void CdgpsFilter::Impl::assign_slots(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int& count,
-                                     double variance, CdgpsEpochReport& report) {
+void CdgpsFilter::Impl::assign_slots(AmbiguitySlotBank& bank, std::array<core::GpsTime, kGpsSlots>& last_measured,
+                                     std::array<Scalar, kGpsSlots>& scalars, int& count, double variance,
+                                     double timeout_s, CdgpsEpochReport& report) {
   for (int slot : bank.active_slots()) {
     const int prn = bank.prn_of(slot);
     const bool measured = std::any_of(scalars.begin(), scalars.begin() + count, [prn](const Scalar& m) { return m.prn == prn; });
-    if (!measured) bank.release(slot, x, P);
+    auto& last = last_measured[static_cast<std::size_t>(slot)];
+    if (measured) {
+      last = t;
+    } else if (t.seconds_since(last) > timeout_s) {
+      bank.release(slot, x, P);
+    }
   }
   int kept = 0;
   for (int i = 0; i < count; ++i) {
@@ -299,6 +307,7 @@ void CdgpsFilter::Impl::assign_slots(AmbiguitySlotBank& bank, std::array<Scalar,
       m.reinitialise = true;
     }
     if (m.slot < 0) continue;
+    last_measured[static_cast<std::size_t>(m.slot)] = t;
     m.state = bank.state_of(m.slot);
     report.new_ambiguities += m.reinitialise ? 1 : 0;
     scalars[static_cast<std::size_t>(kept++)] = m;
@@ -403,9 +412,12 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
     }
   }
   if (reference < 0) return;
+  report.dd_prns[0] = sdcp_scalars[static_cast<std::size_t>(reference)].prn;
   for (int i = 0; i < sdcp_count; ++i) {
     const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
-    if (m.slot >= 0 && i != reference) dd_others[static_cast<std::size_t>(others++)] = m.state;
+    if (m.slot < 0 || i == reference) continue;
+    report.dd_prns[static_cast<std::size_t>(others + 1)] = m.prn;
+    dd_others[static_cast<std::size_t>(others++)] = m.state;
   }
   dd.reset(kNavStates);
   dd.add_group(sdcp_scalars[static_cast<std::size_t>(reference)].state,
@@ -452,8 +464,10 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   report.accepted = true;
   m.compute_ranges(in, ephemerides, frame, report);
   m.select(in, settings_.local);
-  m.assign_slots(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2), report);
-  m.assign_slots(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2), report);
+  m.assign_slots(m.graphic, m.graphic_last, m.graphic_scalars, m.graphic_count,
+                 std::pow(settings_.graphic_ambiguity_sigma_m, 2), settings_.slot_timeout_s, report);
+  m.assign_slots(m.sdcp, m.sdcp_last, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2),
+                 settings_.slot_timeout_s, report);
   m.predict_scalars(settings_.local);
   m.start_ambiguities(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2));
   m.start_ambiguities(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2));

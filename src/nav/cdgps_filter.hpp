@@ -11,7 +11,8 @@
 // 1. Ambiguity slots (nav/ambiguity_slots.hpp): a satellite new to a bank, or flagged by the
 //    loss-of-lock indicator, gets its slot (re)initialised from the measurement's residual with
 //    the prior variance (digest 5.4, large-variance method), so the same measurement then updates
-//    it; satellites no longer observed are released.
+//    it; a satellite unmeasured for longer than slot_timeout_s is released (a lost crosslink epoch
+//    or a short gap keeps the ambiguity, and with it a held integer).
 // 2. Sequential scalar updates (nav/scalar_update.hpp, Joseph form): GRAPHIC first, then SDCP,
 //    each predicted once per epoch at the prior state and linearised there (the innovation of a
 //    later scalar is corrected by h (x - x_prior)). A rejected SDCP is a cycle slip the indicator
@@ -72,6 +73,8 @@ struct CdgpsEpochReport {
   double nis_sum = 0.0;        // sum of the accepted scalars' normalised innovations squared
   int nis_count = 0;
   int double_differences = 0;
+  /// The satellites of this epoch's double differences: the reference, then the others.
+  std::array<int, kGpsSlots> dd_prns{};
   AmbiguityFix fix{};
   bool fix_applied = false;    // the fixed solution is valid for this epoch (x_fixed())
   bool wrong_fix_refused = false;

@@ -27,6 +27,10 @@ struct CdgpsSettings {
   double phase_center_sigma_m = 0.01;      // error of the phase-centre offset, each body axis [m]
   double graphic_ambiguity_sigma_m = 10.0;
   double sdcp_ambiguity_sigma_cycles = 100.0;
+  // A slot is kept while its satellite goes unmeasured (a lost crosslink epoch, a data gap) and
+  // released after this long [s]; a satellite back in time keeps its ambiguity unless the
+  // loss-of-lock indicator or the innovation gate says it slipped.
+  double slot_timeout_s = 30.0;
 
   // Measurements (digest 4.3): GRAPHIC = (code + phase) / 2, SDCP = phase OSC - DSC.
   // The 0.1 m noise of (code + phase)/2 plus the broadcast orbit and clock errors (~1 m) less
