@@ -19,6 +19,7 @@
 #include "dynamics/files/force_model_files.hpp"
 #include "nav/cdgps_filter.hpp"
 #include "nav/nav_inputs.hpp"
+#include "nav/nav_replay.hpp"
 #include "nav/point_positioning.hpp"
 #include "sim/attitude_profile.hpp"
 #include "sim/spacecraft_geometry.hpp"
@@ -57,33 +58,6 @@ dynamics::ForceModel onboard_model(const sim::SpacecraftSettings& sc, const char
   if (!model) throw InputError(std::string(name) + " on-board force model: " + model.error().describe());
   return std::move(model).value();
 }
-
-// Per-epoch score against the truth.
-struct EpochScore {
-  double t_s = 0.0;
-  Eigen::Vector3d relative_position_rtn_m = Eigen::Vector3d::Zero();  // estimate minus truth
-  Eigen::Vector3d relative_velocity_rtn_mps = Eigen::Vector3d::Zero();
-  // The same position error with the spacecraft's centre-of-mass knowledge error removed: the
-  // error of the antennas' relative position, what the GPS measurements determine.
-  Eigen::Vector3d relative_antenna_rtn_m = Eigen::Vector3d::Zero();
-  double absolute_position_m = 0.0, absolute_velocity_mps = 0.0;      // of the local spacecraft, 3D
-  const char* status = "float";  // fixed, partial, float
-  bool wrong_fix = false;
-  int satellites = 0, double_differences = 0;
-  int graphic_used = 0, graphic_rejected = 0, sdcp_rejected = 0;
-  double nis_sum = 0.0;
-  int nis_count = 0, detected_slips = 0;
-  double step_us = 0.0;
-  double nees = 0.0;  // of the antennas' relative position (3 degrees of freedom)
-};
-
-struct Replay {
-  Craft local = Craft::kDsc;
-  const char* name = "dsc";
-  std::vector<EpochScore> epochs;
-  double first_fix_s = -1.0;  // time to first fix after the cold start [s]
-  double start_s = -1.0;      // the filter's first epoch [s after the scenario start]
-};
 
 long long key_ms(double t_s) { return std::llround(t_s * 1000.0); }
 
@@ -161,6 +135,8 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
     const auto phases = in.phase_truth.find(key_ms(t_s));
     e.wrong_fix = phases != in.phase_truth.end() && wrong_fix(filter, r, phases->second);
   }
+  e.empirical_dsc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kDsc));
+  e.empirical_osc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kOsc));
   e.double_differences = r.double_differences;
   e.satellites = r.sdcp_used;
   e.graphic_used = r.graphic_used;
@@ -450,11 +426,12 @@ int run_nav_command(const NavOptions& options) {
     std::filesystem::create_directories(options.out);
     Json summary{{"run_dir", options.run_dir}, {"filters", Json::array()}};
     fmt::print("visors nav: {} ({} epochs)\n", options.run_dir, inputs.value().dsc.size());
+    std::vector<Replay> replays;
     for (Craft local : {Craft::kDsc, Craft::kOsc}) {
-      const Replay r = replay(inputs.value(), local, options.duration_s,
-                              {options.crosslink_drop, options.outage_start_s, options.outage_s});
-      const Json s = summarise(r);
-      write_epochs(r, options.out);
+      replays.push_back(replay(inputs.value(), local, options.duration_s,
+                               {options.crosslink_drop, options.outage_start_s, options.outage_s}));
+      const Json s = summarise(replays.back());
+      write_epochs(replays.back(), options.out);
       print_overview(s);
       summary["filters"].push_back(s);
     }
@@ -462,6 +439,9 @@ int run_nav_command(const NavOptions& options) {
     auto file = core::files::open_output_file(std::filesystem::path(options.out) / "summary.json");
     if (!file.get()) throw std::runtime_error(options.out + "/summary.json: cannot be written");
     std::fprintf(file.get(), "%s\n", summary.dump(2).c_str());
+    auto page = core::files::open_output_file(std::filesystem::path(options.out) / "nav.html");
+    if (!page.get()) throw std::runtime_error(options.out + "/nav.html: cannot be written");
+    std::fputs(nav_page(options.run_dir, replays, summary).c_str(), page.get());
     fmt::print("  output {} ({:.1f} s)\n", options.out, summary["wall_s"].get<double>());
     return 0;
   } catch (const InputError& e) {

@@ -1,0 +1,50 @@
+#pragma once
+// The per-epoch scores of one filter's replay (`visors nav`), shared by its outputs: the CSV and
+// summary (nav_command.cpp) and the HTML page (nav_page.cpp).
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "nav/navigation_state.hpp"
+
+namespace visors::nav_app {
+
+// Per-epoch score against the truth.
+struct EpochScore {
+  double t_s = 0.0;
+  Eigen::Vector3d relative_position_rtn_m = Eigen::Vector3d::Zero();  // estimate minus truth, centres of mass
+  Eigen::Vector3d relative_velocity_rtn_mps = Eigen::Vector3d::Zero();
+  // The same position error with the spacecraft's centre-of-mass knowledge error removed: the
+  // error of the antennas' relative position, what the GPS measurements determine.
+  Eigen::Vector3d relative_antenna_rtn_m = Eigen::Vector3d::Zero();
+  double absolute_position_m = 0.0, absolute_velocity_mps = 0.0;  // of the local spacecraft, 3D
+  Eigen::Vector3d empirical_dsc_rtn_mps2 = Eigen::Vector3d::Zero();  // estimated empirical accelerations
+  Eigen::Vector3d empirical_osc_rtn_mps2 = Eigen::Vector3d::Zero();
+  const char* status = "float";  // fixed, partial, float, outage
+  bool wrong_fix = false;
+  int satellites = 0, double_differences = 0;
+  int graphic_used = 0, graphic_rejected = 0, sdcp_rejected = 0;
+  double nis_sum = 0.0;
+  int nis_count = 0, detected_slips = 0;
+  double step_us = 0.0;
+  double nees = 0.0;  // of the antennas' relative position (3 degrees of freedom)
+};
+
+struct Replay {
+  nav::Craft local = nav::Craft::kDsc;
+  const char* name = "dsc";
+  std::vector<EpochScore> epochs;
+  double first_fix_s = -1.0;  // time to first fix after the cold start [s]
+  double start_s = -1.0;      // the filter's first epoch [s after the scenario start]
+};
+
+/// The self-contained HTML page (inline SVG) of the replays: per filter, the relative position
+/// (antennas) and velocity errors in RTN, the estimated empirical accelerations and the
+/// ambiguity-resolution status over time (the mission paper's navigation figures), and the
+/// summary.
+std::string nav_page(const std::string& run_dir, const std::vector<Replay>& replays, const nlohmann::json& summary);
+
+}  // namespace visors::nav_app
