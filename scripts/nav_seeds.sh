@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# NEES and NIS of the navigation filter over seeds (issue 15: within their two-sided 95 %
+# chi-square bounds averaged over >= 20 seeds). For seeds 1..N: `visors gnss-sim` of the default
+# scenario (one orbit, or DURATION_S) with that seed, then `visors nav`; then, per filter, the
+# fraction of epochs (from 300 s after the first fix) whose NEES of the antennas' relative
+# position averaged over the N runs, and whose pooled NIS, lie inside their 95 % bounds.
+# Usage: scripts/nav_seeds.sh [N (20)] [DURATION_S (5700)] [BUILD_DIR (build)] [WORK_DIR (out/nav-seeds)]
+set -euo pipefail
+n=${1:-20}
+duration=${2:-5700}
+build=${3:-build}
+work=${4:-out/nav-seeds}
+root=$(cd "$(dirname "$0")/.." && pwd)
+mkdir -p "$work"
+for seed in $(seq 1 "$n"); do
+  scenario="$work/seed$seed.toml"
+  sed -e "s/^seed = .*/seed = $seed/" -e "s/^duration_s = .*/duration_s = $duration/" \
+    "$root/data/scenarios/gnss_sim.toml" > "$scenario"
+  "$build/apps/visors" gnss-sim "$scenario" --out "$work/run$seed" > /dev/null
+  "$build/apps/visors" nav "$work/run$seed" --out "$work/nav$seed" > /dev/null
+done
+/usr/bin/python3 - "$work" "$n" <<'PY'
+import csv, json, sys
+from statistics import mean
+work, n = sys.argv[1], int(sys.argv[2])
+
+def chi2_quantile(dof, z):  # Wilson-Hilferty approximation of the chi-square quantile
+    return dof * (1 - 2 / (9 * dof) + z * (2 / (9 * dof)) ** 0.5) ** 3
+
+for craft in ("dsc", "osc"):
+    nees_by_t, nis_by_t, antenna, fix, wrong = {}, {}, [], [], 0
+    for seed in range(1, n + 1):
+        s = next(f for f in json.load(open(f"{work}/nav{seed}/summary.json"))["filters"] if f["filter"] == craft)
+        c = s["converged"]
+        antenna.append(c["relative_antenna_rms_m"]); fix.append(c["fix_rate"]); wrong += c["wrong_fix_epochs"]
+        start = s["start_s"] + s["time_to_first_fix_s"] + 300.0
+        for row in csv.DictReader(open(f"{work}/nav{seed}/nav_{craft}.csv")):
+            t = float(row["t_s"])
+            if t < start or row["status"] == "outage":
+                continue
+            nees_by_t.setdefault(t, []).append(float(row["antenna_nees"]))
+            a = nis_by_t.setdefault(t, [0.0, 0])
+            a[0] += float(row["nis_sum"]); a[1] += int(row["nis_count"])
+    # Per epoch, the mean over the runs of NEES (3 dof each) against chi2(3 N)/N, and the pooled
+    # NIS against chi2(M)/M, M the scalars of that epoch over all runs (Bar-Shalom, Li &
+    # Kirubarajan 2001, sec. 5.4): the fraction of epochs inside the two-sided 95 % bounds.
+    inside_nees = inside_nis = total = 0
+    nees_means, nis_means = [], []
+    for t, values in nees_by_t.items():
+        if len(values) != n:
+            continue
+        m = mean(values)
+        lo, hi = chi2_quantile(3 * n, -1.959964) / n, chi2_quantile(3 * n, 1.959964) / n
+        inside_nees += lo <= m <= hi
+        s, k = nis_by_t[t]
+        q = s / k
+        inside_nis += chi2_quantile(k, -1.959964) / k <= q <= chi2_quantile(k, 1.959964) / k
+        nees_means.append(m); nis_means.append(q); total += 1
+    print(f"{craft} filter over {n} seeds: NEES {mean(nees_means):.2f} (epochs inside the 95 % bounds "
+          f"{100 * inside_nees / total:.1f} %), NIS {mean(nis_means):.2f} (inside {100 * inside_nis / total:.1f} %); "
+          f"antennas {1e3 * mean(antenna):.2f} mm RMS (worst run {1e3 * max(antenna):.2f}); fix rate "
+          f"{100 * mean(fix):.2f} %; wrong-fix epochs {wrong}")
+PY
