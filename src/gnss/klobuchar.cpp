@@ -10,9 +10,12 @@ namespace visors::gnss {
 namespace {
 constexpr double kPi = 3.14159265358979323846;  // the document's semicircle-to-radian factor
 constexpr double kDay = 86400.0;
-}  // namespace
+// The smaller root of the cosine polynomial 1 - x^2/2 + x^4/24: x^2 = 6 - 2 sqrt(3).
+const double kPolynomialRoot = std::sqrt(6.0 - 2.0 * std::sqrt(3.0));  // 1.5924...
 
-core::Result<double> klobuchar_delay_s(const KlobucharCoefficients& c, const KlobucharGeometry& g, core::GpsTime t) {
+// IS-GPS-200 Figure 20-4 with the day-time term used for |x| < x_night (the document's 1.57, or
+// the root of its cosine polynomial for the topside model: klobuchar.hpp).
+core::Result<double> delay_s(const KlobucharCoefficients& c, const KlobucharGeometry& g, core::GpsTime t, double x_night) {
   for (int n = 0; n < 4; ++n) {
     if (!std::isfinite(c.alpha[static_cast<std::size_t>(n)])) return core::Error{"alpha", "must be finite"};
     if (!std::isfinite(c.beta[static_cast<std::size_t>(n)])) return core::Error{"beta", "must be finite"};
@@ -43,8 +46,14 @@ core::Result<double> klobuchar_delay_s(const KlobucharCoefficients& c, const Klo
   period = std::max(period, 72000.0);
   const double x = 2.0 * kPi * (local - 50400.0) / period;  // phase [rad]
   const double obliquity = 1.0 + 16.0 * std::pow(0.53 - e, 3);
-  if (std::abs(x) >= 1.57) return obliquity * 5e-9;  // night-time constant
+  if (std::abs(x) >= x_night) return obliquity * 5e-9;  // night-time constant
   return obliquity * (5e-9 + amplitude * (1.0 - x * x / 2.0 + x * x * x * x / 24.0));
+}
+
+}  // namespace
+
+core::Result<double> klobuchar_delay_s(const KlobucharCoefficients& c, const KlobucharGeometry& g, core::GpsTime t) {
+  return delay_s(c, g, t, 1.57);
 }
 
 core::Result<double> klobuchar_delay_m(const KlobucharCoefficients& c, const KlobucharGeometry& g, core::GpsTime t) {
@@ -64,10 +73,11 @@ core::Result<double> klobuchar_topside_delay_m(const KlobucharCoefficients& c, c
   if (!(std::abs(g.elevation) <= 0.5 * kPi)) return core::Error{"el", "must be in [-pi/2, pi/2] rad"};
   KlobucharGeometry zenith = g;
   zenith.elevation = 0.5 * kPi;
-  const auto zenith_delay = klobuchar_delay_m(c, zenith, t);
-  if (!zenith_delay.ok()) return zenith_delay.error();
+  const auto zenith_delay_s = delay_s(c, zenith, t, kPolynomialRoot);  // continuous (header)
+  if (!zenith_delay_s.ok()) return zenith_delay_s.error();
   const double obliquity_at_zenith = 1.0 + 16.0 * std::pow(0.53 - 0.5, 3);
-  const double vertical = topside.topside_fraction * *zenith_delay / obliquity_at_zenith;
+  const double zenith_delay_m = *zenith_delay_s * core::kSpeedOfLight;
+  const double vertical = topside.topside_fraction * zenith_delay_m / obliquity_at_zenith;
   const double ratio = (kMeanEarthRadius + altitude_m) * std::cos(std::max(g.elevation, 0.0)) /
                        (kMeanEarthRadius + topside.shell_height_m);
   return vertical / std::sqrt(1.0 - ratio * ratio);

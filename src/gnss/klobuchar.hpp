@@ -49,6 +49,14 @@ core::Result<double> klobuchar_delay_m(const KlobucharCoefficients& coefficients
 ///              (they are dropped by the occultation test well before the mapping matters).
 /// topside_fraction 0.35 and a 1000 km shell are defaults in the range the digest quotes
 /// (0.3-0.6); at 40 m baselines the single difference of this delay is far below 1 mm either way.
+/// Continuity: the ground model switches to the night-time constant at |x| = 1.57 (x the phase of
+/// its cosine of local time), where its cosine polynomial 1 - x^2/2 + x^4/24 is still 0.0207: a
+/// jump of 0.0207 x amplitude. A receiver in low Earth orbit crosses that line within seconds
+/// twice an orbit, and the jump (up to 9 cm slant with the 2024 NYA1 coefficients at 500 km) would
+/// be a discontinuity of the simulated carrier phase. This model keeps the day-time term until the
+/// polynomial's root, |x| = sqrt(6 - 2 sqrt 3) = 1.5925, so the delay is continuous (with a kink
+/// there, like the model's other clamps); it equals the scaled ground model wherever |x| < 1.57 or
+/// |x| >= 1.5925, and differs by less than 0.0207 x amplitude (scaled) in between.
 struct TopsideIonosphere {
   double topside_fraction = 0.35;   // share of the vertical column above the receiver, [0, 1]
   double shell_height_m = 1000e3;   // thin-shell height above the Earth's mean radius [m]

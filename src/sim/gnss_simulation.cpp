@@ -2,11 +2,15 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <optional>
 
+#include <Eigen/Geometry>
+
 #include "astro/sun_moon.hpp"
+#include "core/constants.hpp"
 #include "core/earth_frames.hpp"
 #include "core/eop.hpp"
 #include "core/files/data_path.hpp"
@@ -40,6 +44,7 @@ struct Craft {
   TruthDynamics truth;
   core::StateVector x_gcrf;
   DragArea drag = DragArea::visors_6u();
+  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body to GCRF at the epoch
   std::optional<SpacecraftGeometry> geometry;
   std::optional<GpsReceiver> receiver;
   std::optional<gnss::files::Rinex3ObservationWriter> rinex;
@@ -91,26 +96,32 @@ core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftS
   c.geometry.emplace(SpacecraftGeometry::draw(GeometrySettings{}, geometry_rng));
   GpsReceiverSettings settings = s.gnss.receiver;
   settings.klobuchar = ionosphere;
+  settings.epoch_interval_s = s.step_s;  // clock_step_sigma_m is per epoch
   auto receiver = GpsReceiver::create(settings, RandomStream(s.seed, c.name + ".gps"));
   if (!receiver.ok()) return core::Error{"gnss.receiver." + receiver.error().field, receiver.error().message};
   c.receiver.emplace(std::move(receiver).value());
   return true;
 }
 
+// One truth.csv row (columns: gnss_simulation.hpp).
 void write_truth_row(std::FILE* f, double t_s, const Craft& c, const GpsReceiverEpoch& e) {
   const auto& r = c.x_gcrf.r;
   const auto& v = c.x_gcrf.v;
-  std::fprintf(f, "%.3f,%s,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%d,%d\n", t_s, c.name.c_str(), r.x(), r.y(), r.z(),
-               v.x(), v.y(), v.z(), e.apc_itrf_m.x(), e.apc_itrf_m.y(), e.apc_itrf_m.z(), e.receiver_clock_m, e.visible,
-               e.measurement.channel_count);
+  const auto& q = c.attitude;
+  std::fprintf(f, "%.3f,%s,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%d,%d,%.6f,%.10f,%.10f,%.10f,%.10f\n", t_s,
+               c.name.c_str(), r.x(), r.y(), r.z(), v.x(), v.y(), v.z(), e.apc_itrf_m.x(), e.apc_itrf_m.y(), e.apc_itrf_m.z(),
+               e.receiver_clock_m, e.visible, e.measurement.channel_count, e.receiver_clock_rate_mps, q.w(), q.x(), q.y(),
+               q.z());
 }
 
+// The channels_truth.csv rows of one epoch (columns: gnss_simulation.hpp).
 void write_channel_rows(std::FILE* f, double t_s, const Craft& c, const GpsReceiverEpoch& e) {
   for (int k = 0; k < e.measurement.channel_count; ++k) {
     const GpsChannelTruth& t = e.truth[static_cast<std::size_t>(k)];
-    std::fprintf(f, "%.3f,%s,%d,%.4f,%.4f,%.4f,%lld,%.6f,%.6f,%.4f\n", t_s, c.name.c_str(), t.prn, t.range_m,
+    std::fprintf(f, "%.3f,%s,%d,%.4f,%.4f,%.4f,%lld,%.6f,%.6f,%.4f,%.6f,%.6f,%.6f\n", t_s, c.name.c_str(), t.prn, t.range_m,
                  t.satellite_clock_m, t.ionosphere_m, static_cast<long long>(t.ambiguity_cycles), t.satellite_phase_cycles,
-                 e.receiver_phase_cycles, t.elevation_antenna_rad / core::kDegToRad);
+                 e.receiver_phase_cycles, t.elevation_antenna_rad / core::kDegToRad, t.range_rate_mps,
+                 t.satellite_clock_rate_mps, t.ionosphere_rate_mps);
   }
 }
 
@@ -166,10 +177,11 @@ core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) 
   if (!channels_csv.ok()) return channels_csv.error();
   std::fprintf(truth_csv->get(),
                "t_s,spacecraft,x_gcrf_m,y_gcrf_m,z_gcrf_m,vx_gcrf_mps,vy_gcrf_mps,vz_gcrf_mps,x_apc_itrf_m,y_apc_itrf_m,"
-               "z_apc_itrf_m,receiver_clock_m,visible,tracked\n");
+               "z_apc_itrf_m,receiver_clock_m,visible,tracked,receiver_clock_rate_mps,qw_body_to_gcrf,qx_body_to_gcrf,"
+               "qy_body_to_gcrf,qz_body_to_gcrf\n");
   std::fprintf(channels_csv->get(),
                "t_s,spacecraft,prn,range_m,satellite_clock_m,ionosphere_m,ambiguity_cycles,satellite_phase_cycles,"
-               "receiver_phase_cycles,elevation_antenna_deg\n");
+               "receiver_phase_cycles,elevation_antenna_deg,range_rate_mps,satellite_clock_rate_mps,ionosphere_rate_mps\n");
   return TruthFiles{std::move(truth_csv).value(), std::move(channels_csv).value()};
 }
 
@@ -221,13 +233,34 @@ EpochFrame epoch_frame(const World& world, core::GpsTime t) {
                     astro::sun_position_gcrf(t)};
 }
 
+// The attitude profile's body-to-GCRF attitude for the state (r, v).
+Eigen::Quaterniond profile_attitude(const Eigen::Vector3d& r, const Eigen::Vector3d& v, const Eigen::Vector3d& sun_gcrf,
+                                    bool observation_attitude) {
+  const Eigen::Vector3d sun_unit = (sun_gcrf - r).normalized();
+  return observation_attitude ? AttitudeProfile::observation_body_to_gcrf(r, v, sun_unit)
+                              : AttitudeProfile::nominal_body_to_gcrf(r, v, sun_unit);
+}
+
+// The body's angular velocity (GCRF axes) [rad/s]: the profile's rotation between the states
+// +/- 0.5 s along the two-body motion, divided by 1 s (the Sun held fixed: it moves 2e-7 rad/s;
+// truncation ~ (w h)^2 of ~1e-3 rad/s).
+Eigen::Vector3d profile_angular_velocity_gcrf(const core::StateVector& x, const Eigen::Vector3d& sun_gcrf,
+                                              bool observation_attitude) {
+  constexpr double h = 0.5;
+  const Eigen::Vector3d a = -core::EarthGravityConstants{}.mu / std::pow(x.r.norm(), 3) * x.r;
+  const Eigen::Quaterniond before =
+      profile_attitude(x.r - h * x.v + 0.5 * h * h * a, x.v - h * a, sun_gcrf, observation_attitude);
+  const Eigen::Quaterniond after = profile_attitude(x.r + h * x.v + 0.5 * h * h * a, x.v + h * a, sun_gcrf, observation_attitude);
+  const Eigen::AngleAxisd turn(after * before.conjugate());  // about GCRF axes
+  return turn.angle() / (2.0 * h) * turn.axis();
+}
+
 // The receiver's pose at t: the attitude profile (which also sets the drag area of the truth
-// forces) and the centre of mass in ITRF.
+// forces, and is kept in the craft for the truth file), its angular velocity relative to the
+// Earth, and the centre of mass in ITRF.
 ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, bool observation_attitude) {
-  const Eigen::Vector3d sun_unit = (frame.sun_gcrf - c.x_gcrf.r).normalized();
-  const Eigen::Quaterniond q = observation_attitude
-                                   ? AttitudeProfile::observation_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit)
-                                   : AttitudeProfile::nominal_body_to_gcrf(c.x_gcrf.r, c.x_gcrf.v, sun_unit);
+  const Eigen::Quaterniond q = profile_attitude(c.x_gcrf.r, c.x_gcrf.v, frame.sun_gcrf, observation_attitude);
+  c.attitude = q;
   c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
   ReceiverPose pose;
   pose.t = t;
@@ -235,6 +268,8 @@ ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, b
   pose.com_itrf.v = frame.gcrf_to_itrf * c.x_gcrf.v - frame.omega.cross(pose.com_itrf.r);
   pose.body_to_itrf = frame.gcrf_to_itrf * q.toRotationMatrix();
   pose.com_body_m = c.geometry->com_body_m();
+  pose.angular_velocity_itrf =
+      frame.gcrf_to_itrf * profile_angular_velocity_gcrf(c.x_gcrf, frame.sun_gcrf, observation_attitude) - frame.omega;
   return pose;
 }
 
@@ -284,10 +319,15 @@ nlohmann::json run_summary(const CampaignScenario& s, const GnssRun& run, std::i
   summary["satellites"] = run.world.satellites->truth().size();
   summary["wall_s"] = wall;
   summary["receiver_us_per_epoch_two_spacecraft"] = 1e6 * measure_wall_s / epochs;
+  summary["t0"] = {{"iso", s.t0.format(core::TimeScale::kGps, 3)}, {"week", s.t0.week()}, {"seconds_of_week", s.t0.seconds_of_week()}};
+  const auto vector = [](const Eigen::Vector3d& x) { return nlohmann::json::array({x.x(), x.y(), x.z()}); };
   for (const Craft& c : run.crafts) {
     summary["receivers"][c.name] = {{"mean_visible", c.visible_sum / epochs},
                                     {"mean_tracked", c.tracked_sum / epochs},
-                                    {"acquisitions_and_slips", c.acquisitions}};
+                                    {"acquisitions_and_slips", c.acquisitions},
+                                    {"phase_center_body_m", vector(c.receiver->phase_center_body_m())},
+                                    {"center_of_mass_body_m", vector(c.geometry->com_body_m())},
+                                    {"boresight_body", vector(c.receiver->boresight_body())}};
   }
   return summary;
 }

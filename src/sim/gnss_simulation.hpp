@@ -14,11 +14,59 @@
 //
 // Output directory: scenario.toml (resolved), dsc.rnx and osc.rnx (RINEX 3.05 observations,
 // C1C L1C D1C S1C, LLI bit 0 on loss of lock), brdc.rnx (RINEX 3.05 navigation: the broadcast
-// ephemerides the receivers decode, i.e. with the broadcast errors), truth.csv (per epoch and
-// spacecraft: centre of mass GCRF, antenna phase centre ITRF, receiver clock) and
-// channels_truth.csv (per epoch, spacecraft and channel: the true range, satellite clock,
-// ionosphere, integer ambiguity and phase offsets), summary.json.
-
+// ephemerides the receivers decode, i.e. with the broadcast errors), truth.csv, channels_truth.csv
+// and summary.json (counts, t0, and per receiver the body-frame phase centre, centre of mass and
+// boresight [m, unit]).
+//
+// Instants. Every epoch has a time tag T = t0 + t_s (t0 = time.start_gps), the RINEX epoch, and
+// the simulation takes it as TRUE GPS time: the state columns of truth.csv are at T, which is what
+// a navigation filter estimates when it takes the time tags as GPS time. The receiver's clock is
+// off by dt_r (receiver_clock_m = c dt_r), so the signals are received at T - dt_r and sent at
+// T - dt_r - tau (tau = range_m / c): the geometry columns say which instant they refer to.
+// Scoring a filter's centre of mass against the phase-centre columns would mix the two instants
+// (|v| dt_r: ~3 mm along-track for a 100 m clock offset).
+//
+// truth.csv, one row per epoch and spacecraft (truth throughout; the time derivatives are with
+// respect to the time tag):
+//   t_s [s]                       time tag, seconds since t0 (3 decimals)
+//   spacecraft                    dsc or osc
+//   x_gcrf_m, y_gcrf_m, z_gcrf_m  centre of mass at T, GCRF [m] (0.1 mm)
+//   vx_gcrf_mps, vy_gcrf_mps, vz_gcrf_mps  its velocity at T, GCRF [m/s] (1 um/s)
+//   x_apc_itrf_m, y_apc_itrf_m, z_apc_itrf_m  antenna phase centre at the reception instant
+//                                 T - dt_r, ITRF [m] (0.1 mm): R(T) (r_gcrf + A(q) (phase centre -
+//                                 centre of mass, body)) - v_apc dt_r, R the GCRF-to-ITRF rotation
+//                                 (the EOP above), v_apc its ITRF velocity; the start of range_m
+//   receiver_clock_m [m]          c dt_r at T (receiver clock minus GPS time; > 0: the clock is
+//                                 ahead, the signals were received earlier than T)
+//   visible, tracked              satellites passing the visibility test at reception, and tracked
+//   receiver_clock_rate_mps [m/s] d(c dt_r)/dt at T (the clock is linear between epochs; at an
+//                                 epoch the mean of the adjacent slopes: sim/gps_receiver.hpp)
+//   qw_body_to_gcrf, qx_body_to_gcrf, qy_body_to_gcrf, qz_body_to_gcrf  true attitude at T,
+//                                 body to GCRF, Hamilton, scalar first (1e-10)
+// channels_truth.csv, one row per epoch, spacecraft and tracked channel:
+//   t_s, spacecraft               as in truth.csv
+//   prn                           GPS PRN
+//   range_m [m]                   rho: from the phase centre at reception (T - dt_r) to the
+//                                 satellite at transmission (T - dt_r - tau; its true orbit, the
+//                                 IS-GPS-200 evaluation of its true record), in the Earth-fixed
+//                                 axes of the reception instant (Earth rotation during tau)
+//   satellite_clock_m [m]         c dt^j at transmission: the true L1 C/A clock offset
+//   ionosphere_m [m]              I: the L1 delay (code delayed, phase advanced), geometry at
+//                                 reception, local time of T
+//   ambiguity_cycles              N, the integer of this track
+//   satellite_phase_cycles, receiver_phase_cycles  phi^j, phi_r: constant fractional offsets
+//   elevation_antenna_deg [deg]   above the antenna plane (true boresight) at reception, of the
+//                                 satellite's position 0.075 s before reception (the visibility
+//                                 screen: within 2e-4 deg of the transmission instant's)
+//   range_rate_mps, satellite_clock_rate_mps, ionosphere_rate_mps [m/s]  d/dt of range_m,
+//                                 satellite_clock_m, ionosphere_m at T
+// so that (e_ noise; lambda the L1 wavelength; RINEX rounding 0.001 m, cycles, Hz):
+//   C1C            = range_m + receiver_clock_m - satellite_clock_m + ionosphere_m + e_P
+//   lambda L1C     = range_m + receiver_clock_m - satellite_clock_m - ionosphere_m
+//                    + lambda (ambiguity_cycles + receiver_phase_cycles - satellite_phase_cycles) + e_Phi
+//   -lambda D1C    = range_rate_mps + receiver_clock_rate_mps - satellite_clock_rate_mps
+//                    - ionosphere_rate_mps + e_D
+// (tests/sim/test_gnss_simulation.cpp checks these relations and the phase centre's).
 #include <filesystem>
 #include <functional>
 

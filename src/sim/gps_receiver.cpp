@@ -19,6 +19,7 @@ core::Result<bool> GpsReceiverSettings::validate() const {
                       {"phase_sigma_m", phase_sigma_m},
                       {"doppler_sigma_hz", doppler_sigma_hz},
                       {"clock_step_sigma_m", clock_step_sigma_m},
+                      {"epoch_interval_s", epoch_interval_s},
                       {"initial_clock_sigma_m", initial_clock_sigma_m},
                       {"phase_center_offset_m", phase_center_offset_m},
                       {"mounting_sigma_rad", mounting_sigma_rad},
@@ -26,6 +27,7 @@ core::Result<bool> GpsReceiverSettings::validate() const {
   for (const auto& f : non_negative) {
     if (!(std::isfinite(f.value) && f.value >= 0.0)) return core::Error{f.name, "must be finite and >= 0"};
   }
+  if (!(epoch_interval_s > 0.0)) return core::Error{"epoch_interval_s", "must be > 0"};
   if (!(std::abs(elevation_mask_rad) < 0.5 * core::kPi)) return core::Error{"elevation_mask_rad", "must be in (-pi/2, pi/2)"};
   if (channels < 1 || channels > gnss::kMaxGpsChannels) return core::Error{"channels", "must be in 1..12"};
   if (!(cycle_slip_probability >= 0.0 && cycle_slip_probability <= 1.0)) {
@@ -45,6 +47,8 @@ core::Result<bool> GpsReceiverSettings::validate() const {
 }
 
 namespace {
+
+constexpr double kIonosphereRateStep = 0.1;  // half-width of the ionosphere rate's central difference [s]
 
 // The satellite at transmission, in the Earth-fixed axes of the reception time.
 struct SignalPath {
@@ -91,6 +95,7 @@ core::Result<GpsReceiver> GpsReceiver::create(const GpsReceiverSettings& setting
                                  .normalized();
   receiver.epoch_.receiver_phase_cycles = receiver.rng_.uniform();
   receiver.clock_m_ = receiver.rng_.normal(settings.initial_clock_sigma_m);
+  receiver.clock_rate_mps_ = receiver.rng_.normal(settings.clock_step_sigma_m) / settings.epoch_interval_s;  // f_-1
   return receiver;
 }
 
@@ -99,21 +104,37 @@ std::int64_t GpsReceiver::draw_ambiguity() {
   return static_cast<std::int64_t>(std::floor(rng_.uniform() * 2097152.0)) - 1048576;
 }
 
-// The antenna at the true reception time t_r = t - dt_r, and the local axes of its geodetic
-// position (the Klobuchar model's azimuth and elevation are measured in them).
+// A geodetic position and its local axes (the Klobuchar model's azimuth and elevation are
+// measured in them).
+struct GpsReceiver::LocalAxes {
+  core::GeodeticPosition where;
+  Eigen::Vector3d east, north, up;
+
+  static LocalAxes at(const Eigen::Vector3d& r_itrf) {
+    LocalAxes a;
+    a.where = core::geodetic_from_itrf(r_itrf);
+    const double lat = a.where.latitude;
+    const double lon = a.where.longitude;
+    a.east = Eigen::Vector3d(-std::sin(lon), std::cos(lon), 0.0);
+    a.north = Eigen::Vector3d(-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat));
+    a.up = Eigen::Vector3d(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+    return a;
+  }
+};
+
+// The antenna at the true reception time t_r = t - dt_r, with its local axes, and (ionosphere on)
+// the local axes kIonosphereRateStep before and after along its velocity.
 struct GpsReceiver::Reception {
   core::GpsTime t_receive;
   Eigen::Vector3d r_apc;      // phase centre, Earth-fixed [m]
-  Eigen::Vector3d v_apc;      // [m/s]
+  Eigen::Vector3d v_apc;      // its Earth-fixed velocity [m/s]
   Eigen::Vector3d boresight;  // true boresight, Earth-fixed (unit)
-  core::GeodeticPosition where;
-  Eigen::Vector3d east, north, up;
+  LocalAxes here, before, after;
 };
 
 const GpsReceiverEpoch& GpsReceiver::measure(const ReceiverPose& pose, const GpsSatelliteTruth& satellites) {
-  step_clock();
+  step_clock(pose.t);
   GpsReceiverEpoch& out = epoch_;
-  out.receiver_clock_m = clock_m_;
   const Reception rx = reception(pose);
   out.apc_itrf_m = rx.r_apc;
   const std::size_t count = screen_visibility(rx, satellites);
@@ -130,28 +151,34 @@ const GpsReceiverEpoch& GpsReceiver::measure(const ReceiverPose& pose, const Gps
   return out;
 }
 
-// dt_r random walk: the first epoch keeps the initial offset drawn in create().
-void GpsReceiver::step_clock() {
-  if (!first_epoch_) clock_m_ += rng_.normal(settings_.clock_step_sigma_m);
+// The clock at t along its current slope (the first epoch keeps the offset drawn in create()),
+// the slope from t on drawn, and the rate at t: the mean of the slopes before and after.
+void GpsReceiver::step_clock(core::GpsTime t) {
+  if (!first_epoch_) clock_m_ += clock_rate_mps_ * t.seconds_since(last_epoch_);
+  const double slope_before = clock_rate_mps_;
+  clock_rate_mps_ = rng_.normal(settings_.clock_step_sigma_m) / settings_.epoch_interval_s;
+  last_epoch_ = t;
   first_epoch_ = false;
+  epoch_.receiver_clock_m = clock_m_;
+  epoch_.receiver_clock_rate_mps = 0.5 * (slope_before + clock_rate_mps_);
 }
 
-// Antenna phase centre at the true reception time t_r = t - dt_r (the pose carried back along its
-// Earth-fixed velocity), and the receiver's local axes for the ionosphere.
+// Antenna phase centre at the true reception time t_r = t - dt_r (the pose carried back along the
+// phase centre's Earth-fixed velocity: the centre of mass's plus the attitude rotation's), and the
+// receiver's local axes for the ionosphere.
 GpsReceiver::Reception GpsReceiver::reception(const ReceiverPose& pose) const {
   Reception rx;
   const double dt_receiver = clock_m_ / gnss::kGpsSpeedOfLight;
   rx.t_receive = pose.t - dt_receiver;
   const Eigen::Vector3d lever_itrf = pose.body_to_itrf * (phase_center_body_m() - pose.com_body_m);
-  rx.r_apc = pose.com_itrf.r + lever_itrf - pose.com_itrf.v * dt_receiver;
-  rx.v_apc = pose.com_itrf.v;
+  rx.v_apc = pose.com_itrf.v + pose.angular_velocity_itrf.cross(lever_itrf);
+  rx.r_apc = pose.com_itrf.r + lever_itrf - rx.v_apc * dt_receiver;
   rx.boresight = pose.body_to_itrf * boresight_body_;
-  rx.where = core::geodetic_from_itrf(rx.r_apc);
-  const double lat = rx.where.latitude;
-  const double lon = rx.where.longitude;
-  rx.east = Eigen::Vector3d(-std::sin(lon), std::cos(lon), 0.0);
-  rx.north = Eigen::Vector3d(-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat));
-  rx.up = Eigen::Vector3d(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+  rx.here = LocalAxes::at(rx.r_apc);
+  if (settings_.ionosphere) {
+    rx.before = LocalAxes::at(rx.r_apc - kIonosphereRateStep * rx.v_apc);
+    rx.after = LocalAxes::at(rx.r_apc + kIonosphereRateStep * rx.v_apc);
+  }
   return rx;
 }
 
@@ -222,42 +249,65 @@ bool GpsReceiver::lost_lock(Track& track, core::GpsTime t) {
   return true;
 }
 
-// Topside Klobuchar delay I along the unit line of sight e (zero when the ionosphere is off).
-double GpsReceiver::ionosphere_m(const Reception& rx, const Eigen::Vector3d& e, core::GpsTime t) const {
+// Topside Klobuchar delay I at `at` along the unit line of sight e (zero when the ionosphere is off).
+double GpsReceiver::ionosphere_m(const LocalAxes& at, const Eigen::Vector3d& e, core::GpsTime t) const {
   if (!settings_.ionosphere) return 0.0;
-  const gnss::KlobucharGeometry g{rx.where.latitude, rx.where.longitude, std::atan2(e.dot(rx.east), e.dot(rx.north)),
-                                  std::asin(std::clamp(e.dot(rx.up), -1.0, 1.0))};
-  return gnss::klobuchar_topside_delay_m(settings_.klobuchar, g, rx.where.height, t, settings_.topside).value();
+  const gnss::KlobucharGeometry g{at.where.latitude, at.where.longitude, std::atan2(e.dot(at.east), e.dot(at.north)),
+                                  std::asin(std::clamp(e.dot(at.up), -1.0, 1.0))};
+  return gnss::klobuchar_topside_delay_m(settings_.klobuchar, g, at.where.height, t, settings_.topside).value();
+}
+
+// dI/dt: the central difference over +/- kIonosphereRateStep, the receiver and the satellite
+// (Earth-fixed position and velocity in the reception-time axes) moved along their velocities
+// and the time tag with them (zero when the ionosphere is off).
+double GpsReceiver::ionosphere_rate_mps(const Reception& rx, const Eigen::Vector3d& r_satellite,
+                                        const Eigen::Vector3d& v_satellite, core::GpsTime t) const {
+  if (!settings_.ionosphere) return 0.0;
+  const double h = kIonosphereRateStep;
+  const Eigen::Vector3d e_before = (r_satellite - rx.r_apc - h * (v_satellite - rx.v_apc)).normalized();
+  const Eigen::Vector3d e_after = (r_satellite - rx.r_apc + h * (v_satellite - rx.v_apc)).normalized();
+  return (ionosphere_m(rx.after, e_after, t + h) - ionosphere_m(rx.before, e_before, t - h)) / (2.0 * h);
 }
 
 // P, Phi, D and C/N0 of one tracked satellite (the model in the header), appended to the epoch
 // with the truth behind them.
-void GpsReceiver::measure_channel(Track& track, const Candidate& c, const Reception& rx, core::GpsTime t,
+void GpsReceiver::measure_channel(Track& track, const Candidate& candidate, const Reception& rx, core::GpsTime t,
                                   const GpsSatelliteTruth& satellites) {
   GpsReceiverEpoch& out = epoch_;
   const bool slipped = lost_lock(track, t);
-  const SignalPath path = trace(satellites, c.index, rx.t_receive, rx.r_apc);
+  const SignalPath path = trace(satellites, candidate.index, rx.t_receive, rx.r_apc);
   const Eigen::Vector3d e = (path.r_satellite_m - rx.r_apc) / path.range_m;
-  const double iono_m = ionosphere_m(rx, e, t);
+  const double iono_m = ionosphere_m(rx.here, e, t);
   const double satellite_clock_m = gnss::kGpsSpeedOfLight * path.satellite.clock_bias_s;
+  // Rates with respect to the time tag (header): d rho/dt_r of the light-time solution, the
+  // satellite clock at t_r - tau, both times dt_r/dt; the receiver clock's; the ionosphere's.
+  const double c = gnss::kGpsSpeedOfLight;
+  const Eigen::Vector3d v_satellite_inertial =
+      path.v_satellite_mps + gnss::kGpsEarthRate * Eigen::Vector3d::UnitZ().cross(path.r_satellite_m);
+  const double range_rate_receive = e.dot(path.v_satellite_mps - rx.v_apc) / (1.0 + e.dot(v_satellite_inertial) / c);
+  const double receive_per_tag = 1.0 - out.receiver_clock_rate_mps / c;
+  const double range_rate = range_rate_receive * receive_per_tag;
+  const double satellite_clock_rate =
+      c * path.satellite.clock_drift_sps * (1.0 - range_rate_receive / c) * receive_per_tag;
+  const double iono_rate = ionosphere_rate_mps(rx, path.r_satellite_m, path.v_satellite_mps, t);
   const double geometry_m = path.range_m + clock_m_ - satellite_clock_m;
-  const double phase_offset = epoch_.receiver_phase_cycles - satellites.phase_offset_cycles(c.index);
+  const double phase_offset = epoch_.receiver_phase_cycles - satellites.phase_offset_cycles(candidate.index);
 
   gnss::GpsChannelMeasurement& m = out.measurement.channels[static_cast<std::size_t>(out.measurement.channel_count)];
   m.prn = track.prn;
   m.pseudorange_m = geometry_m + iono_m + rng_.normal(settings_.code_sigma_m);
   m.carrier_phase_cycles = (geometry_m - iono_m + rng_.normal(settings_.phase_sigma_m)) / gnss::kL1WavelengthM +
                            static_cast<double>(track.ambiguity) + phase_offset;
-  const double range_rate = e.dot(path.v_satellite_mps - rx.v_apc);
-  m.doppler_hz = -(range_rate - gnss::kGpsSpeedOfLight * path.satellite.clock_drift_sps) / gnss::kL1WavelengthM +
+  m.doppler_hz = -(range_rate + out.receiver_clock_rate_mps - satellite_clock_rate - iono_rate) / gnss::kL1WavelengthM +
                  rng_.normal(settings_.doppler_sigma_hz);
-  m.cn0_dbhz = 35.0 + 15.0 * std::sin(std::max(c.elevation, 0.0));
+  m.cn0_dbhz = 35.0 + 15.0 * std::sin(std::max(candidate.elevation, 0.0));
   m.loss_of_lock = slipped;
   m.lock_time_s = t.seconds_since(track.lock_start);
 
   GpsChannelTruth& truth = out.truth[static_cast<std::size_t>(out.measurement.channel_count)];
   truth = GpsChannelTruth{track.prn, path.range_m, satellite_clock_m, iono_m, track.ambiguity,
-                          satellites.phase_offset_cycles(c.index), c.elevation, e};
+                          satellites.phase_offset_cycles(candidate.index), candidate.elevation, e,
+                          range_rate, satellite_clock_rate, iono_rate};
   ++out.measurement.channel_count;
 }
 

@@ -4,21 +4,45 @@
 // receiver gives them to the flight computer (gnss::GpsMeasurementEpoch), with the truth behind
 // every number for tests and the truth file.
 //
-// Measurement model (navigation-and-dynamics.md 4.3-4.7; RINEX sign conventions):
+// Measurement model (navigation-and-dynamics.md 4.3-4.7; RINEX sign conventions), at the epoch's
+// time tag t:
 //   P   = rho + c (dt_r - dt^j) + I + e_P,                                    e_P ~ N(0, code_sigma_m)
 //   Phi = (rho + c (dt_r - dt^j) - I) / lambda + N + phi_r - phi^j + e_Phi / lambda,  e_Phi ~ N(0, phase_sigma_m)
-//   D   = -(d rho/dt - c d(dt^j)/dt) / lambda + e_D
+//   D   = -(d/dt)(rho + c dt_r - c dt^j - I) / lambda + e_D,                 e_D ~ N(0, doppler_sigma_hz)
+// i.e. -lambda D is the rate, with respect to the time tag, of the noise-free phase range lambda
+// Phi (positive D when the satellite approaches): every term of the phase has its rate in the
+// Doppler, so -lambda D(t_k) agrees with the phase's central difference over the neighbouring
+// epochs to the noise and the difference's truncation (h^2/6 of the third derivative).
 // rho: geometric range from the receiver's antenna phase centre at the true reception time
-//      t_r = t_tag - dt_r to the satellite at the transmission time t_r - tau, solved by
+//      t_r = t - dt_r to the satellite at the transmission time t_r - tau, solved by
 //      iterating tau = |R3(w_E tau) r^j(t_r - tau) - r_r(t_r)| / c in Earth-fixed axes (the
 //      Earth's rotation during the light time; three iterations converge below 1e-12 s);
-// dt_r: receiver clock, a random walk of clock_step_sigma_m per epoch from N(0, initial_clock_sigma_m);
 //      the epoch's time tag is the true time of the pose it is given, the signal is received
-//      dt_r earlier (the pose is carried back along its Earth-fixed velocity: exact to 1e-9 m for
-//      dt_r < 1 ms);
-// dt^j: the satellite's true L1 clock (GpsSatelliteTruth), so the broadcast clock error appears
-//      in the measurements like the orbit error does;
-// I:   the topside Klobuchar delay (gnss::klobuchar_topside_delay_m), on code, advance on phase;
+//      dt_r earlier (the phase centre is carried back along its Earth-fixed velocity: exact to
+//      1e-9 m for dt_r < 1 ms). Its rate is the exact derivative of that light-time solution,
+//      d rho / dt_r = e.(v^j - v_r) / (1 + e.v^j_inertial / c) (e the unit line of sight, v^j and
+//      v^j_inertial the satellite's Earth-fixed and inertial velocities in the reception-time
+//      axes, v_r the phase centre's Earth-fixed velocity: the centre of mass's plus the attitude
+//      rotation's, ReceiverPose::angular_velocity_itrf), times dt_r / dt = 1 - d(dt_r)/dt;
+// dt_r: receiver clock, c dt_r(t) a continuous function of the time tag, linear between epochs:
+//      over [t_k, t_{k+1}) its rate (frequency offset) is f_k ~ N(0, clock_step_sigma_m /
+//      epoch_interval_s), drawn at epoch k, so the offset is a random walk of clock_step_sigma_m
+//      per epoch at the nominal interval, from N(0, initial_clock_sigma_m) at the first epoch.
+//      Its rate AT an epoch, where the slope changes, is the mean of the two adjacent slopes,
+//      (f_{k-1} + f_k) / 2 (the symmetric derivative; what a frequency measured over any window
+//      centred on the epoch within the neighbouring intervals gives; f_{-1} is drawn in create(),
+//      the clock ran before the first epoch). With equal intervals h this is exactly the central
+//      difference (c dt_r(t_{k+1}) - c dt_r(t_{k-1})) / 2h, so code, phase and Doppler see the
+//      same clock;
+// dt^j: the satellite's true L1 clock (GpsSatelliteTruth) at the transmission time, so the
+//      broadcast clock error appears in the measurements like the orbit error does; its rate is
+//      the true clock drift (a_f1 + 2 a_f2 dt + the relativistic term's rate) times
+//      d(t_r - tau)/dt = (1 - d tau/dt_r)(1 - d(dt_r)/dt);
+// I:   the topside Klobuchar delay (gnss::klobuchar_topside_delay_m, continuous), on code,
+//      advance on phase, for the geometry at reception and the local time of the time tag; its
+//      rate is the central difference over +/-0.1 s (receiver and satellite moved along their
+//      Earth-fixed velocities, the time tag with them; truncation below 1e-6 m/s, and within
+//      0.1 s of a kink of the model's clamps a mean of the two slopes);
 // N:   an integer drawn when a satellite is acquired (again at each re-acquisition) and changed by
 //      a cycle slip; phi_r, phi^j: constant fractional receiver and satellite phase offsets, so
 //      only double differences are integer (as with a real receiver).
@@ -57,6 +81,8 @@ struct GpsReceiverSettings {
   double phase_sigma_m = 0.002;                       // carrier-phase thermal noise (issue) [m]
   double doppler_sigma_hz = 0.05;                     // [Hz]
   double clock_step_sigma_m = 1.0;                    // receiver clock random walk per epoch (issue) [m]
+  double epoch_interval_s = 1.0;                      // nominal epoch interval, for the clock's rate
+                                                      // (gnss-sim: time.step_s) [s]
   double initial_clock_sigma_m = 300.0;               // initial receiver clock offset, 1 us [m]
   double phase_center_offset_m = 0.0854;              // along the boresight (issue) [m]
   double mounting_sigma_rad = 30.0 * core::kArcsecToRad;  // boresight tilt per axis (issue)
@@ -78,24 +104,33 @@ struct ReceiverPose {
   core::StateVector com_itrf;       // centre of mass, Earth-fixed [m, m/s]
   Eigen::Matrix3d body_to_itrf = Eigen::Matrix3d::Identity();
   Eigen::Vector3d com_body_m = Eigen::Vector3d::Zero();  // true centre of mass in the body frame [m]
+  /// The body's angular velocity relative to the Earth-fixed frame, ITRF axes [rad/s]: moves the
+  /// phase centre about the centre of mass (~2e-4 m/s at the orbit rate), which the Doppler sees.
+  Eigen::Vector3d angular_velocity_itrf = Eigen::Vector3d::Zero();
 };
 
-/// The truth behind one channel's measurements.
+/// The truth behind one channel's measurements (the model in the file comment). Rates are with
+/// respect to the time tag, so -lambda D = range_rate + receiver clock rate - satellite_clock_rate
+/// - ionosphere_rate + e_D.
 struct GpsChannelTruth {
   int prn = 0;
   double range_m = 0.0;              // rho
-  double satellite_clock_m = 0.0;    // c dt^j (true L1 clock)
+  double satellite_clock_m = 0.0;    // c dt^j (true L1 clock) at the transmission time
   double ionosphere_m = 0.0;         // I
   std::int64_t ambiguity_cycles = 0;  // N
   double satellite_phase_cycles = 0.0;  // phi^j
   double elevation_antenna_rad = 0.0;
   Eigen::Vector3d line_of_sight_itrf = Eigen::Vector3d::Zero();  // receiver -> satellite (unit)
+  double range_rate_mps = 0.0;            // d rho / dt
+  double satellite_clock_rate_mps = 0.0;  // d(c dt^j) / dt
+  double ionosphere_rate_mps = 0.0;       // dI / dt
 };
 
 struct GpsReceiverEpoch {
   gnss::GpsMeasurementEpoch measurement;
   std::array<GpsChannelTruth, gnss::kMaxGpsChannels> truth{};  // same order as the channels
-  double receiver_clock_m = 0.0;       // c dt_r
+  double receiver_clock_m = 0.0;       // c dt_r at the time tag
+  double receiver_clock_rate_mps = 0.0;  // d(c dt_r) / dt at the time tag (mean of the adjacent slopes)
   double receiver_phase_cycles = 0.0;  // phi_r
   Eigen::Vector3d apc_itrf_m = Eigen::Vector3d::Zero();  // phase centre at the reception time [m]
   int visible = 0;                     // satellites passing the visibility test (tracked or not)
@@ -106,8 +141,9 @@ class GpsReceiver {
   /// Validates the settings and draws the mounting tilts, the phase offset and the initial clock.
   static core::Result<GpsReceiver> create(const GpsReceiverSettings& settings, RandomStream rng);
 
-  /// The measurements at pose.t (the clock steps first, except at the first epoch). Allocation-
-  /// free; the returned reference is valid until the next call.
+  /// The measurements at pose.t (epochs in increasing time; the clock advances along its current
+  /// slope and draws the next slope first). Allocation-free; the returned reference is valid until
+  /// the next call.
   const GpsReceiverEpoch& measure(const ReceiverPose& pose, const GpsSatelliteTruth& satellites);
 
   [[nodiscard]] const GpsReceiverSettings& settings() const { return settings_; }
@@ -129,26 +165,31 @@ class GpsReceiver {
     bool visible = false;
   };
 
+  struct LocalAxes;  // geodetic position and local axes (gps_receiver.cpp)
   struct Reception;  // the antenna at the true reception time (gps_receiver.cpp)
 
   GpsReceiver(const GpsReceiverSettings& settings, RandomStream rng) : settings_(settings), rng_(std::move(rng)) {}
   std::int64_t draw_ambiguity();
 
   // The steps of measure(), in order.
-  void step_clock();
+  void step_clock(core::GpsTime t);
   [[nodiscard]] Reception reception(const ReceiverPose& pose) const;
   std::size_t screen_visibility(const Reception& rx, const GpsSatelliteTruth& satellites);
   [[nodiscard]] const Candidate* candidate_of(int prn, std::size_t count, const GpsSatelliteTruth& satellites) const;
   void assign_channels(core::GpsTime t, std::size_t count, const GpsSatelliteTruth& satellites);
   bool lost_lock(Track& track, core::GpsTime t);
-  [[nodiscard]] double ionosphere_m(const Reception& rx, const Eigen::Vector3d& e, core::GpsTime t) const;
+  [[nodiscard]] double ionosphere_m(const LocalAxes& at, const Eigen::Vector3d& e, core::GpsTime t) const;
+  [[nodiscard]] double ionosphere_rate_mps(const Reception& rx, const Eigen::Vector3d& r_satellite,
+                                           const Eigen::Vector3d& v_satellite, core::GpsTime t) const;
   void measure_channel(Track& track, const Candidate& c, const Reception& rx, core::GpsTime t,
                        const GpsSatelliteTruth& satellites);
 
   GpsReceiverSettings settings_;
   RandomStream rng_;
   Eigen::Vector3d boresight_body_ = Eigen::Vector3d::UnitZ();
-  double clock_m_ = 0.0;
+  double clock_m_ = 0.0;       // c dt_r at the last epoch [m]
+  double clock_rate_mps_ = 0.0;  // its slope from the last epoch on (before the first: f_-1) [m/s]
+  core::GpsTime last_epoch_;
   bool first_epoch_ = true;
   std::array<Track, gnss::kMaxGpsChannels> tracks_{};
   std::array<Candidate, 64> candidates_{};

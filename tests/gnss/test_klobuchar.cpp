@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "gnss/klobuchar.hpp"
@@ -95,6 +96,43 @@ TEST(KlobucharTopside, ShellBelowTheReceiverIsRejected) {
   const auto delay = klobuchar_topside_delay_m(kBrdc1820, {0.0, 0.0, 0.0, 1.0}, 500e3, at(0.0), {0.35, 400e3});
   ASSERT_FALSE(delay.ok());
   EXPECT_EQ(delay.error().field, "shell_height_m");
+}
+
+}  // namespace
+
+namespace {
+
+using visors::gnss::klobuchar_topside_delay_m;
+
+// The topside model is continuous across the ground model's night cut-off (klobuchar.hpp,
+// "Continuity"). Zenith at the equator and Greenwich (pierce point there, M = 1), brdc1820: the
+// period is 83 800 s (beta at phi_m = 0.064 cos(-1.617 pi) = 0.0232 semicircle) and x reaches 1.57
+// at ~71 340 s GPS time of day. Sampled every second over [70 000, 73 000] s: the ground model
+// jumps there by 0.0207 x amplitude x F x c = 0.0207 x 5.0e-9 s x 1.0004 x c = 0.031 m; the
+// topside's largest step between seconds is its rate, at most 0.35 x A x (2 pi / P) x c = 4e-5 m
+// per second before the kink (bound 1e-4 m). Away from the band 1.57 <= |x| < 1.5925 the topside
+// is the scaled ground model: 0.35 x ground / F(90 deg) at the zenith (M = 1).
+TEST(KlobucharTopside, ContinuousAcrossTheNightCutOff) {
+  const KlobucharGeometry zenith{0.0, 0.0, 0.0, 90.0 * kDeg};
+  const double f_zenith = 1.0 + 16.0 * std::pow(0.53 - 0.5, 3);
+  double largest_topside_step = 0.0, largest_ground_step = 0.0, agree_worst = 0.0;
+  double previous_topside = klobuchar_topside_delay_m(kBrdc1820, zenith, 500e3, at(70000.0)).value();
+  double previous_ground = klobuchar_delay_m(kBrdc1820, zenith, at(70000.0)).value();
+  for (double tod = 70001.0; tod <= 73000.0; tod += 1.0) {
+    const double topside = klobuchar_topside_delay_m(kBrdc1820, zenith, 500e3, at(tod)).value();
+    const double ground = klobuchar_delay_m(kBrdc1820, zenith, at(tod)).value();
+    largest_topside_step = std::max(largest_topside_step, std::abs(topside - previous_topside));
+    largest_ground_step = std::max(largest_ground_step, std::abs(ground - previous_ground));
+    // outside the band (71 340 .. 71 640 s with this period): the scaled ground model
+    if (tod < 71300.0 || tod > 71700.0) agree_worst = std::max(agree_worst, std::abs(topside - 0.35 * ground / f_zenith));
+    previous_topside = topside;
+    previous_ground = ground;
+  }
+  std::printf("largest step per second: ground %.5f m, topside %.2e m; topside vs scaled ground %.1e m\n",
+              largest_ground_step, largest_topside_step, agree_worst);
+  EXPECT_NEAR(largest_ground_step, 0.031, 0.002);  // the standard's jump is there (precondition)
+  EXPECT_LT(largest_topside_step, 1e-4);
+  EXPECT_LT(agree_worst, 1e-12);
 }
 
 }  // namespace

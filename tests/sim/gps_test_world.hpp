@@ -65,8 +65,10 @@ inline Eigen::Matrix3d inertial_to_earth(double t_s) {
   return Eigen::AngleAxisd(-gnss::kGpsEarthRate * t_s, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
-/// The pose for a given body-to-inertial attitude.
-inline sim::ReceiverPose pose_with_attitude(const CircularOrbit& orbit, double t_s, const Eigen::Matrix3d& body_to_inertial) {
+/// The pose for a given body-to-inertial attitude and the body's inertial angular velocity
+/// (inertial axes; zero: an inertially fixed attitude).
+inline sim::ReceiverPose pose_with_attitude(const CircularOrbit& orbit, double t_s, const Eigen::Matrix3d& body_to_inertial,
+                                            const Eigen::Vector3d& omega_inertial = Eigen::Vector3d::Zero()) {
   const core::StateVector x = orbit.inertial(t_s);
   const Eigen::Matrix3d to_earth = inertial_to_earth(t_s);
   const Eigen::Vector3d omega(0.0, 0.0, gnss::kGpsEarthRate);
@@ -74,17 +76,20 @@ inline sim::ReceiverPose pose_with_attitude(const CircularOrbit& orbit, double t
   p.t = kMissionEpoch + t_s;
   p.com_itrf = {to_earth * x.r, to_earth * (x.v - omega.cross(x.r))};
   p.body_to_itrf = to_earth * body_to_inertial;
+  p.angular_velocity_itrf = to_earth * (omega_inertial - omega);  // relative to the Earth, Earth-fixed axes
   return p;
 }
 
-/// Body axes: +Z (antenna) along the zenith, +X along the velocity; `tilt_rad` about body X.
+/// Body axes: +Z (antenna) along the zenith, +X along the velocity; `tilt_rad` about body X. The
+/// body turns with the orbit: angular velocity r x v / |r|^2 (exact on the circular orbit).
 inline sim::ReceiverPose pose(const CircularOrbit& orbit, double t_s, double tilt_rad = 0.0) {
   const core::StateVector x = orbit.inertial(t_s);
   const Eigen::Vector3d z = x.r.normalized();
   const Eigen::Vector3d y = z.cross(x.v).normalized();
   Eigen::Matrix3d body_to_inertial;
   body_to_inertial << y.cross(z), y, z;
-  return pose_with_attitude(orbit, t_s, body_to_inertial * Eigen::AngleAxisd(tilt_rad, Eigen::Vector3d::UnitX()).toRotationMatrix());
+  return pose_with_attitude(orbit, t_s, body_to_inertial * Eigen::AngleAxisd(tilt_rad, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+                            x.r.cross(x.v) / x.r.squaredNorm());
 }
 
 /// The ionosphere of the 2024 NYA1 file's header (GPSA / GPSB).

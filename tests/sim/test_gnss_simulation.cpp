@@ -2,6 +2,7 @@
 // scenario tables.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -10,7 +11,12 @@
 #include <sstream>
 #include <unistd.h>
 
+#include <Eigen/Geometry>
+
+#include "core/earth_frames.hpp"
+#include "core/eop.hpp"
 #include "core/files/data_path.hpp"
+#include "core/files/eop_file.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/files/rinex_obs_file.hpp"
 #include "gnss/gps_constants.hpp"
@@ -197,6 +203,166 @@ TEST_F(GnssSimulation, RinexObservationsAreTheSimulatedOnes) {
     }
   }
   EXPECT_EQ(checked, expected.size());
+}
+
+}  // namespace
+
+namespace {
+
+// A CSV file with a header line, its cells read by column name.
+struct Csv {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> rows;
+
+  static Csv read_file(const std::filesystem::path& path) {
+    Csv csv;
+    std::istringstream text(read(path));
+    std::string line;
+    const auto split = [](const std::string& row) {
+      std::vector<std::string> cells;
+      std::stringstream fields(row);
+      std::string cell;
+      while (std::getline(fields, cell, ',')) cells.push_back(cell);
+      return cells;
+    };
+    std::getline(text, line);
+    csv.names = split(line);
+    while (std::getline(text, line)) csv.rows.push_back(split(line));
+    return csv;
+  }
+  [[nodiscard]] std::size_t column(const std::string& name) const {
+    const auto it = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(it, names.end()) << name;
+    return static_cast<std::size_t>(it - names.begin());
+  }
+  [[nodiscard]] double number(std::size_t row, const std::string& name) const { return std::stod(rows[row][column(name)]); }
+};
+
+Eigen::Vector3d vector3(const nlohmann::json& a) { return {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()}; }
+
+// The documented instants of truth.csv (README "visors gnss-sim", gnss_simulation.hpp): the centre
+// of mass (GCRF) and the attitude at the time tag T = t0 + t_s as true GPS time, the antenna phase
+// centre (ITRF) at the reception instant T - dt_r, dt_r = receiver_clock_m / c. For every row:
+//   apc_itrf = R(T) (r_gcrf + A(q) (phase_center_body - center_of_mass_body)) - v_apc dt_r,
+//   v_apc = R(T) v_gcrf - w_E x R(T) r_gcrf (+ the attitude rotation's w x lever, 2e-4 m/s x
+//   1e-6 s: ignored),
+// R the GCRF-to-ITRF rotation with the EOP of the scenario's force model (the truth preset's
+// finals2000A file, as the simulation), w_E the Earth's rotation rate with its length of day, the
+// body vectors from summary.json. Tolerance 0.2 mm: the file's 0.1 mm rounding of the two positions
+// (<= 0.05 mm per coordinate each, sqrt(3) x 0.1 mm = 0.17 mm); the quaternion's 1e-10 and the
+// clock's 0.1 mm (3e-13 s x 7.6 km/s) are far below. The instants matter: the relation with the
+// centre of mass taken at the reception instant instead (no -v_apc dt_r) must miss by more than
+// 1 mm on some rows (|v| dt_r = 7.6 km/s x |receiver_clock_m| / c: measured up to ~3 mm).
+TEST_F(GnssSimulation, TruthPhaseCentreIsTheCentreOfMassCarriedToTheReceptionInstant) {
+  const Csv truth = Csv::read_file(*dir_ / "truth.csv");
+  const auto scenario = visors::sim::campaign_from_toml(read(*dir_ / "scenario.toml")).value();
+  const auto eop_path = visors::core::files::find_data_file(scenario.forces.earth_frame.eop);
+  ASSERT_TRUE(eop_path.has_value()) << scenario.forces.earth_frame.eop;
+  const auto eop_table = visors::core::files::read_eop_file(*eop_path);
+  ASSERT_TRUE(eop_table.ok()) << eop_table.error().describe();
+  double worst = 0.0, worst_other_instant = 0.0;
+  for (std::size_t row = 0; row < truth.rows.size(); ++row) {
+    const std::string& name = truth.rows[row][truth.column("spacecraft")];
+    const auto& receiver = (*summary_)["receivers"][name];
+    const Eigen::Vector3d lever_body =
+        vector3(receiver["phase_center_body_m"]) - vector3(receiver["center_of_mass_body_m"]);
+    const visors::core::GpsTime t = scenario.t0 + truth.number(row, "t_s");
+    const visors::core::EarthOrientation eop = eop_table->at(t).value();
+    const Eigen::Matrix3d to_itrf = visors::core::gcrf_to_itrf_matrix(t, eop);
+    const Eigen::Vector3d earth_rate(0.0, 0.0, visors::core::earth_rotation_rate(eop));
+    const Eigen::Vector3d r(truth.number(row, "x_gcrf_m"), truth.number(row, "y_gcrf_m"), truth.number(row, "z_gcrf_m"));
+    const Eigen::Vector3d v(truth.number(row, "vx_gcrf_mps"), truth.number(row, "vy_gcrf_mps"), truth.number(row, "vz_gcrf_mps"));
+    const Eigen::Quaterniond q(truth.number(row, "qw_body_to_gcrf"), truth.number(row, "qx_body_to_gcrf"),
+                               truth.number(row, "qy_body_to_gcrf"), truth.number(row, "qz_body_to_gcrf"));
+    const Eigen::Vector3d apc(truth.number(row, "x_apc_itrf_m"), truth.number(row, "y_apc_itrf_m"),
+                              truth.number(row, "z_apc_itrf_m"));
+    const double dt_receiver = truth.number(row, "receiver_clock_m") / visors::gnss::kGpsSpeedOfLight;
+    const Eigen::Vector3d at_tag = to_itrf * (r + q.normalized().toRotationMatrix() * lever_body);
+    const Eigen::Vector3d v_itrf = to_itrf * v - earth_rate.cross(to_itrf * r);
+    worst = std::max(worst, (apc - (at_tag - v_itrf * dt_receiver)).norm());
+    worst_other_instant = std::max(worst_other_instant, (apc - at_tag).norm());
+  }
+  std::printf("truth.csv: phase centre = centre of mass carried to reception + lever arm within %.2e m; "
+              "without the carry: up to %.2e m\n", worst, worst_other_instant);
+  EXPECT_LT(worst, 2e-4);
+  EXPECT_GT(worst_other_instant, 1e-3);  // precondition: the test tells the instants apart
+}
+
+// The documented Doppler of the RINEX files (README "visors gnss-sim"): -lambda D1C is the rate of
+// the phase range, the sum of the truth rates, -lambda D1C = range_rate_mps + receiver_clock_rate_mps
+// (truth.csv) - satellite_clock_rate_mps - ionosphere_rate_mps + e_D: the residual within 5 sigma
+// (sigma = lambda x 0.05 Hz = 0.00951 m/s, plus the file's 0.0005 Hz rounding x lambda = 1e-4 m/s)
+// with the sample sigma within 4 sigma / sqrt(2n) + 2 % (the roundings) of it; and -lambda D1C at
+// epoch k against the central difference of lambda L1C over k +/- 1 on continuous tracks (no LLI
+// at k or k+1, the same truth ambiguity at k-1, k, k+1), bound derived in test_gps_receiver.cpp
+// (DopplerIsThePhaseRate): 5 x 0.00962 + 0.009 + |I_{k+1} - 2 I_k + I_{k-1}| / 2 m/s, RMS below
+// 1.1 x 0.00962 m/s. Both spacecraft, 120 s of the science formation (truth dynamics, nominal
+// attitude, the simulation's Earth orientation: what the receiver test's toy world does not
+// exercise).
+TEST_F(GnssSimulation, RinexDopplerIsThePhaseRateAndTheSumOfTheTruthRates) {
+  const Csv truth = Csv::read_file(*dir_ / "truth.csv");
+  const Csv channels = Csv::read_file(*dir_ / "channels_truth.csv");
+  const double lambda = visors::gnss::kL1WavelengthM;
+  const double sigma_d = lambda * 0.05, sigma = std::hypot(sigma_d, 0.002 / std::sqrt(2.0));
+  std::vector<double> from_truth, from_phase;
+  std::size_t outside_truth = 0, outside_phase = 0;
+  for (const char* name : {"dsc", "osc"}) {
+    const auto obs = visors::gnss::files::read_rinex3_observations(*dir_ / (std::string(name) + ".rnx"));
+    ASSERT_TRUE(obs.ok()) << obs.error().describe();
+    std::map<long, double> clock_rate;
+    for (std::size_t row = 0; row < truth.rows.size(); ++row) {
+      if (truth.rows[row][truth.column("spacecraft")] == name) {
+        clock_rate[std::lround(truth.number(row, "t_s"))] = truth.number(row, "receiver_clock_rate_mps");
+      }
+    }
+    std::map<std::pair<long, int>, std::size_t> channel_row;
+    for (std::size_t row = 0; row < channels.rows.size(); ++row) {
+      if (channels.rows[row][channels.column("spacecraft")] != name) continue;
+      channel_row[{std::lround(channels.number(row, "t_s")), std::stoi(channels.rows[row][channels.column("prn")])}] = row;
+    }
+    // (epoch, prn) -> lambda L1C, LLI bit 0
+    std::map<std::pair<long, int>, std::pair<double, bool>> phase;
+    for (std::size_t k = 0; k < obs->epochs.size(); ++k) {
+      for (const auto& sat : obs->epochs[k].satellites) {
+        phase[{static_cast<long>(k), sat.prn}] = {lambda * *sat.values[1].value, (sat.values[1].lli & 1) != 0};
+      }
+    }
+    for (std::size_t k = 0; k < obs->epochs.size(); ++k) {
+      const long epoch = static_cast<long>(k);
+      for (const auto& sat : obs->epochs[k].satellites) {
+        const double doppler_mps = -lambda * *sat.values[2].value;
+        const std::size_t row = channel_row.at({epoch, sat.prn});
+        const double model = channels.number(row, "range_rate_mps") + clock_rate.at(epoch) -
+                             channels.number(row, "satellite_clock_rate_mps") - channels.number(row, "ionosphere_rate_mps");
+        from_truth.push_back(doppler_mps - model);
+        if (std::abs(from_truth.back()) > 5.0 * sigma_d + 1e-4) ++outside_truth;
+        const auto before = phase.find({epoch - 1, sat.prn}), now = phase.find({epoch, sat.prn}),
+                   after = phase.find({epoch + 1, sat.prn});
+        if (before == phase.end() || after == phase.end() || now->second.second || after->second.second) continue;
+        const std::size_t row_before = channel_row.at({epoch - 1, sat.prn}), row_after = channel_row.at({epoch + 1, sat.prn});
+        const auto ambiguity = [&](std::size_t r) { return channels.rows[r][channels.column("ambiguity_cycles")]; };
+        if (ambiguity(row_before) != ambiguity(row) || ambiguity(row_after) != ambiguity(row)) continue;
+        from_phase.push_back(doppler_mps - 0.5 * (after->second.first - before->second.first));
+        const double kink = 0.5 * std::abs(channels.number(row_after, "ionosphere_m") - 2.0 * channels.number(row, "ionosphere_m") +
+                                           channels.number(row_before, "ionosphere_m"));
+        if (std::abs(from_phase.back()) > 5.0 * sigma + 0.009 + kink) ++outside_phase;
+      }
+    }
+  }
+  const auto rms = [](const std::vector<double>& x) {
+    double square = 0.0;
+    for (double v : x) square += v * v;
+    return std::sqrt(square / static_cast<double>(x.size()));
+  };
+  std::printf("RINEX D1C: minus the truth rates RMS %.5f m/s (%zu), minus the central phase difference RMS %.5f m/s (%zu)\n",
+              rms(from_truth), from_truth.size(), rms(from_phase), from_phase.size());
+  // preconditions, chosen: ~12 channels x 121 epochs x 2 spacecraft; measured 2904 and 2852; RMS 0.00941 and 0.00962 m/s
+  ASSERT_GT(from_truth.size(), 2000u);
+  ASSERT_GT(from_phase.size(), 2000u);
+  EXPECT_EQ(outside_truth, 0u);
+  EXPECT_NEAR(rms(from_truth), sigma_d, 4.0 * sigma_d / std::sqrt(2.0 * static_cast<double>(from_truth.size())) + 0.02 * sigma_d);
+  EXPECT_EQ(outside_phase, 0u);
+  EXPECT_LT(rms(from_phase), 1.1 * sigma);
 }
 
 }  // namespace
