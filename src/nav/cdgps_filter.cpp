@@ -88,7 +88,6 @@ struct CdgpsFilter::Impl {
   void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
   void process(const CdgpsSettings& s, CdgpsEpochReport& report);
   void resolve(const CdgpsSettings& s, CdgpsEpochReport& report);
-  [[nodiscard]] double widest_variance(const Eigen::Ref<const Eigen::MatrixXd>& C_k) const;
 };
 
 core::Result<CdgpsFilter> CdgpsFilter::create(const CdgpsSettings& settings, dynamics::ForceModel dsc_model,
@@ -441,22 +440,9 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
     }
   }
   report.fix_applied = true;
-  if (s.hold && report.fix.outcome == FixOutcome::kFixed && widest_variance(C.topRows(k)) > s.hold_variance_cycles2) {
+  if (s.hold && report.fix.outcome == FixOutcome::kFixed) {
     report.held = fixer.apply(x, P, C.topRows(k), z_fixed.head(k), s.hold_variance_cycles2) == FixedSolutionUpdate::Status::kOk;
   }
-}
-
-// The largest variance of the fixed combinations in the float filter [cycles^2]. The hold is
-// applied only while some combination is looser than the hold's variance: the same integers
-// pseudo-measured again at every epoch would count their information once per epoch, and P
-// would shrink without bound (NEES of the antennas 16-76 after 12-24 hours of fix-and-hold;
-// RTKLIB's holdamb does so).
-double CdgpsFilter::Impl::widest_variance(const Eigen::Ref<const Eigen::MatrixXd>& C_k) const {
-  double widest = 0.0;
-  for (Eigen::Index j = 0; j < C_k.rows(); ++j) {
-    widest = std::max(widest, (C_k.row(j) * P * C_k.row(j).transpose()).value());
-  }
-  return widest;
 }
 
 CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
