@@ -36,6 +36,7 @@ core::Result<std::vector<nav::GpsReceiverEpoch>> read_observations(const std::fi
       o.code_m = s.code_m[0];
       o.phase_cycles = s.phase_cyc[0];
       o.loss_of_lock = s.loss_of_lock[0];
+      o.half_cycle = s.half_cycle[0];
     }
     out.push_back(epoch);
   }

@@ -52,6 +52,13 @@ bool lli_slip(const gnss::files::SatelliteObservations& s, int index) {
   return (s.values[static_cast<std::size_t>(index)].lli & 1) != 0;
 }
 
+// RINEX 3 LLI bit 1: half-cycle ambiguity / slip possible. (RINEX 2's bit 1 means an opposite
+// wavelength factor instead, so it is read for RINEX 3 only.)
+bool lli_half_cycle(const gnss::files::SatelliteObservations& s, int index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= s.values.size()) return false;
+  return (s.values[static_cast<std::size_t>(index)].lli & 2) != 0;
+}
+
 }  // namespace
 
 core::Result<ReceiverObservables> extract_observables(const gnss::files::ObservationFile& file, const std::string& name) {
@@ -80,6 +87,7 @@ core::Result<ReceiverObservables> extract_observables(const gnss::files::Observa
         o.phase_cyc[f] = value_or_nan(s, phase[f]);
         o.code_m[f] = value_or_nan(s, code[f]);
         o.loss_of_lock[f] = lli_slip(s, phase[f]);
+        o.half_cycle[f] = file.version >= 3.0 && lli_half_cycle(s, phase[f]);
       }
       e.satellites.push_back(o);
     }

@@ -26,6 +26,7 @@ struct SatelliteObservables {
   std::array<double, kFrequencies> phase_cyc{};  // NaN when absent
   std::array<double, kFrequencies> code_m{};     // NaN when absent
   std::array<bool, kFrequencies> loss_of_lock{};  // LLI bit 0 on the phase
+  std::array<bool, kFrequencies> half_cycle{};    // LLI bit 1 on the phase, RINEX 3: half-cycle ambiguity
 };
 
 struct ReceiverEpoch {

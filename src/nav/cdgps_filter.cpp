@@ -78,7 +78,7 @@ struct CdgpsFilter::Impl {
   }
   void compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph, core::OnboardEarthFrame& frame,
                       CdgpsEpochReport& report);
-  void select(const CdgpsEpochInput& in, Craft local);
+  void select(const CdgpsEpochInput& in, Craft local, CdgpsEpochReport& report);
   void assign_slots(AmbiguitySlotBank& bank, std::array<core::GpsTime, kGpsSlots>& last_measured,
                     std::array<Scalar, kGpsSlots>& scalars, int& count, double variance, double timeout_s,
                     CdgpsEpochReport& report);
@@ -258,12 +258,16 @@ void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::Ep
 }
 
 // The epoch's GRAPHIC (local receiver) and SDCP (both receivers) measurements.
-void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local) {
+void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local, CdgpsEpochReport& report) {
   graphic_count = sdcp_count = 0;
   const GpsReceiverEpoch* own = local == Craft::kDsc ? in.dsc : in.osc;
   for (int i = 0; own != nullptr && i < own->count; ++i) {
     const GpsObservation& o = own->observations[static_cast<std::size_t>(i)];
     if (range(local, o.prn) == nullptr) continue;
+    if (o.half_cycle) {
+      ++report.half_cycle_skipped;
+      continue;
+    }
     Scalar& m = graphic_scalars[static_cast<std::size_t>(graphic_count++)];
     m = Scalar{};
     m.prn = o.prn;
@@ -274,6 +278,10 @@ void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local) {
     const GpsObservation& o = in.osc->observations[static_cast<std::size_t>(i)];
     const GpsObservation* d = in.dsc->find(o.prn);
     if (d == nullptr || range(Craft::kOsc, o.prn) == nullptr || range(Craft::kDsc, o.prn) == nullptr) continue;
+    if (o.half_cycle || d->half_cycle) {
+      ++report.half_cycle_skipped;
+      continue;
+    }
     Scalar& m = sdcp_scalars[static_cast<std::size_t>(sdcp_count++)];
     m = Scalar{};
     m.prn = o.prn;
@@ -463,7 +471,7 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   if (other != nullptr && other->t != m.t) (settings_.local == Craft::kDsc ? in.osc : in.dsc) = nullptr;  // not this epoch's
   report.accepted = true;
   m.compute_ranges(in, ephemerides, frame, report);
-  m.select(in, settings_.local);
+  m.select(in, settings_.local, report);
   m.assign_slots(m.graphic, m.graphic_last, m.graphic_scalars, m.graphic_count,
                  std::pow(settings_.graphic_ambiguity_sigma_m, 2), settings_.slot_timeout_s, report);
   m.assign_slots(m.sdcp, m.sdcp_last, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2),

@@ -12,7 +12,8 @@
 //    loss-of-lock indicator, gets its slot (re)initialised from the measurement's residual with
 //    the prior variance (digest 5.4, large-variance method), so the same measurement then updates
 //    it; a satellite unmeasured for longer than slot_timeout_s is released (a lost crosslink epoch
-//    or a short gap keeps the ambiguity, and with it a held integer).
+//    or a short gap keeps the ambiguity, and with it a held integer). A phase flagged with an
+//    unresolved half cycle is not used (the receiver flags the loss of lock when it resolves it).
 // 2. Sequential scalar updates (nav/scalar_update.hpp, Joseph form): GRAPHIC first, then SDCP,
 //    each predicted once per epoch at the prior state and linearised there (the innovation of a
 //    later scalar is corrected by h (x - x_prior)). A rejected SDCP is a cycle slip the indicator
@@ -70,6 +71,7 @@ struct CdgpsEpochReport {
   int detected_slips = 0;      // SDCP gate failures (slips the indicator did not flag)
   int missing_ephemeris = 0;
   int implausible_observations = 0;  // skipped (nav/gps_observations.hpp plausible())
+  int half_cycle_skipped = 0;        // phases flagged with an unresolved half cycle, not used
   double nis_sum = 0.0;        // sum of the accepted scalars' normalised innovations squared
   int nis_count = 0;
   int double_differences = 0;

@@ -17,6 +17,7 @@ struct GpsObservation {
   double code_m = 0.0;        // C/A pseudorange [m]
   double phase_cycles = 0.0;  // L1 carrier phase [cycles] (RINEX sign: grows with the range)
   bool loss_of_lock = false;  // a slip may have occurred since the previous epoch
+  bool half_cycle = false;    // the phase may be off by half a cycle (RINEX 3 LLI bit 1), until resolved
 };
 
 struct GpsReceiverEpoch {

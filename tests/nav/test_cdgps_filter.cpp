@@ -251,6 +251,19 @@ TEST(CdgpsFilterInput, SkipsAnImplausibleObservation) {
   EXPECT_EQ(r.graphic_used, dsc.count - 1);
 }
 
+// A phase with an unresolved half cycle (RINEX 3 LLI bit 1) is used neither in GRAPHIC nor in
+// SDCP, and counted.
+TEST(CdgpsFilterInput, SkipsAHalfCyclePhase) {
+  Simulation sim;
+  CdgpsFilter filter = initialised_filter(sim);
+  GpsReceiverEpoch dsc = sim.observe(epoch(), 0);
+  const GpsReceiverEpoch osc = sim.observe(epoch(), 1);
+  dsc.observations[0].half_cycle = true;
+  const CdgpsEpochReport r = filter.update({&dsc, &osc, {}, {}}, sim.ephemerides, sim.frame);
+  EXPECT_EQ(r.half_cycle_skipped, 2);  // its GRAPHIC and its SDCP
+  EXPECT_EQ(r.sdcp_used, osc.count - 1);
+}
+
 TEST(CdgpsSettings, NameTheFieldOfABadValue) {
   CdgpsSettings s;
   s.sdcp_sigma_m = -1.0;
