@@ -121,6 +121,19 @@ TEST(GnssScenario, BadValuesAreNamed) {
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "[gnss.broadcast_errors]\nalong_m = -1\n")).error().field,
             "gnss.broadcast_errors.along_m");
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "attitude = \"sideways\"\n")).error().field, "gnss.attitude");
+  // the realism options (README "visors gnss-sim")
+  for (const char* key : {"unflagged_slip_fraction", "half_cycle_slip_probability", "data_gap_probability"}) {
+    EXPECT_EQ(campaign_from_toml(scenario(10.0, std::string("[gnss.receiver]\n") + key + " = 1.5\n")).error().field,
+              std::string("gnss.receiver.") + key);
+  }
+  for (const char* key : {"half_cycle_resolve_s", "code_multipath_m", "phase_multipath_m", "data_gap_s", "multipath_tau_s"}) {
+    EXPECT_EQ(campaign_from_toml(scenario(10.0, std::string("[gnss.receiver]\n") + key + " = -1\n")).error().field,
+              std::string("gnss.receiver.") + key);
+  }
+  EXPECT_EQ(campaign_from_toml(scenario(10.0, "[gnss.receiver]\nmultipath_tau_s = 0\n")).error().field,
+            "gnss.receiver.multipath_tau_s");
+  EXPECT_EQ(campaign_from_toml(scenario(10.0, "[gnss.receiver]\nelevation_dependent_noise = 1\n")).error().field,
+            "gnss.receiver.elevation_dependent_noise");
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "source_time_gps = \"yesterday\"\n")).error().field, "gnss.source_time_gps");
 }
 
