@@ -83,7 +83,8 @@ TEST_F(GpsReceiverRealism, UnflaggedSlipFractionMatchesTheSetting) {
     }
     previous = now;
   }
-  ASSERT_GT(slips, 2000);  // precondition: ~ 400 epochs x 10 channels
+  // precondition: ~ 400 epochs x 10 channels; measured 3574 slips, 1102 unflagged = 0.308 (sigma 0.008) (2026-11)
+  ASSERT_GT(slips, 2000);
   const double n = slips, f = unflagged / n;
   EXPECT_NEAR(f, 0.3, 4.0 * std::sqrt(0.3 * 0.7 / n)) << unflagged << " of " << slips;
 }
@@ -138,6 +139,7 @@ TEST_F(GpsReceiverRealism, HalfCycleIsCarriedFlaggedAndResolved) {
     }
     acquired = now;
   }
+  // preconditions, chosen; measured 300 half-cycle and 1557 resolved channel epochs (2026-11)
   ASSERT_GT(checked_half, 100);
   ASSERT_GT(checked_resolved, 100);
 }
@@ -171,7 +173,9 @@ TEST_F(GpsReceiverRealism, ElevationDependentNoiseScatterRatio) {
     ASSERT_GT(n_low, 500);
     ASSERT_GT(n_high, 500);
     const double expected = on ? std::sqrt((low_model / n_low) / (high_model / n_high)) : 1.0;
-    // the sample RMS of n values has a relative error ~ 1/sqrt(2n); 15 % is > 4 of them here
+    // the sample RMS of n values has a relative error ~ 1/sqrt(2n); 15 % is > 4 of them here.
+    // Measured (2026-11): on, expected 5.74, code 5.68, phase 5.78 (10333 low, 3129 high samples);
+    // off, code 0.99, phase 1.00
     EXPECT_NEAR(std::sqrt((low_code / n_low) / (high_code / n_high)) / expected, 1.0, 0.15) << "on " << on;
     EXPECT_NEAR(std::sqrt((low_phase / n_low) / (high_phase / n_high)) / expected, 1.0, 0.15) << "on " << on;
     if (on) {
@@ -219,6 +223,7 @@ TEST_F(GpsReceiverRealism, MultipathIsGaussMarkov) {
     }
   }
   for (const auto& [prn, x] : series) close_track(x);
+  // measured (2026-11, 62392 samples): sigma 0.496 m and 0.00497 m, lag-tau correlation 0.380 and 0.358
   EXPECT_NEAR(std::sqrt(code_square / n), 0.5, 0.05);
   EXPECT_NEAR(std::sqrt(phase_square / n), 0.005, 0.0005);
   // ~ 3000 correlation times pooled: the lag correlation's standard error ~ 0.02
@@ -276,7 +281,8 @@ TEST_F(GpsReceiverRealism, ShortDataGapsKeepTheIntegers) {
     EXPECT_EQ(length % 10, 0) << length;
     gaps += length / 10;
   }
-  // a cycle: geometric wait (mean 1/p - 1 recorded epochs) then 10 gap epochs
+  // a cycle: geometric wait (mean 1/p - 1 recorded epochs) then 10 gap epochs; measured 103 gaps
+  // (101 runs) for 101.7 expected, 1041 channels checked across a gap (2026-11)
   const double expected = epochs / (1.0 / 0.02 - 1.0 + 10.0);
   EXPECT_NEAR(static_cast<double>(gaps), expected, 4.0 * std::sqrt(expected));
   EXPECT_GT(continued, 100);
@@ -304,7 +310,7 @@ TEST_F(GpsReceiverRealism, LongDataGapsReacquire) {
     }
     in_gap = false;
   }
-  EXPECT_GT(gaps, 10);
+  EXPECT_GT(gaps, 10);  // precondition; measured 33 (2026-11)
 }
 
 }  // namespace
