@@ -19,7 +19,10 @@ core::Result<bool> read_receiver(const toml::table& table, GpsReceiverSettings& 
                           {"elevation_mask_deg", "channels", "code_sigma_m", "phase_sigma_m", "doppler_sigma_hz",
                            "clock_step_sigma_m", "initial_clock_sigma_m", "phase_center_offset_m", "mounting_sigma_arcsec",
                            "antenna_body_m", "occultation_altitude_m", "cycle_slip_probability", "max_slip_cycles",
-                           "ionosphere", "topside_fraction", "shell_height_m"})) {
+                           "ionosphere", "topside_fraction", "shell_height_m", "unflagged_slip_fraction",
+                           "half_cycle_slip_probability", "half_cycle_resolve_s", "elevation_dependent_noise",
+                           "code_multipath_m", "phase_multipath_m", "multipath_tau_s", "data_gap_probability",
+                           "data_gap_s"})) {
     return *e;
   }
   VISORS_TRY(mask, number_at(table, sec, "elevation_mask_deg", r.elevation_mask_rad / core::kDegToRad));
@@ -38,6 +41,15 @@ core::Result<bool> read_receiver(const toml::table& table, GpsReceiverSettings& 
   VISORS_TRY(ionosphere, bool_at(table, sec, "ionosphere", r.ionosphere));
   VISORS_TRY(fraction, number_at(table, sec, "topside_fraction", r.topside.topside_fraction));
   VISORS_TRY(shell, number_at(table, sec, "shell_height_m", r.topside.shell_height_m));
+  VISORS_TRY(unflagged, number_at(table, sec, "unflagged_slip_fraction", r.unflagged_slip_fraction));
+  VISORS_TRY(half, number_at(table, sec, "half_cycle_slip_probability", r.half_cycle_slip_probability));
+  VISORS_TRY(half_resolve, number_at(table, sec, "half_cycle_resolve_s", r.half_cycle_resolve_s));
+  VISORS_TRY(elevation_noise, bool_at(table, sec, "elevation_dependent_noise", r.elevation_dependent_noise));
+  VISORS_TRY(code_mp, number_at(table, sec, "code_multipath_m", r.code_multipath_m));
+  VISORS_TRY(phase_mp, number_at(table, sec, "phase_multipath_m", r.phase_multipath_m));
+  VISORS_TRY(mp_tau, number_at(table, sec, "multipath_tau_s", r.multipath_tau_s));
+  VISORS_TRY(gap_p, number_at(table, sec, "data_gap_probability", r.data_gap_probability));
+  VISORS_TRY(gap_s, number_at(table, sec, "data_gap_s", r.data_gap_s));
   if (channels < 1 || channels > 12) return Error{sec + ".channels", "must be in 1..12"};
   if (slip_size < 1 || slip_size > 1000000) return Error{sec + ".max_slip_cycles", "must be in 1..1000000"};
   GpsReceiverSettings out = r;
@@ -57,6 +69,15 @@ core::Result<bool> read_receiver(const toml::table& table, GpsReceiverSettings& 
   out.ionosphere = ionosphere;
   out.topside.topside_fraction = fraction;
   out.topside.shell_height_m = shell;
+  out.unflagged_slip_fraction = unflagged;
+  out.half_cycle_slip_probability = half;
+  out.half_cycle_resolve_s = half_resolve;
+  out.elevation_dependent_noise = elevation_noise;
+  out.code_multipath_m = code_mp;
+  out.phase_multipath_m = phase_mp;
+  out.multipath_tau_s = mp_tau;
+  out.data_gap_probability = gap_p;
+  out.data_gap_s = gap_s;
   if (auto valid = out.validate(); !valid) return Error{sec + "." + valid.error().field, valid.error().message};
   r = out;
   return true;
@@ -125,11 +146,17 @@ std::string gnss_settings_to_toml(const GnssSettings& s) {
       "doppler_sigma_hz = {:.17g}\nclock_step_sigma_m = {:.17g}\ninitial_clock_sigma_m = {:.17g}\n"
       "phase_center_offset_m = {:.17g}\nmounting_sigma_arcsec = {:.17g}\nantenna_body_m = [{:.17g}, {:.17g}, {:.17g}]\n"
       "occultation_altitude_m = {:.17g}\ncycle_slip_probability = {:.17g}\nmax_slip_cycles = {}\nionosphere = {}\n"
-      "topside_fraction = {:.17g}\nshell_height_m = {:.17g}\n\n",
+      "topside_fraction = {:.17g}\nshell_height_m = {:.17g}\n",
       r.elevation_mask_rad / core::kDegToRad, r.channels, r.code_sigma_m, r.phase_sigma_m, r.doppler_sigma_hz,
       r.clock_step_sigma_m, r.initial_clock_sigma_m, r.phase_center_offset_m, r.mounting_sigma_rad / core::kArcsecToRad,
       r.antenna_body_m.x(), r.antenna_body_m.y(), r.antenna_body_m.z(), r.occultation_altitude_m, r.cycle_slip_probability,
       r.max_slip_cycles, r.ionosphere, r.topside.topside_fraction, r.topside.shell_height_m);
+  out += fmt::format(
+      "unflagged_slip_fraction = {:.17g}\nhalf_cycle_slip_probability = {:.17g}\nhalf_cycle_resolve_s = {:.17g}\n"
+      "elevation_dependent_noise = {}\ncode_multipath_m = {:.17g}\nphase_multipath_m = {:.17g}\nmultipath_tau_s = {:.17g}\n"
+      "data_gap_probability = {:.17g}\ndata_gap_s = {:.17g}\n\n",
+      r.unflagged_slip_fraction, r.half_cycle_slip_probability, r.half_cycle_resolve_s, r.elevation_dependent_noise,
+      r.code_multipath_m, r.phase_multipath_m, r.multipath_tau_s, r.data_gap_probability, r.data_gap_s);
   out += fmt::format("[gnss.broadcast_errors]\nradial_m = {:.17g}\nalong_m = {:.17g}\ncross_m = {:.17g}\nclock_m = {:.17g}\nclock_drift_sps = {:.17g}\n\n",
                      b.radial_m, b.along_m, b.cross_m, b.clock_m, b.clock_drift_sps);
   return out;

@@ -12,7 +12,9 @@
 //   elevation_mask_deg, channels, code_sigma_m, phase_sigma_m, doppler_sigma_hz,
 //   clock_step_sigma_m, initial_clock_sigma_m, phase_center_offset_m, mounting_sigma_arcsec,
 //   antenna_body_m = [x, y, z], occultation_altitude_m, cycle_slip_probability, max_slip_cycles,
-//   ionosphere, topside_fraction, shell_height_m
+//   ionosphere, topside_fraction, shell_height_m, unflagged_slip_fraction,
+//   half_cycle_slip_probability, half_cycle_resolve_s, elevation_dependent_noise, code_multipath_m,
+//   phase_multipath_m, multipath_tau_s, data_gap_probability, data_gap_s
 //   [gnss.broadcast_errors]  # sim/gps_satellite_truth.hpp
 //   radial_m, along_m, cross_m, clock_m, clock_drift_sps
 

@@ -118,10 +118,12 @@ void write_truth_row(std::FILE* f, double t_s, const Craft& c, const GpsReceiver
 void write_channel_rows(std::FILE* f, double t_s, const Craft& c, const GpsReceiverEpoch& e) {
   for (int k = 0; k < e.measurement.channel_count; ++k) {
     const GpsChannelTruth& t = e.truth[static_cast<std::size_t>(k)];
-    std::fprintf(f, "%.3f,%s,%d,%.4f,%.4f,%.4f,%lld,%.6f,%.6f,%.4f,%.6f,%.6f,%.6f\n", t_s, c.name.c_str(), t.prn, t.range_m,
-                 t.satellite_clock_m, t.ionosphere_m, static_cast<long long>(t.ambiguity_cycles), t.satellite_phase_cycles,
-                 e.receiver_phase_cycles, t.elevation_antenna_rad / core::kDegToRad, t.range_rate_mps,
-                 t.satellite_clock_rate_mps, t.ionosphere_rate_mps);
+    std::fprintf(f, "%.3f,%s,%d,%.4f,%.4f,%.4f,%lld,%.6f,%.6f,%.4f,%.6f,%.6f,%.6f,%.1f,%d,%.4f,%.4f,%d\n", t_s,
+                 c.name.c_str(), t.prn, t.range_m, t.satellite_clock_m, t.ionosphere_m,
+                 static_cast<long long>(t.ambiguity_cycles), t.satellite_phase_cycles, e.receiver_phase_cycles,
+                 t.elevation_antenna_rad / core::kDegToRad, t.range_rate_mps, t.satellite_clock_rate_mps,
+                 t.ionosphere_rate_mps, t.half_cycle_cycles, t.slipped ? 1 : 0, t.code_multipath_m, t.phase_multipath_m,
+                 e.recorded ? 1 : 0);
   }
 }
 
@@ -181,7 +183,8 @@ core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) 
                "qy_body_to_gcrf,qz_body_to_gcrf\n");
   std::fprintf(channels_csv->get(),
                "t_s,spacecraft,prn,range_m,satellite_clock_m,ionosphere_m,ambiguity_cycles,satellite_phase_cycles,"
-               "receiver_phase_cycles,elevation_antenna_deg,range_rate_mps,satellite_clock_rate_mps,ionosphere_rate_mps\n");
+               "receiver_phase_cycles,elevation_antenna_deg,range_rate_mps,satellite_clock_rate_mps,ionosphere_rate_mps,"
+               "half_cycle_cycles,new_ambiguity,code_multipath_m,phase_multipath_m,recorded\n");
   return TruthFiles{std::move(truth_csv).value(), std::move(channels_csv).value()};
 }
 
@@ -277,10 +280,10 @@ ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, b
 core::Result<bool> record_epoch(Craft& c, const GpsReceiverEpoch& epoch, double t_s, const TruthFiles& files) {
   c.visible_sum += epoch.visible;
   c.tracked_sum += epoch.measurement.channel_count;
-  for (int j = 0; j < epoch.measurement.channel_count; ++j) {
+  for (int j = 0; j < epoch.measurement.channel_count && epoch.recorded; ++j) {
     if (epoch.measurement.channels[static_cast<std::size_t>(j)].loss_of_lock) ++c.acquisitions;
   }
-  if (c.rinex) {
+  if (c.rinex && epoch.recorded) {  // nothing written in a data gap
     // No receiver clock offset in the epoch records: a real receiver does not know its own
     // (it is in truth.csv).
     const auto written = c.rinex->write(gnss::files::to_observation_epoch(epoch.measurement));

@@ -60,10 +60,18 @@
 //                                 screen: within 2e-4 deg of the transmission instant's)
 //   range_rate_mps, satellite_clock_rate_mps, ionosphere_rate_mps [m/s]  d/dt of range_m,
 //                                 satellite_clock_m, ionosphere_m at T
+//   half_cycle_cycles             0.5 while the phase carries an unresolved half cycle (RINEX LLI
+//                                 bit 1 set; gnss.receiver.half_cycle_slip_probability), else 0
+//   new_ambiguity                 1 when the phase ambiguity is new at this epoch (acquisition,
+//                                 cycle slip, half cycle resolved), flagged in the RINEX file or not
+//                                 (gnss.receiver.unflagged_slip_fraction)
+//   code_multipath_m, phase_multipath_m [m]  the multipath errors in C1C and lambda L1C
+//   recorded                      0 in a data gap (no RINEX record of this receiver at T), else 1
 // so that (e_ noise; lambda the L1 wavelength; RINEX rounding 0.001 m, cycles, Hz):
-//   C1C            = range_m + receiver_clock_m - satellite_clock_m + ionosphere_m + e_P
+//   C1C            = range_m + receiver_clock_m - satellite_clock_m + ionosphere_m + code_multipath_m + e_P
 //   lambda L1C     = range_m + receiver_clock_m - satellite_clock_m - ionosphere_m
-//                    + lambda (ambiguity_cycles + receiver_phase_cycles - satellite_phase_cycles) + e_Phi
+//                    + lambda (ambiguity_cycles + half_cycle_cycles + receiver_phase_cycles
+//                              - satellite_phase_cycles) + phase_multipath_m + e_Phi
 //   -lambda D1C    = range_rate_mps + receiver_clock_rate_mps - satellite_clock_rate_mps
 //                    - ionosphere_rate_mps + e_D
 // (tests/sim/test_gnss_simulation.cpp checks these relations and the phase centre's).

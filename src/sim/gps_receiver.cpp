@@ -23,7 +23,11 @@ core::Result<bool> GpsReceiverSettings::validate() const {
                       {"initial_clock_sigma_m", initial_clock_sigma_m},
                       {"phase_center_offset_m", phase_center_offset_m},
                       {"mounting_sigma_rad", mounting_sigma_rad},
-                      {"occultation_altitude_m", occultation_altitude_m}};
+                      {"occultation_altitude_m", occultation_altitude_m},
+                      {"half_cycle_resolve_s", half_cycle_resolve_s},
+                      {"code_multipath_m", code_multipath_m},
+                      {"phase_multipath_m", phase_multipath_m},
+                      {"data_gap_s", data_gap_s}};
   for (const auto& f : non_negative) {
     if (!(std::isfinite(f.value) && f.value >= 0.0)) return core::Error{f.name, "must be finite and >= 0"};
   }
@@ -34,6 +38,16 @@ core::Result<bool> GpsReceiverSettings::validate() const {
     return core::Error{"cycle_slip_probability", "must be in [0, 1]"};
   }
   if (max_slip_cycles < 1) return core::Error{"max_slip_cycles", "must be >= 1"};
+  const struct {
+    const char* name;
+    double value;
+  } probabilities[] = {{"unflagged_slip_fraction", unflagged_slip_fraction},
+                       {"half_cycle_slip_probability", half_cycle_slip_probability},
+                       {"data_gap_probability", data_gap_probability}};
+  for (const auto& f : probabilities) {
+    if (!(f.value >= 0.0 && f.value <= 1.0)) return core::Error{f.name, "must be in [0, 1]"};
+  }
+  if (!(std::isfinite(multipath_tau_s) && multipath_tau_s > 0.0)) return core::Error{"multipath_tau_s", "must be finite and > 0"};
   if (!antenna_body_m.allFinite()) return core::Error{"antenna_body_m", "must be finite"};
   if (!(topside.topside_fraction >= 0.0 && topside.topside_fraction <= 1.0)) {
     return core::Error{"topside.topside_fraction", "must be in [0, 1]"};
@@ -48,7 +62,12 @@ core::Result<bool> GpsReceiverSettings::validate() const {
 
 namespace {
 
-constexpr double kIonosphereRateStep = 0.1;  // half-width of the ionosphere rate's central difference [s]
+constexpr double kIonosphereRateStep = 0.1;
+constexpr double kNoiseFloorElevation = 5.0 * core::kDegToRad;  // the 1/sin(el) scale is capped here
+constexpr double kLongGapS = 30.0;  // a longer data gap makes every channel re-acquire
+
+// 1 / sin(elevation above the antenna plane), the elevation floored at 5 deg.
+double elevation_scale(double elevation_rad) { return 1.0 / std::sin(std::max(elevation_rad, kNoiseFloorElevation)); }  // half-width of the ionosphere rate's central difference [s]
 
 // The satellite at transmission, in the Earth-fixed axes of the reception time.
 struct SignalPath {
@@ -134,6 +153,7 @@ struct GpsReceiver::Reception {
 
 const GpsReceiverEpoch& GpsReceiver::measure(const ReceiverPose& pose, const GpsSatelliteTruth& satellites) {
   step_clock(pose.t);
+  step_gap(pose.t);
   GpsReceiverEpoch& out = epoch_;
   const Reception rx = reception(pose);
   out.apc_itrf_m = rx.r_apc;
@@ -149,6 +169,25 @@ const GpsReceiverEpoch& GpsReceiver::measure(const ReceiverPose& pose, const Gps
     measure_channel(track, *candidate_of(track.prn, count, satellites), rx, pose.t, satellites);
   }
   return out;
+}
+
+// Data gaps: outside a gap, one starts at this epoch with data_gap_probability (no draw when 0);
+// at the first epoch after a gap longer than 30 s every channel is freed (re-acquired below).
+void GpsReceiver::step_gap(core::GpsTime t) {
+  if (gap_active_ && t.seconds_since(gap_until_) >= -1e-9) {
+    gap_active_ = false;
+    if (reacquire_after_gap_) {
+      for (Track& track : tracks_) track.prn = 0;
+      reacquire_after_gap_ = false;
+    }
+  }
+  if (!gap_active_ && settings_.data_gap_probability > 0.0 && rng_.uniform() < settings_.data_gap_probability) {
+    gap_active_ = true;
+    gap_until_ = t + settings_.data_gap_s;
+    reacquire_after_gap_ = settings_.data_gap_s > kLongGapS;
+    if (!(settings_.data_gap_s > 0.0)) gap_active_ = false;
+  }
+  epoch_.recorded = !gap_active_;
 }
 
 // The clock at t along its current slope (the first epoch keeps the offset drawn in create()),
@@ -232,21 +271,55 @@ void GpsReceiver::assign_channels(core::GpsTime t, std::size_t count, const GpsS
     if (tracked) continue;
     for (std::size_t k = 0; k < channels; ++k) {
       if (tracks_[k].prn != 0) continue;
-      tracks_[k] = Track{prn, draw_ambiguity(), t};
+      tracks_[k] = Track{};
+      tracks_[k].prn = prn;
+      tracks_[k].ambiguity = draw_ambiguity();
+      tracks_[k].lock_start = t;
+      tracks_[k].acquired = t;
       break;
     }
   }
 }
 
-// Loss of lock at this epoch: acquired now, or a cycle slip of +/- 1..max_slip_cycles (drawn
-// with cycle_slip_probability), which restarts the lock time.
-bool GpsReceiver::lost_lock(Track& track, core::GpsTime t) {
-  if (track.lock_start == t) return true;  // acquired at this epoch
+// A new ambiguity at this epoch (returned; `flagged`: with LLI bit 0): acquired now (then a
+// half cycle with half_cycle_slip_probability), the half cycle resolved (the phase jumps), or a
+// cycle slip of +/- 1..max_slip_cycles (drawn with cycle_slip_probability), which restarts the
+// lock time unless it is one of the unflagged_slip_fraction the receiver does not notice.
+bool GpsReceiver::lost_lock(Track& track, core::GpsTime t, bool& flagged) {
+  flagged = true;
+  if (track.lock_start == t) {  // acquired at this epoch
+    track.half_cycle =
+        settings_.half_cycle_slip_probability > 0.0 && rng_.uniform() < settings_.half_cycle_slip_probability;
+    return true;
+  }
+  if (track.half_cycle && t.seconds_since(track.acquired) >= settings_.half_cycle_resolve_s - 1e-9) {
+    track.half_cycle = false;
+    track.lock_start = t;
+    return true;
+  }
   if (!(settings_.cycle_slip_probability > 0.0 && rng_.uniform() < settings_.cycle_slip_probability)) return false;
   const auto size = 1 + static_cast<std::int64_t>(rng_.uniform() * settings_.max_slip_cycles);
   track.ambiguity += rng_.uniform() < 0.5 ? -size : size;
-  track.lock_start = t;
+  flagged = !(settings_.unflagged_slip_fraction > 0.0 && rng_.uniform() < settings_.unflagged_slip_fraction);
+  if (flagged) track.lock_start = t;
   return true;
+}
+
+// The channel's Gauss-Markov multipath states at t: drawn N(0, sigma) at acquisition, then
+// x <- a x + sqrt(1 - a^2) sigma w, a = exp(-dt / tau) (no draw for a zero sigma).
+void GpsReceiver::step_multipath(Track& track, core::GpsTime t) {
+  const double sc = settings_.code_multipath_m, sp = settings_.phase_multipath_m;
+  if (!(sc > 0.0 || sp > 0.0)) return;
+  if (track.acquired == t) {
+    if (sc > 0.0) track.code_multipath = rng_.normal(sc);
+    if (sp > 0.0) track.phase_multipath = rng_.normal(sp);
+  } else {
+    const double a = std::exp(-t.seconds_since(track.multipath_time) / settings_.multipath_tau_s);
+    const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
+    if (sc > 0.0) track.code_multipath = a * track.code_multipath + b * rng_.normal(sc);
+    if (sp > 0.0) track.phase_multipath = a * track.phase_multipath + b * rng_.normal(sp);
+  }
+  track.multipath_time = t;
 }
 
 // Topside Klobuchar delay I at `at` along the unit line of sight e (zero when the ionosphere is off).
@@ -274,7 +347,8 @@ double GpsReceiver::ionosphere_rate_mps(const Reception& rx, const Eigen::Vector
 void GpsReceiver::measure_channel(Track& track, const Candidate& candidate, const Reception& rx, core::GpsTime t,
                                   const GpsSatelliteTruth& satellites) {
   GpsReceiverEpoch& out = epoch_;
-  const bool slipped = lost_lock(track, t);
+  bool flagged = false;
+  const bool slipped = lost_lock(track, t, flagged);
   const SignalPath path = trace(satellites, candidate.index, rx.t_receive, rx.r_apc);
   const Eigen::Vector3d e = (path.r_satellite_m - rx.r_apc) / path.range_m;
   const double iono_m = ionosphere_m(rx.here, e, t);
@@ -295,19 +369,31 @@ void GpsReceiver::measure_channel(Track& track, const Candidate& candidate, cons
 
   gnss::GpsChannelMeasurement& m = out.measurement.channels[static_cast<std::size_t>(out.measurement.channel_count)];
   m.prn = track.prn;
-  m.pseudorange_m = geometry_m + iono_m + rng_.normal(settings_.code_sigma_m);
-  m.carrier_phase_cycles = (geometry_m - iono_m + rng_.normal(settings_.phase_sigma_m)) / gnss::kL1WavelengthM +
+  const double scale = elevation_scale(candidate.elevation);
+  const double noise_scale = settings_.elevation_dependent_noise ? scale : 1.0;
+  m.pseudorange_m = geometry_m + iono_m + rng_.normal(noise_scale * settings_.code_sigma_m);
+  m.carrier_phase_cycles = (geometry_m - iono_m + rng_.normal(noise_scale * settings_.phase_sigma_m)) / gnss::kL1WavelengthM +
                            static_cast<double>(track.ambiguity) + phase_offset;
   m.doppler_hz = -(range_rate + out.receiver_clock_rate_mps - satellite_clock_rate - iono_rate) / gnss::kL1WavelengthM +
                  rng_.normal(settings_.doppler_sigma_hz);
-  m.cn0_dbhz = 35.0 + 15.0 * std::sin(std::max(candidate.elevation, 0.0));
-  m.loss_of_lock = slipped;
+  m.cn0_dbhz = settings_.elevation_dependent_noise ? 50.0 - 20.0 * std::log10(scale)
+                                                   : 35.0 + 15.0 * std::sin(std::max(candidate.elevation, 0.0));
+  step_multipath(track, t);
+  const double code_multipath = scale * track.code_multipath;
+  const double phase_multipath = scale * track.phase_multipath;
+  if (settings_.code_multipath_m > 0.0) m.pseudorange_m += code_multipath;
+  if (settings_.phase_multipath_m > 0.0) m.carrier_phase_cycles += phase_multipath / gnss::kL1WavelengthM;
+  if (track.half_cycle) m.carrier_phase_cycles += 0.5;
+  m.loss_of_lock = (slipped && flagged) || track.pending_lli;
+  m.half_cycle_ambiguity = track.half_cycle;
+  track.pending_lli = out.recorded ? false : m.loss_of_lock;
   m.lock_time_s = t.seconds_since(track.lock_start);
 
   GpsChannelTruth& truth = out.truth[static_cast<std::size_t>(out.measurement.channel_count)];
   truth = GpsChannelTruth{track.prn, path.range_m, satellite_clock_m, iono_m, track.ambiguity,
                           satellites.phase_offset_cycles(candidate.index), candidate.elevation, e,
-                          range_rate, satellite_clock_rate, iono_rate};
+                          range_rate, satellite_clock_rate, iono_rate, track.half_cycle ? 0.5 : 0.0, slipped,
+                          code_multipath, phase_multipath};
   ++out.measurement.channel_count;
 }
 

@@ -54,8 +54,13 @@
 // height of the segment, spherical Earth of WGS-84 equatorial radius). At most `channels`
 // satellites are tracked: a tracked satellite keeps its channel while visible; free channels take
 // the highest visible ones. Lost and re-acquired means a new ambiguity and the loss-of-lock flag.
-// Not modelled: carrier phase wind-up (both spacecraft fly the same attitude profile), multipath,
-// C/N0-dependent noise (C/N0 = 35 + 15 sin(elevation above the antenna plane) dB-Hz is reported),
+// Realism options (off by default; README "visors gnss-sim"): cycle slips without the LLI flag,
+// half-cycle ambiguities (LLI bit 1) at acquisition, elevation-dependent noise (sigma / sin(el),
+// el floored at 5 deg, C/N0 = 50 + 20 log10 sin(el) then, so sigma ~ 10^(-C/N0 / 20)), first-order
+// Gauss-Markov code and phase multipath per channel (scaled by the same elevation factor, restarted
+// at each acquisition), and data gaps (records missing, tracking continues unless > 30 s).
+// Not modelled: carrier phase wind-up (both spacecraft fly the same attitude profile),
+// (options off) C/N0 = 35 + 15 sin(elevation above the antenna plane) dB-Hz is reported,
 // relativistic path delay (Shapiro, < 2 cm, common to both spacecraft).
 
 #include <array>
@@ -90,6 +95,16 @@ struct GpsReceiverSettings {
   double occultation_altitude_m = 100e3;              // rays must clear the Earth by this [m]
   double cycle_slip_probability = 0.0;                // per channel and epoch
   int max_slip_cycles = 10;                           // a slip is +/- 1..max cycles
+  // Realism options, all off by default (then the output and the random draws are unchanged):
+  double unflagged_slip_fraction = 0.0;    // fraction of cycle slips written without LLI bit 0
+  double half_cycle_slip_probability = 0.0;  // per acquisition: phase carries an extra half cycle
+  double half_cycle_resolve_s = 30.0;      // ... flagged with LLI bit 1 until resolved after this [s]
+  bool elevation_dependent_noise = false;  // code/phase sigmas x 1/sin(el), el >= 5 deg; C/N0 with it
+  double code_multipath_m = 0.0;           // Gauss-Markov multipath, steady-state sigma at zenith [m]
+  double phase_multipath_m = 0.0;          // [m]
+  double multipath_tau_s = 60.0;           // its correlation time [s]
+  double data_gap_probability = 0.0;       // per receiver and epoch: a gap in the records starts
+  double data_gap_s = 10.0;                // its length [s]; > 30 s: all channels re-acquire after it
   bool ionosphere = true;
   gnss::KlobucharCoefficients klobuchar;              // the truth ionosphere's coefficients
   gnss::TopsideIonosphere topside;
@@ -124,6 +139,10 @@ struct GpsChannelTruth {
   double range_rate_mps = 0.0;            // d rho / dt
   double satellite_clock_rate_mps = 0.0;  // d(c dt^j) / dt
   double ionosphere_rate_mps = 0.0;       // dI / dt
+  double half_cycle_cycles = 0.0;         // unresolved half cycle in the phase (0 or 0.5)
+  bool slipped = false;                   // new ambiguity at this epoch (acquisition, slip, flagged or not)
+  double code_multipath_m = 0.0;          // multipath in the pseudorange (elevation-scaled) [m]
+  double phase_multipath_m = 0.0;         // multipath in the phase range [m]
 };
 
 struct GpsReceiverEpoch {
@@ -134,6 +153,7 @@ struct GpsReceiverEpoch {
   double receiver_phase_cycles = 0.0;  // phi_r
   Eigen::Vector3d apc_itrf_m = Eigen::Vector3d::Zero();  // phase centre at the reception time [m]
   int visible = 0;                     // satellites passing the visibility test (tracked or not)
+  bool recorded = true;                // false in a data gap: no observation record is written
 };
 
 class GpsReceiver {
@@ -158,6 +178,12 @@ class GpsReceiver {
     int prn = 0;  // 0: free channel
     std::int64_t ambiguity = 0;
     core::GpsTime lock_start;
+    core::GpsTime acquired;          // acquisition time (restarts the multipath)
+    bool half_cycle = false;         // unresolved half cycle in the phase
+    bool pending_lli = false;        // a flag raised in a data gap, written at the next record
+    double code_multipath = 0.0;     // Gauss-Markov states (unscaled) [m]
+    double phase_multipath = 0.0;
+    core::GpsTime multipath_time;
   };
   struct Candidate {
     std::size_t index = 0;  // into the satellites
@@ -177,7 +203,9 @@ class GpsReceiver {
   std::size_t screen_visibility(const Reception& rx, const GpsSatelliteTruth& satellites);
   [[nodiscard]] const Candidate* candidate_of(int prn, std::size_t count, const GpsSatelliteTruth& satellites) const;
   void assign_channels(core::GpsTime t, std::size_t count, const GpsSatelliteTruth& satellites);
-  bool lost_lock(Track& track, core::GpsTime t);
+  bool lost_lock(Track& track, core::GpsTime t, bool& flagged);
+  void step_multipath(Track& track, core::GpsTime t);
+  void step_gap(core::GpsTime t);
   [[nodiscard]] double ionosphere_m(const LocalAxes& at, const Eigen::Vector3d& e, core::GpsTime t) const;
   [[nodiscard]] double ionosphere_rate_mps(const Reception& rx, const Eigen::Vector3d& r_satellite,
                                            const Eigen::Vector3d& v_satellite, core::GpsTime t) const;
@@ -191,6 +219,9 @@ class GpsReceiver {
   double clock_rate_mps_ = 0.0;  // its slope from the last epoch on (before the first: f_-1) [m/s]
   core::GpsTime last_epoch_;
   bool first_epoch_ = true;
+  bool gap_active_ = false;       // data gap (settings.data_gap_*)
+  bool reacquire_after_gap_ = false;
+  core::GpsTime gap_until_;
   std::array<Track, gnss::kMaxGpsChannels> tracks_{};
   std::array<Candidate, 64> candidates_{};
   GpsReceiverEpoch epoch_;

@@ -121,6 +121,19 @@ TEST(GnssScenario, BadValuesAreNamed) {
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "[gnss.broadcast_errors]\nalong_m = -1\n")).error().field,
             "gnss.broadcast_errors.along_m");
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "attitude = \"sideways\"\n")).error().field, "gnss.attitude");
+  // the realism options (README "visors gnss-sim")
+  for (const char* key : {"unflagged_slip_fraction", "half_cycle_slip_probability", "data_gap_probability"}) {
+    EXPECT_EQ(campaign_from_toml(scenario(10.0, std::string("[gnss.receiver]\n") + key + " = 1.5\n")).error().field,
+              std::string("gnss.receiver.") + key);
+  }
+  for (const char* key : {"half_cycle_resolve_s", "code_multipath_m", "phase_multipath_m", "data_gap_s", "multipath_tau_s"}) {
+    EXPECT_EQ(campaign_from_toml(scenario(10.0, std::string("[gnss.receiver]\n") + key + " = -1\n")).error().field,
+              std::string("gnss.receiver.") + key);
+  }
+  EXPECT_EQ(campaign_from_toml(scenario(10.0, "[gnss.receiver]\nmultipath_tau_s = 0\n")).error().field,
+            "gnss.receiver.multipath_tau_s");
+  EXPECT_EQ(campaign_from_toml(scenario(10.0, "[gnss.receiver]\nelevation_dependent_noise = 1\n")).error().field,
+            "gnss.receiver.elevation_dependent_noise");
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "source_time_gps = \"yesterday\"\n")).error().field, "gnss.source_time_gps");
 }
 
@@ -363,6 +376,54 @@ TEST_F(GnssSimulation, RinexDopplerIsThePhaseRateAndTheSumOfTheTruthRates) {
   EXPECT_NEAR(rms(from_truth), sigma_d, 4.0 * sigma_d / std::sqrt(2.0 * static_cast<double>(from_truth.size())) + 0.02 * sigma_d);
   EXPECT_EQ(outside_phase, 0u);
   EXPECT_LT(rms(from_phase), 1.1 * sigma);
+}
+
+}  // namespace
+
+namespace {
+
+// The realism options end to end (README "visors gnss-sim"): the RINEX files carry LLI bit 1
+// exactly where channels_truth.csv has a half cycle, and a receiver's file has exactly the epochs
+// its truth rows mark recorded (data gaps), the other receiver's file its own.
+TEST(GnssSimulationRealism, RinexFlagsAndGapsFollowTheTruth) {
+  if (!visors::core::files::find_data_file(kNavFile)) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH";
+  const auto dir = out_dir("realism");
+  const std::string receiver =
+      "[gnss.receiver]\nhalf_cycle_slip_probability = 0.5\nhalf_cycle_resolve_s = 20\ndata_gap_probability = 0.02\n"
+      "cycle_slip_probability = 0.01\nunflagged_slip_fraction = 0.5\n";
+  const auto result = run_gnss_simulation(campaign_from_toml(scenario(300.0, receiver)).value(), dir);
+  ASSERT_TRUE(result.ok()) << result.error().describe();
+  const Csv channels = Csv::read_file(dir / "channels_truth.csv");
+  std::map<std::string, std::map<long, std::map<int, std::pair<bool, bool>>>> truth;  // craft -> t -> PRN -> (recorded, half)
+  for (const auto& row : channels.rows) {
+    const long t = std::lround(std::stod(row[channels.column("t_s")]));
+    truth[row[channels.column("spacecraft")]][t][std::stoi(row[channels.column("prn")])] = {
+        row[channels.column("recorded")] == "1", row[channels.column("half_cycle_cycles")] == "0.5"};
+  }
+  int half_flags = 0;
+  std::size_t missing = 0;
+  for (const std::string name : {"dsc", "osc"}) {
+    const auto file = visors::gnss::files::read_rinex_observations(dir / (name + ".rnx"));
+    ASSERT_TRUE(file.ok()) << file.error().describe();
+    std::size_t recorded_epochs = 0;
+    for (const auto& [t, prns] : truth[name]) recorded_epochs += prns.begin()->second.first ? 1u : 0u;
+    EXPECT_EQ(file->epochs.size(), recorded_epochs) << name;
+    missing += 301u - file->epochs.size();
+    for (const auto& epoch : file->epochs) {
+      const long t = std::lround(epoch.t.seconds_since(file->header.first_observation));
+      ASSERT_TRUE(truth[name].count(t)) << name << " " << t;
+      for (const auto& sat : epoch.satellites) {
+        const auto& [recorded, half] = truth[name][t].at(sat.prn);
+        EXPECT_TRUE(recorded) << name << " " << t;
+        EXPECT_EQ((sat.values[1].lli & 2) != 0, half) << name << " t " << t << " G" << sat.prn;
+        half_flags += half ? 1 : 0;
+      }
+    }
+  }
+  // preconditions (the options acted); measured 303 half-cycle flags, 97 epochs missing of 602 (2026-11)
+  EXPECT_GT(half_flags, 20);
+  EXPECT_GT(missing, 0u);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -395,7 +395,7 @@ ObservationEpoch to_observation_epoch(const GpsMeasurementEpoch& epoch, std::opt
     const int ssi = std::clamp(static_cast<int>(m.cn0_dbhz / 6.0), 1, 9);
     out.satellites.push_back({m.prn,
                               {{m.pseudorange_m, 0, ssi},
-                               {m.carrier_phase_cycles, m.loss_of_lock ? 1 : 0, ssi},
+                               {m.carrier_phase_cycles, (m.loss_of_lock ? 1 : 0) | (m.half_cycle_ambiguity ? 2 : 0), ssi},
                                {m.doppler_hz, 0, ssi},
                                {m.cn0_dbhz, 0, ssi}}});
   }
