@@ -26,9 +26,10 @@ struct GpsChannelMeasurement {
   double cn0_dbhz = 0.0;              // S1C [dB-Hz]
   /// The phase may have slipped since the previous epoch (RINEX LLI bit 0): a new ambiguity.
   bool loss_of_lock = false;
-  /// Unresolved half-cycle ambiguity in the phase (RINEX LLI bit 1).
-  bool half_cycle_ambiguity = false;
   double lock_time_s = 0.0;  // continuous tracking so far [s]
+  /// Unresolved half-cycle ambiguity in the phase (RINEX LLI bit 1). Last, so the aggregate
+  /// initialisations of the fields above keep their meaning.
+  bool half_cycle_ambiguity = false;
 };
 
 struct GpsMeasurementEpoch {
