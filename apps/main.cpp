@@ -131,6 +131,8 @@ int main(int argc, char** argv) {
   nav->add_option("--duration", nav_options.duration_s, "replay only the first S seconds (0: all)")->capture_default_str();
   nav->add_option("--crosslink-drop", nav_options.crosslink_drop, "probability that the other receiver's epoch is lost")
       ->capture_default_str();
+  nav->add_flag("--elevation-weighting", nav_options.elevation_weighting,
+                "weight code and phase by the elevation above the antenna plane (1/sin)");
   std::vector<double> outage;
   nav->add_option("--outage", outage, "GPS outage of both receivers: START DURATION [s]")->expected(2);
   nav->callback([&] {

@@ -45,6 +45,7 @@ nav::AntennaGeometry antenna_for(const core::StateVector& x, core::GpsTime t, co
   a.body_to_gcrf = sim::AttitudeProfile::nominal_body_to_gcrf(x.r, x.v, sun).toRotationMatrix();
   a.arp_body_m = s.gnss.receiver.antenna_body_m - sim::GeometrySettings{}.com_nominal_body_m;
   a.pco_body_m = s.gnss.receiver.phase_center_offset_m * Eigen::Vector3d::UnitZ();
+  a.boresight_body = Eigen::Vector3d::UnitZ();  // gnss-sim's nominal boresight
   return a;
 }
 
@@ -225,12 +226,13 @@ nav::GpsReceiverEpoch reacquired(const nav::GpsReceiverEpoch& e) {
   return out;
 }
 
-Replay replay(const RunInputs& in, Craft local, double duration_s, const ReplayFaults& faults) {
+Replay replay(const RunInputs& in, Craft local, double duration_s, bool elevation_weighting, const ReplayFaults& faults) {
   Replay out;
   out.local = local;
   out.name = local == Craft::kDsc ? "dsc" : "osc";
   nav::CdgpsSettings settings;
   settings.local = local;
+  settings.elevation_weighting = elevation_weighting;
   auto created = nav::CdgpsFilter::create(settings, onboard_model(in.scenario.dsc, "dsc"), onboard_model(in.scenario.osc, "osc"));
   if (!created) throw InputError("filter settings: " + created.error().describe());
   nav::CdgpsFilter f = std::move(created).value();
@@ -431,7 +433,7 @@ int run_nav_command(const NavOptions& options) {
     fmt::print("visors nav: {} ({} epochs)\n", options.run_dir, inputs.value().dsc.size());
     std::vector<Replay> replays;
     for (Craft local : {Craft::kDsc, Craft::kOsc}) {
-      replays.push_back(replay(inputs.value(), local, options.duration_s,
+      replays.push_back(replay(inputs.value(), local, options.duration_s, options.elevation_weighting,
                                {options.crosslink_drop, options.outage_start_s, options.outage_s}));
       const Json s = summarise(replays.back());
       write_epochs(replays.back(), options.out);

@@ -15,6 +15,7 @@ struct NavOptions {
   std::string run_dir;
   std::string out = "out/nav";
   double duration_s = 0.0;  // 0: the whole run
+  bool elevation_weighting = false;  // the filter's CdgpsSettings::elevation_weighting
   // Faults injected by the replay (the run's data unchanged otherwise).
   double crosslink_drop = 0.0;   // probability that the other receiver's epoch is lost
   double outage_start_s = -1.0;  // GPS outage of both receivers from this time [s]; < 0: none

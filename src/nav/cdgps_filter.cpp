@@ -30,6 +30,7 @@ struct Scalar {
   double z = 0.0;          // measured [m]
   double coefficient = 1;  // d value / d ambiguity (1 for B [m], lambda for N [cycles])
   bool reinitialise = false;
+  double variance_scale = 1.0;  // elevation weighting (settings)
   MeasurementPrediction p;
 };
 
@@ -71,13 +72,18 @@ struct CdgpsFilter::Impl {
   std::array<Eigen::Index, kGpsSlots> dd_others{};
   std::array<RangePrediction, 2 * 33> ranges{};  // per craft and PRN, this epoch
   std::array<bool, 2 * 33> ranged{};
+  std::array<double, 2 * 33> weight_scale{};  // 1 / sin^2(elevation above the antenna plane), floored
 
+  double scale(Craft c, int prn) const {
+    return weighting ? weight_scale[static_cast<std::size_t>(33 * static_cast<int>(c) + prn)] : 1.0;
+  }
+  bool weighting = false;
   const RangePrediction* range(Craft c, int prn) const {
     const auto i = static_cast<std::size_t>(33 * static_cast<int>(c) + prn);
     return ranged[i] ? &ranges[i] : nullptr;
   }
   void compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph, core::OnboardEarthFrame& frame,
-                      CdgpsEpochReport& report);
+                      double sin_floor, CdgpsEpochReport& report);
   void select(const CdgpsEpochInput& in, Craft local, CdgpsEpochReport& report);
   void assign_slots(AmbiguitySlotBank& bank, std::array<core::GpsTime, kGpsSlots>& last_measured,
                     std::array<Scalar, kGpsSlots>& scalars, int& count, double variance, double timeout_s,
@@ -231,7 +237,7 @@ void CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps,
 
 // Ranges of every satellite each receiver observed and whose ephemeris is usable, at the prior.
 void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph,
-                                       core::OnboardEarthFrame& frame, CdgpsEpochReport& report) {
+                                       core::OnboardEarthFrame& frame, double sin_floor, CdgpsEpochReport& report) {
   ranged.fill(false);
   const GpsReceiverEpoch* epochs[2] = {in.dsc, in.osc};
   const AntennaGeometry* antennas[2] = {&in.dsc_antenna, &in.osc_antenna};
@@ -253,6 +259,8 @@ void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::Ep
       const auto index = static_cast<std::size_t>(33 * k + prn);
       ranges[index] = predict_range(t, receiver, *antennas[k], *e, frame);
       ranged[index] = true;
+      const double sine = (antennas[k]->body_to_gcrf * antennas[k]->boresight_body).dot(ranges[index].line_of_sight_gcrf);
+      weight_scale[index] = 1.0 / std::pow(std::max(sine, sin_floor), 2);
     }
   }
 }
@@ -328,10 +336,12 @@ void CdgpsFilter::Impl::predict_scalars(Craft local) {
   for (int i = 0; i < graphic_count; ++i) {
     Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
     m.p = predict_graphic(x, local, *range(local, m.prn), m.state);
+    m.variance_scale = scale(local, m.prn);
   }
   for (int i = 0; i < sdcp_count; ++i) {
     Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
     m.p = predict_sdcp(x, *range(Craft::kOsc, m.prn), *range(Craft::kDsc, m.prn), m.state, kLambda);
+    m.variance_scale = 0.5 * (scale(Craft::kOsc, m.prn) + scale(Craft::kDsc, m.prn));  // two phases
   }
 }
 
@@ -377,7 +387,8 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
   };
   for (int i = 0; i < graphic_count; ++i) {
     const Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
-    const auto r = scalar_update(x, P, m.p.h, innovation(m), s.graphic_sigma_m * s.graphic_sigma_m, s.gate_sigmas, workspace);
+    const auto r = scalar_update(x, P, m.p.h, innovation(m), m.variance_scale * s.graphic_sigma_m * s.graphic_sigma_m,
+                                 s.gate_sigmas, workspace);
     if (r.status == ScalarUpdateStatus::kAccepted) {
       ++report.graphic_used;
       account(r);
@@ -385,9 +396,9 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
       ++report.graphic_rejected;
     }
   }
-  const double variance = s.sdcp_sigma_m * s.sdcp_sigma_m;
   for (int i = 0; i < sdcp_count; ++i) {
     Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
+    const double variance = m.variance_scale * s.sdcp_sigma_m * s.sdcp_sigma_m;
     if (m.reinitialise) lock[static_cast<std::size_t>(m.slot)] = 0;
     auto r = scalar_update(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
     if (r.status == ScalarUpdateStatus::kRejected) {  // a slip the indicator missed
@@ -442,7 +453,7 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
   for (int i = 0; i < sdcp_count; ++i) {
     const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
     const double residual = m.z - (m.p.value_m + m.p.h.dot(x_fixed - x_prior));
-    if (m.slot >= 0 && std::abs(residual) > s.gate_sigmas * s.sdcp_sigma_m) {
+    if (m.slot >= 0 && std::abs(residual) > s.gate_sigmas * s.sdcp_sigma_m * std::sqrt(m.variance_scale)) {
       report.wrong_fix_refused = true;
       return;
     }
@@ -470,7 +481,9 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   CdgpsEpochInput in = input;
   if (other != nullptr && other->t != m.t) (settings_.local == Craft::kDsc ? in.osc : in.dsc) = nullptr;  // not this epoch's
   report.accepted = true;
-  m.compute_ranges(in, ephemerides, frame, report);
+  m.weighting = settings_.elevation_weighting;
+  const double sin_floor = std::sin(settings_.min_weighting_elevation_deg * M_PI / 180.0);
+  m.compute_ranges(in, ephemerides, frame, sin_floor, report);
   m.select(in, settings_.local, report);
   m.assign_slots(m.graphic, m.graphic_last, m.graphic_scalars, m.graphic_count,
                  std::pow(settings_.graphic_ambiguity_sigma_m, 2), settings_.slot_timeout_s, report);

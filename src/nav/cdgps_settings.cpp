@@ -33,6 +33,9 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   for (const auto& [field, value] : sigmas) {
     if (!positive(value)) return core::Error{field, "must be a finite number > 0"};
   }
+  if (!(s.min_weighting_elevation_deg > 0.0 && s.min_weighting_elevation_deg <= 90.0)) {
+    return core::Error{"min_weighting_elevation_deg", "must be in (0, 90] deg"};
+  }
   if (auto a = validate(s.acceptance); !a) return core::Error{"acceptance." + a.error().field, a.error().message};
   return std::nullopt;
 }

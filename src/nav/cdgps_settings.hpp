@@ -39,6 +39,12 @@ struct CdgpsSettings {
   double graphic_sigma_m = 0.3;
   double sdcp_sigma_m = 0.00283;           // sqrt(2) x 2 mm
   double gate_sigmas = 5.0;                // scalar innovation gate [innovation sigmas]
+  // Elevation weighting: each receiver's code and phase sigma divided by the sine of the
+  // satellite's elevation above the antenna plane, floored at min_weighting_elevation_deg (a
+  // receiver whose noise grows at low elevation; gnss-sim's elevation_dependent_noise). Off by
+  // default: gnss-sim's default noise does not depend on the elevation.
+  bool elevation_weighting = false;
+  double min_weighting_elevation_deg = 5.0;
 
   // Integer ambiguity resolution (digest 6.4-6.5).
   AcceptanceSettings acceptance{};

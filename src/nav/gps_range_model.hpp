@@ -47,6 +47,7 @@ struct AntennaGeometry {
   Eigen::Matrix3d body_to_gcrf = Eigen::Matrix3d::Identity();  // attitude C_body->gcrf
   Eigen::Vector3d arp_body_m = Eigen::Vector3d::Zero();        // antenna reference point from the CoM [m]
   Eigen::Vector3d pco_body_m = Eigen::Vector3d::Zero();        // nominal phase-centre offset from the ARP [m]
+  Eigen::Vector3d boresight_body = Eigen::Vector3d::UnitZ();   // antenna boresight (unit), for the elevation
 };
 
 struct RangePrediction {

@@ -270,6 +270,12 @@ TEST(CdgpsSettings, NameTheFieldOfABadValue) {
   EXPECT_EQ(check(s)->field, "sdcp_sigma_m");
 }
 
+TEST(CdgpsSettings, NameTheWeightingFloor) {
+  CdgpsSettings s;
+  s.min_weighting_elevation_deg = 0.0;
+  EXPECT_EQ(check(s)->field, "min_weighting_elevation_deg");
+}
+
 TEST(CdgpsSettings, NameTheAcceptanceField) {
   CdgpsSettings s;
   s.acceptance.min_ratio = 0.5;
