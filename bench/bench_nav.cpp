@@ -47,8 +47,8 @@ struct Data {
     core::StateVector a = x_dsc, b = x_osc;
     for (int n = 0; n < 700; ++n) {
       const core::GpsTime t = t0 + static_cast<double>(n);
-      dsc.push_back(test::synthetic_observations(t, {a.r, a.v, 10.0, {}}, records, frame, integers, 0.1, 0.2, 0.002, rng));
-      osc.push_back(test::synthetic_observations(t, {b.r, b.v, -5.0, {}}, records, frame, integers, 0.3, 0.2, 0.002, rng));
+      dsc.push_back(test::synthetic_observations(t, {a.r, a.v, 10.0, Eigen::Vector3d::Zero()}, records, frame, integers, 0.1, 0.2, 0.002, rng));
+      osc.push_back(test::synthetic_observations(t, {b.r, b.v, -5.0, Eigen::Vector3d::Zero()}, records, frame, integers, 0.3, 0.2, 0.002, rng));
       a = nav::propagate_mean(truth, t, a, Eigen::Vector3d::Zero(), 600.0, 1.0, 1.0).x_gcrf;
       b = nav::propagate_mean(truth, t, b, Eigen::Vector3d::Zero(), 600.0, 1.0, 1.0).x_gcrf;
     }

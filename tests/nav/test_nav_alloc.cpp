@@ -263,10 +263,12 @@ TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) {
   std::vector<double> integers(33, 1000.0);
   std::mt19937_64 rng(5);
   std::vector<GpsReceiverEpoch> dsc_epochs, osc_epochs;
+  // Zero() spelled out: an Eigen vector initialised from {} is left uninitialised (the phase-centre
+  // error of these truths was garbage, and the observations with it, in one build of two).
   for (int n = 0; n < 40; ++n) {  // static truth states: enough for the algebra, not for dynamics
     const core::GpsTime t = t0 + static_cast<double>(n);
-    dsc_epochs.push_back(test::synthetic_observations(t, {dsc.r, dsc.v, 10.0, {}}, records, frame, integers, 0.1, 0.2, 0.002, rng));
-    osc_epochs.push_back(test::synthetic_observations(t, {osc.r, osc.v, -5.0, {}}, records, frame, integers, 0.3, 0.2, 0.002, rng));
+    dsc_epochs.push_back(test::synthetic_observations(t, {dsc.r, dsc.v, 10.0, Eigen::Vector3d::Zero()}, records, frame, integers, 0.1, 0.2, 0.002, rng));
+    osc_epochs.push_back(test::synthetic_observations(t, {osc.r, osc.v, -5.0, Eigen::Vector3d::Zero()}, records, frame, integers, 0.3, 0.2, 0.002, rng));
   }
   filter.initialise(t0, dsc, osc, 10.0, -5.0);
   const auto epoch = [&](int n) {
