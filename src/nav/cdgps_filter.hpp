@@ -16,7 +16,9 @@
 //    unresolved half cycle is not used (the receiver flags the loss of lock when it resolves it).
 // 2. Sequential scalar updates (nav/scalar_update.hpp, Joseph form): GRAPHIC first, then SDCP,
 //    each predicted once per epoch at the prior state and linearised there (the innovation of a
-//    later scalar is corrected by h (x - x_prior)). A rejected SDCP is a cycle slip the indicator
+//    later scalar is corrected by h (x - x_prior)), in consensus order: the scalar whose
+//    innovation is the epoch's median first, so that a slipped or blundered one cannot capture
+//    the nearly free receiver clock (optionally weighted by the elevation, CdgpsSettings). A rejected SDCP is a cycle slip the indicator
 //    missed: its slot is reinitialised and the measurement processed again (it then only sets the
 //    new ambiguity); a rejected GRAPHIC is a code outlier and is dropped.
 // 3. Integer ambiguity resolution: the SDCP slots updated this epoch form double differences
