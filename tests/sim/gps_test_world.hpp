@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "core/constants.hpp"
 #include "core/files/data_path.hpp"
@@ -18,6 +19,7 @@
 #include "gnss/gps_constants.hpp"
 #include "sim/gps_receiver.hpp"
 #include "sim/gps_satellite_truth.hpp"
+#include "sim/random_stream.hpp"
 
 namespace visors::test {
 
@@ -96,5 +98,35 @@ inline sim::ReceiverPose pose(const CircularOrbit& orbit, double t_s, double til
 inline gnss::KlobucharCoefficients nya_klobuchar() {
   return {{2.5146e-08, 1.4901e-08, -1.1921e-07, -5.9605e-08}, {1.2902e+05, 8.1920e+04, -2.6214e+05, 1.9661e+05}};
 }
+
+
+/// The fixture of the receiver tests: the mission constellation and the satellites' truth, made
+/// once per suite (skipped without the shared navigation file), and a receiver factory.
+class GpsReceiverWorld : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!have_mission_nav()) return;
+    constellation_ = std::make_unique<gnss::GpsConstellation>(mission_constellation());
+    truth_ = std::make_unique<sim::GpsSatelliteTruth>(
+        sim::GpsSatelliteTruth::create(*constellation_, {}, sim::RandomStream(7, "gps.satellites")).value());
+  }
+  static void TearDownTestSuite() {
+    truth_.reset();
+    constellation_.reset();
+  }
+  void SetUp() override {
+    if (!have_mission_nav()) GTEST_SKIP() << kMissionNavFile << " not found: set VISORS_DATA_PATH";
+  }
+  static sim::GpsReceiverSettings settings() {
+    sim::GpsReceiverSettings s;
+    s.klobuchar = nya_klobuchar();
+    return s;
+  }
+  static sim::GpsReceiver receiver(const sim::GpsReceiverSettings& s, const char* name) {
+    return sim::GpsReceiver::create(s, sim::RandomStream(11, name)).value();
+  }
+  static inline std::unique_ptr<gnss::GpsConstellation> constellation_;
+  static inline std::unique_ptr<sim::GpsSatelliteTruth> truth_;
+};
 
 }  // namespace visors::test

@@ -16,32 +16,7 @@ namespace {
 using test::CircularOrbit;
 using test::pose;
 
-class GpsReceiverRealism : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    if (!test::have_mission_nav()) return;
-    constellation_ = std::make_unique<gnss::GpsConstellation>(test::mission_constellation());
-    truth_ = std::make_unique<GpsSatelliteTruth>(
-        GpsSatelliteTruth::create(*constellation_, {}, RandomStream(7, "gps.satellites")).value());
-  }
-  static void TearDownTestSuite() {
-    truth_.reset();
-    constellation_.reset();
-  }
-  void SetUp() override {
-    if (!test::have_mission_nav()) GTEST_SKIP() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
-  }
-  static GpsReceiverSettings settings() {
-    GpsReceiverSettings s;
-    s.klobuchar = test::nya_klobuchar();
-    return s;
-  }
-  static GpsReceiver receiver(const GpsReceiverSettings& s, const char* name) {
-    return GpsReceiver::create(s, RandomStream(11, name)).value();
-  }
-  static inline std::unique_ptr<gnss::GpsConstellation> constellation_;
-  static inline std::unique_ptr<GpsSatelliteTruth> truth_;
-};
+class GpsReceiverRealism : public test::GpsReceiverWorld {};
 
 // The noise-free code (C1C model without e_P) and phase range (lambda L1C model without e_Phi and
 // without the half cycle and multipath) of channel k.
