@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 
+#include "core/constants.hpp"
 #include "core/rtn_frame.hpp"
 #include "gnss/gps_constants.hpp"
 #include "nav/ambiguity_slots.hpp"
@@ -94,6 +95,7 @@ struct CdgpsFilter::Impl {
   void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
   void process(const CdgpsSettings& s, CdgpsEpochReport& report);
   void resolve(const CdgpsSettings& s, CdgpsEpochReport& report);
+  Eigen::Index rows_to_hold(Eigen::Index k, double hold_variance);
 };
 
 core::Result<CdgpsFilter> CdgpsFilter::create(const CdgpsSettings& settings, dynamics::ForceModel dsc_model,
@@ -226,12 +228,20 @@ ScalarUpdateStatus CdgpsFilter::update_laser_range(double z_m, double sigma_m, c
   return status;
 }
 
-void CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps, double sigma_mps) {
+bool CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps) {
   Impl& m = *impl_;
-  if (!dv_gcrf_mps.allFinite() || !std::isfinite(sigma_mps)) return;
+  if (!m.initialised || !dv_gcrf_mps.allFinite()) return false;
   const int v = state::velocity(craft);
+  const double magnitude = dv_gcrf_mps.norm();
   m.x.segment<3>(v) += dv_gcrf_mps / state::kVelocityUnit;
-  for (int i = 0; i < 3; ++i) m.P(v + i, v + i) += std::pow(sigma_mps / state::kVelocityUnit, 2);
+  if (magnitude == 0.0) return true;
+  const Eigen::Vector3d u = dv_gcrf_mps / magnitude;
+  const double along = settings_.impulse_magnitude_sigma * magnitude;
+  const double across = settings_.impulse_direction_sigma_deg * core::kDegToRad * magnitude;
+  const Eigen::Matrix3d covariance =
+      along * along * u * u.transpose() + across * across * (Eigen::Matrix3d::Identity() - u * u.transpose());
+  m.P.block<3, 3>(v, v) += covariance / (state::kVelocityUnit * state::kVelocityUnit);
+  return true;
 }
 
 
@@ -460,8 +470,31 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
   }
   report.fix_applied = true;
   if (s.hold && report.fix.outcome == FixOutcome::kFixed) {
-    report.held = fixer.apply(x, P, C.topRows(k), z_fixed.head(k), s.hold_variance_cycles2) == FixedSolutionUpdate::Status::kOk;
+    const Eigen::Index held = rows_to_hold(k, s.hold_variance_cycles2);
+    report.held = held > 0 && fixer.apply(x, P, C.topRows(held), z_fixed.head(held), s.hold_variance_cycles2) ==
+                                  FixedSolutionUpdate::Status::kOk;
   }
+}
+
+// The fixed combinations the hold still has to constrain, moved to the top k' rows of C and z:
+// those whose float variance c P c' exceeds the hold variance. Holding a combination again at
+// every epoch would add the same information each time, its variance falling as 1/epochs: P
+// over-confident after hours (the 24 h NEES grew past 15 with it). C has entries only in the
+// SDCP ambiguity columns.
+Eigen::Index CdgpsFilter::Impl::rows_to_hold(Eigen::Index k, double hold_variance) {
+  constexpr int a = state::kSdcpAmbiguities;
+  Eigen::Index kept = 0;
+  for (Eigen::Index i = 0; i < k; ++i) {
+    const auto c = C.row(i).segment<kGpsSlots>(a);
+    const double variance = c * P.block<kGpsSlots, kGpsSlots>(a, a) * c.transpose();
+    if (!(variance > hold_variance)) continue;
+    if (kept != i) {
+      C.row(kept) = C.row(i);
+      z_fixed(kept) = z_fixed(i);
+    }
+    ++kept;
+  }
+  return kept;
 }
 
 CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
@@ -495,7 +528,7 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.order_by_consensus(m.graphic_scalars, m.graphic_count);
   m.order_by_consensus(m.sdcp_scalars, m.sdcp_count);
   m.process(settings_, report);
-  m.resolve(settings_, report);
+  if (settings_.ambiguity_resolution) m.resolve(settings_, report);
   m.fixed_valid = report.fix_applied;
   return report;
 }

@@ -27,8 +27,10 @@
 //    the fixed solution is the float state conditioned on the fixed integers
 //    (nav/fixed_solution.hpp), refused when an SDCP residual then fails the gate (wrong fix,
 //    digest 6.6). With hold, an accepted full fix is also fed back into the float filter as a
-//    pseudo-measurement; an SDCP of a held satellite that later fails its gate reinitialises that
-//    slot, which releases the held integer (the wrong-fix recovery).
+//    pseudo-measurement, each fixed combination while its float variance exceeds the hold
+//    variance (once, in effect: re-holding it every epoch would make P over-confident); an SDCP
+//    of a held satellite that later fails its gate reinitialises that slot, which releases the
+//    held integer (the wrong-fix recovery).
 //
 // Time update: the mean of each spacecraft by RK4 under its on-board force model plus the
 // empirical acceleration (nav/orbit_time_update.hpp); the covariance with the short-step
@@ -100,8 +102,11 @@ class CdgpsFilter {
 
   /// Time update to t >= epoch() (nothing when equal).
   void predict(core::GpsTime t);
-  /// An impulse dv (GCRF) [m/s] of `craft` at the current epoch, executed with sigma [m/s] per axis.
-  void apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps, double sigma_mps);
+  /// A commanded impulse dv (GCRF) [m/s] of `craft`, executed at the current epoch: added to the
+  /// velocity, and its execution covariance (settings' impulse_*_sigma) to P:
+  ///   sigma_m^2 dv dv' + (sigma_d |dv|)^2 (I - u u'),  u = dv / |dv|.
+  /// False (nothing changed) for a non-finite dv or before initialise().
+  bool apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps);
   /// Measurement update at the current epoch (the observations' time tag).
   CdgpsEpochReport update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
                           core::OnboardEarthFrame& frame);

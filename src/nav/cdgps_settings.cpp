@@ -29,7 +29,9 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
                 {"graphic_sigma_m", s.graphic_sigma_m},
                 {"sdcp_sigma_m", s.sdcp_sigma_m},
                 {"gate_sigmas", s.gate_sigmas},
-                {"hold_variance_cycles2", s.hold_variance_cycles2}};
+                {"hold_variance_cycles2", s.hold_variance_cycles2},
+                {"impulse_magnitude_sigma", s.impulse_magnitude_sigma},
+                {"impulse_direction_sigma_deg", s.impulse_direction_sigma_deg}};
   for (const auto& [field, value] : sigmas) {
     if (!positive(value)) return core::Error{field, "must be a finite number > 0"};
   }

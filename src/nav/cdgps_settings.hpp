@@ -19,6 +19,13 @@ struct CdgpsSettings {
   double empirical_tau_s = 600.0;          // Gauss-Markov correlation time [s]
   double empirical_sigma_mps2 = 5e-8;      // its steady-state sigma, each RTN axis [m/s^2]
   double clock_random_walk_m = 10.0;       // receiver clock random walk, per sqrt(s) [m/sqrt(s)]
+  // Execution errors of a commanded impulse (apply_impulse), 1-sigma: along the command, as a
+  // fraction of |dv| (the propulsion's 5 %: mission paper, propulsion table), and the direction
+  // error across it. The direction default is the mission's worst case (0.05 .. 10 deg range,
+  // sim/propulsion.hpp) bounded at 1 deg: over-bounding costs a few seconds of SDCP updates,
+  // under-bounding turns a maneuver into false cycle slips.
+  double impulse_magnitude_sigma = 0.05;   // [-]
+  double impulse_direction_sigma_deg = 1.0;  // [deg]
 
   // Priors at initialise() and for new ambiguities (digest 5.4: large variance, then the update).
   double position_sigma_m = 10.0;
@@ -46,7 +53,8 @@ struct CdgpsSettings {
   bool elevation_weighting = false;
   double min_weighting_elevation_deg = 5.0;
 
-  // Integer ambiguity resolution (digest 6.4-6.5).
+  // Integer ambiguity resolution (digest 6.4-6.5); off: the float filter alone.
+  bool ambiguity_resolution = true;
   AcceptanceSettings acceptance{};
   bool hold = true;                        // feed accepted full fixes back (fix-and-hold)
   double hold_variance_cycles2 = 0.001;    // variance of the hold pseudo-measurement [cycles^2]
