@@ -1,5 +1,7 @@
 #include "sim/gnss_settings.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
@@ -97,6 +99,64 @@ core::Result<bool> read_errors(const toml::table& table, BroadcastErrorSettings&
   return true;
 }
 
+// Limits of the new tables: a day's worth of bursts per orbit and pieces per burst is far beyond
+// any use (a burst of 100 pieces spans 77 min at 46.5 s), and keeps every count an int.
+constexpr std::int64_t kMaxBurstsPerOrbit = 100;
+constexpr std::int64_t kMaxPiecesPerBurst = 100;
+
+core::Result<bool> read_observations(const toml::table& table, GnssObservationSettings& o) {
+  const std::string sec = "gnss.observations";
+  if (auto e = check_keys(table, sec, {"first_start_s", "period_s", "duration_s", "slew_lead_s"})) return *e;
+  VISORS_TRY(first, number_at(table, sec, "first_start_s", o.first_start_s));
+  VISORS_TRY(period, number_at(table, sec, "period_s", o.period_s));
+  VISORS_TRY(duration, number_at(table, sec, "duration_s", o.duration_s));
+  VISORS_TRY(lead, number_at(table, sec, "slew_lead_s", o.slew_lead_s));
+  if (!(first >= 0.0)) return Error{sec + ".first_start_s", "must be >= 0 s"};
+  if (!(period >= 0.0)) return Error{sec + ".period_s", "must be > 0 s (or 0: the chief's Keplerian period)"};
+  if (!(duration > 0.0)) return Error{sec + ".duration_s", "must be > 0 s"};
+  if (!(lead >= 0.0)) return Error{sec + ".slew_lead_s", "must be > 0 s (or 0: a 180 deg slew plus settling)"};
+  if (period > 0.0 && period <= duration + lead) {
+    return Error{sec + ".period_s", "must exceed duration_s + slew_lead_s (windows must not overlap)"};
+  }
+  o = GnssObservationSettings{first, period, duration, lead};
+  return true;
+}
+
+core::Result<bool> read_maneuvers(const toml::table& table, GnssManeuverSettings& m) {
+  const std::string sec = "gnss.maneuvers";
+  if (auto e = check_keys(table, sec, {"spacecraft", "bursts_per_orbit", "pieces_per_burst", "dv_mps", "first_burst_s"})) {
+    return *e;
+  }
+  VISORS_TRY(spacecraft, string_at(table, sec, "spacecraft", m.spacecraft));
+  VISORS_TRY(bursts, integer_at(table, sec, "bursts_per_orbit", m.bursts_per_orbit));
+  VISORS_TRY(pieces, integer_at(table, sec, "pieces_per_burst", m.pieces_per_burst));
+  VISORS_TRY(dv, number_at(table, sec, "dv_mps", m.dv_mps));
+  VISORS_TRY(first, number_at(table, sec, "first_burst_s", m.first_burst_s));
+  if (spacecraft != "none" && spacecraft != "osc" && spacecraft != "dsc" && spacecraft != "both") {
+    return Error{sec + ".spacecraft", "must be \"none\", \"osc\", \"dsc\" or \"both\", got \"" + spacecraft + "\""};
+  }
+  if (bursts < 1 || bursts > kMaxBurstsPerOrbit) return Error{sec + ".bursts_per_orbit", "must be in 1..100"};
+  if (pieces < 1 || pieces > kMaxPiecesPerBurst) return Error{sec + ".pieces_per_burst", "must be in 1..100"};
+  if (!(dv > 0.0 && dv <= 1.0)) return Error{sec + ".dv_mps", "must be in (0, 1] m/s"};
+  if (!(first >= 0.0)) return Error{sec + ".first_burst_s", "must be >= 0 s"};
+  m = GnssManeuverSettings{spacecraft, static_cast<int>(bursts), static_cast<int>(pieces), dv, first};
+  return true;
+}
+
+core::Result<bool> read_lrf(const toml::table& table, GnssLrfSettings& l) {
+  const std::string sec = "gnss.lrf";
+  if (auto e = check_keys(table, sec, {"enabled", "interval_s", "sigma_m", "bias_m"})) return *e;
+  VISORS_TRY(enabled, bool_at(table, sec, "enabled", l.enabled));
+  VISORS_TRY(interval, number_at(table, sec, "interval_s", l.interval_s));
+  VISORS_TRY(sigma, number_at(table, sec, "sigma_m", l.sigma_m));
+  VISORS_TRY(bias, number_at(table, sec, "bias_m", l.bias_m));
+  if (!(interval > 0.0)) return Error{sec + ".interval_s", "must be > 0 s"};
+  if (!(sigma >= 0.0)) return Error{sec + ".sigma_m", "must be >= 0 m"};
+  if (!(std::abs(bias) <= 1.0)) return Error{sec + ".bias_m", "must be in [-1, 1] m"};
+  l = GnssLrfSettings{enabled, interval, sigma, bias};
+  return true;
+}
+
 }  // namespace
 
 core::Result<bool> read_gnss_settings(const toml::table& root, GnssSettings& s) {
@@ -104,7 +164,7 @@ core::Result<bool> read_gnss_settings(const toml::table& root, GnssSettings& s) 
   if (g == nullptr) return true;
   const std::string sec = "gnss";
   if (auto e = check_keys(*g, sec, {"nav_file", "source_time_gps", "duration_s", "rinex", "attitude", "receiver",
-                                    "broadcast_errors"})) {
+                                    "broadcast_errors", "observations", "maneuvers", "lrf"})) {
     return *e;
   }
   VISORS_TRY(nav, string_at(*g, sec, "nav_file", s.nav_file));
@@ -117,8 +177,8 @@ core::Result<bool> read_gnss_settings(const toml::table& root, GnssSettings& s) 
     return Error{"gnss.source_time_gps", t.error().describe()};
   }
   if (!(duration >= 0.0 && duration <= 30.0 * 86400.0)) return Error{"gnss.duration_s", "must be in [0, 2592000] s"};
-  if (attitude != "nominal" && attitude != "observation") {
-    return Error{"gnss.attitude", "must be \"nominal\" or \"observation\", got \"" + attitude + "\""};
+  if (attitude != "nominal" && attitude != "observation" && attitude != "campaign") {
+    return Error{"gnss.attitude", "must be \"nominal\", \"observation\" or \"campaign\", got \"" + attitude + "\""};
   }
   GnssSettings out = s;
   out.nav_file = nav;
@@ -131,6 +191,18 @@ core::Result<bool> read_gnss_settings(const toml::table& root, GnssSettings& s) 
   }
   if (const toml::table* b = g->get_as<toml::table>("broadcast_errors")) {
     if (auto ok = read_errors(*b, out.broadcast_errors); !ok) return ok.error();
+  }
+  if (const toml::table* o = g->get_as<toml::table>("observations")) {
+    if (auto ok = read_observations(*o, out.observations); !ok) return ok.error();
+  }
+  if (const toml::table* m = g->get_as<toml::table>("maneuvers")) {
+    if (auto ok = read_maneuvers(*m, out.maneuvers); !ok) return ok.error();
+  }
+  if (const toml::table* l = g->get_as<toml::table>("lrf")) {
+    if (auto ok = read_lrf(*l, out.lrf); !ok) return ok.error();
+  }
+  if (out.lrf.enabled && out.attitude != "campaign") {
+    return Error{"gnss.lrf.enabled", "needs gnss.attitude = \"campaign\" (measurements only during observations)"};
   }
   s = out;
   return true;
@@ -159,6 +231,17 @@ std::string gnss_settings_to_toml(const GnssSettings& s) {
       r.code_multipath_m, r.phase_multipath_m, r.multipath_tau_s, r.data_gap_probability, r.data_gap_s);
   out += fmt::format("[gnss.broadcast_errors]\nradial_m = {:.17g}\nalong_m = {:.17g}\ncross_m = {:.17g}\nclock_m = {:.17g}\nclock_drift_sps = {:.17g}\n\n",
                      b.radial_m, b.along_m, b.cross_m, b.clock_m, b.clock_drift_sps);
+  const auto& o = s.observations;
+  out += fmt::format("[gnss.observations]\nfirst_start_s = {:.17g}\nperiod_s = {:.17g}\nduration_s = {:.17g}\nslew_lead_s = {:.17g}\n\n",
+                     o.first_start_s, o.period_s, o.duration_s, o.slew_lead_s);
+  const auto& m = s.maneuvers;
+  out += fmt::format(
+      "[gnss.maneuvers]\nspacecraft = \"{}\"\nbursts_per_orbit = {}\npieces_per_burst = {}\ndv_mps = {:.17g}\n"
+      "first_burst_s = {:.17g}\n\n",
+      m.spacecraft, m.bursts_per_orbit, m.pieces_per_burst, m.dv_mps, m.first_burst_s);
+  const auto& l = s.lrf;
+  out += fmt::format("[gnss.lrf]\nenabled = {}\ninterval_s = {:.17g}\nsigma_m = {:.17g}\nbias_m = {:.17g}\n\n", l.enabled,
+                     l.interval_s, l.sigma_m, l.bias_m);
   return out;
 }
 

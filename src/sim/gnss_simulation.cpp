@@ -23,9 +23,12 @@
 #include "gnss/gps_constants.hpp"
 #include "sim/attitude_profile.hpp"
 #include "sim/drag_area.hpp"
+#include "core/rtn_frame.hpp"
 #include "sim/formation_initial_state.hpp"
+#include "sim/gnss_operations.hpp"
 #include "sim/gps_receiver.hpp"
 #include "sim/gps_satellite_truth.hpp"
+#include "sim/propulsion.hpp"
 #include "sim/spacecraft_geometry.hpp"
 #include "sim/truth_dynamics.hpp"
 
@@ -48,8 +51,10 @@ struct Craft {
   std::optional<SpacecraftGeometry> geometry;
   std::optional<GpsReceiver> receiver;
   std::optional<gnss::files::Rinex3ObservationWriter> rinex;
+  std::optional<Propulsion> propulsion;  // only when the craft maneuvers ([gnss.maneuvers])
   double visible_sum = 0.0, tracked_sum = 0.0;
   std::int64_t acquisitions = 0;
+  std::int64_t maneuvers = 0;  // executed pieces
 };
 
 struct World {
@@ -100,6 +105,20 @@ core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftS
   auto receiver = GpsReceiver::create(settings, RandomStream(s.seed, c.name + ".gps"));
   if (!receiver.ok()) return core::Error{"gnss.receiver." + receiver.error().field, receiver.error().message};
   c.receiver.emplace(std::move(receiver).value());
+  const std::string& flown = s.gnss.maneuvers.spacecraft;
+  if (flown == "both" || flown == c.name) {  // the same model and stream as `visors run`
+    auto propulsion = Propulsion::create(s.propulsion, sc.mass_kg, sc.propellant_kg, RandomStream(s.seed, c.name + ".propulsion"));
+    if (!propulsion.ok()) return core::Error{c.name + "." + propulsion.error().field, propulsion.error().message};
+    // Checked here rather than at the first piece (the propulsion would refuse every piece).
+    const double impulse_ns = sc.mass_kg * s.gnss.maneuvers.dv_mps;
+    if (impulse_ns > s.propulsion.max_impulse_ns || impulse_ns < s.propulsion.min_impulse_ns) {
+      return core::Error{"gnss.maneuvers.dv_mps", c.name + ": the impulse mass_kg x dv_mps = " + std::to_string(impulse_ns) +
+                                                      " N s is outside the propulsion's range [" +
+                                                      std::to_string(s.propulsion.min_impulse_ns) + ", " +
+                                                      std::to_string(s.propulsion.max_impulse_ns) + "] N s"};
+    }
+    c.propulsion.emplace(std::move(propulsion).value());
+  }
   return true;
 }
 
@@ -170,6 +189,8 @@ core::Result<bool> open_rinex_observations(Craft& c, const CampaignScenario& s, 
 struct TruthFiles {
   core::files::OutputFile truth;
   core::files::OutputFile channels;
+  core::files::OutputFile maneuvers;
+  core::files::OutputFile lrf;
 };
 
 core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) {
@@ -185,7 +206,16 @@ core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) 
                "t_s,spacecraft,prn,range_m,satellite_clock_m,ionosphere_m,ambiguity_cycles,satellite_phase_cycles,"
                "receiver_phase_cycles,elevation_antenna_deg,range_rate_mps,satellite_clock_rate_mps,ionosphere_rate_mps,"
                "half_cycle_cycles,new_ambiguity,code_multipath_m,phase_multipath_m,recorded\n");
-  return TruthFiles{std::move(truth_csv).value(), std::move(channels_csv).value()};
+  auto maneuvers_csv = open_output(out_dir / "maneuvers.csv");
+  if (!maneuvers_csv.ok()) return maneuvers_csv.error();
+  auto lrf_csv = open_output(out_dir / "lrf.csv");
+  if (!lrf_csv.ok()) return lrf_csv.error();
+  std::fprintf(maneuvers_csv->get(),
+               "t_s,spacecraft,dv_cmd_x_gcrf_mps,dv_cmd_y_gcrf_mps,dv_cmd_z_gcrf_mps,dv_x_gcrf_mps,dv_y_gcrf_mps,"
+               "dv_z_gcrf_mps\n");
+  std::fprintf(lrf_csv->get(), "t_s,range_m,true_range_m\n");
+  return TruthFiles{std::move(truth_csv).value(), std::move(channels_csv).value(), std::move(maneuvers_csv).value(),
+                    std::move(lrf_csv).value()};
 }
 
 // The two spacecraft set up with their receivers, and the output files opened: the set-up of the
@@ -194,15 +224,30 @@ struct GnssRun {
   World world;
   std::array<Craft, 2> crafts;
   std::optional<TruthFiles> files;
+  std::optional<AttitudeProfile> profile;  // the observation windows (attitude = "campaign")
+  GnssOperations operations;
 };
 
-core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std::filesystem::path& out_dir) {
+core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std::filesystem::path& out_dir,
+                              double last_epoch_s) {
   auto world = load_world(s);
   if (!world.ok()) return world.error();
   run.world = std::move(world).value();
   const auto initial = initial_formation_state(s);
   if (!initial.ok()) return initial.error();
   const gnss::KlobucharCoefficients ionosphere = run.world.nav.ionosphere.value_or(gnss::KlobucharCoefficients{});
+  AttitudeSettings attitude_settings;  // as `visors run`
+  attitude_settings.slew_rate_radps = s.gnc.science.slew_rate_radps;
+  attitude_settings.settling_s = s.gnc.science.slew_settle_s;
+  auto profile = AttitudeProfile::create(attitude_settings);
+  if (!profile.ok()) return core::Error{"gnc.science." + profile.error().field, profile.error().message};
+  run.profile.emplace(std::move(profile).value());
+  auto operations = plan_gnss_operations(s, *run.profile, last_epoch_s);
+  if (!operations.ok()) return operations.error();
+  run.operations = std::move(operations).value();
+  for (const ObservationWindow& w : run.operations.windows) {
+    if (auto ok = run.profile->schedule(w); !ok) return core::Error{"gnss.observations." + ok.error().field, ok.error().message};
+  }
   std::array<Craft, 2>& crafts = run.crafts;
   crafts[0].name = "dsc";
   crafts[1].name = "osc";
@@ -236,33 +281,47 @@ EpochFrame epoch_frame(const World& world, core::GpsTime t) {
                     astro::sun_position_gcrf(t)};
 }
 
-// The attitude profile's body-to-GCRF attitude for the state (r, v).
-Eigen::Quaterniond profile_attitude(const Eigen::Vector3d& r, const Eigen::Vector3d& v, const Eigen::Vector3d& sun_gcrf,
-                                    bool observation_attitude) {
-  const Eigen::Vector3d sun_unit = (sun_gcrf - r).normalized();
-  return observation_attitude ? AttitudeProfile::observation_body_to_gcrf(r, v, sun_unit)
-                              : AttitudeProfile::nominal_body_to_gcrf(r, v, sun_unit);
-}
+// The truth attitude of [gnss] attitude: a fixed target ("nominal", "observation") or the
+// attitude profile with the observation windows ("campaign").
+struct AttitudeModel {
+  enum class Kind { kNominal, kObservation, kCampaign } kind = Kind::kNominal;
+  const AttitudeProfile* profile = nullptr;  // kCampaign only
 
-// The body's angular velocity (GCRF axes) [rad/s]: the profile's rotation between the states
-// +/- 0.5 s along the two-body motion, divided by 1 s (the Sun held fixed: it moves 2e-7 rad/s;
-// truncation ~ (w h)^2 of ~1e-3 rad/s).
-Eigen::Vector3d profile_angular_velocity_gcrf(const core::StateVector& x, const Eigen::Vector3d& sun_gcrf,
-                                              bool observation_attitude) {
-  constexpr double h = 0.5;
-  const Eigen::Vector3d a = -core::EarthGravityConstants{}.mu / std::pow(x.r.norm(), 3) * x.r;
-  const Eigen::Quaterniond before =
-      profile_attitude(x.r - h * x.v + 0.5 * h * h * a, x.v - h * a, sun_gcrf, observation_attitude);
-  const Eigen::Quaterniond after = profile_attitude(x.r + h * x.v + 0.5 * h * h * a, x.v + h * a, sun_gcrf, observation_attitude);
-  const Eigen::AngleAxisd turn(after * before.conjugate());  // about GCRF axes
-  return turn.angle() / (2.0 * h) * turn.axis();
-}
+  // Body to GCRF at t_s [s] for the state (r, v) at t_s.
+  [[nodiscard]] Eigen::Quaterniond at(double t_s, const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+                                      const Eigen::Vector3d& sun_gcrf) const {
+    const Eigen::Vector3d sun_unit = (sun_gcrf - r).normalized();
+    switch (kind) {
+      case Kind::kObservation:
+        return AttitudeProfile::observation_body_to_gcrf(r, v, sun_unit);
+      case Kind::kCampaign:
+        return profile->body_to_gcrf(t_s, r, v, sun_unit);
+      case Kind::kNominal:
+        break;
+    }
+    return AttitudeProfile::nominal_body_to_gcrf(r, v, sun_unit);
+  }
 
-// The receiver's pose at t: the attitude profile (which also sets the drag area of the truth
+  // The body's angular velocity (GCRF axes) [rad/s]: the rotation between the attitudes at
+  // t_s -/+ 0.5 s, the states there from the two-body motion, divided by 1 s (the Sun held fixed:
+  // it moves 2e-7 rad/s; truncation ~ (w h)^2 of ~1e-3 rad/s in the tracking, exact for the
+  // constant-rate eigen-axis slew except within 0.5 s of its start and arrival).
+  [[nodiscard]] Eigen::Vector3d angular_velocity_gcrf(double t_s, const core::StateVector& x,
+                                                      const Eigen::Vector3d& sun_gcrf) const {
+    constexpr double h = 0.5;
+    const Eigen::Vector3d a = -core::EarthGravityConstants{}.mu / std::pow(x.r.norm(), 3) * x.r;
+    const Eigen::Quaterniond before = at(t_s - h, x.r - h * x.v + 0.5 * h * h * a, x.v - h * a, sun_gcrf);
+    const Eigen::Quaterniond after = at(t_s + h, x.r + h * x.v + 0.5 * h * h * a, x.v + h * a, sun_gcrf);
+    const Eigen::AngleAxisd turn(after * before.conjugate());  // about GCRF axes
+    return turn.angle() / (2.0 * h) * turn.axis();
+  }
+};
+
+// The receiver's pose at t: the truth attitude (which also sets the drag area of the truth
 // forces, and is kept in the craft for the truth file), its angular velocity relative to the
 // Earth, and the centre of mass in ITRF.
-ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, bool observation_attitude) {
-  const Eigen::Quaterniond q = profile_attitude(c.x_gcrf.r, c.x_gcrf.v, frame.sun_gcrf, observation_attitude);
+ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, double t_s, const AttitudeModel& attitude) {
+  const Eigen::Quaterniond q = attitude.at(t_s, c.x_gcrf.r, c.x_gcrf.v, frame.sun_gcrf);
   c.attitude = q;
   c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
   ReceiverPose pose;
@@ -271,8 +330,7 @@ ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, b
   pose.com_itrf.v = frame.gcrf_to_itrf * c.x_gcrf.v - frame.omega.cross(pose.com_itrf.r);
   pose.body_to_itrf = frame.gcrf_to_itrf * q.toRotationMatrix();
   pose.com_body_m = c.geometry->com_body_m();
-  pose.angular_velocity_itrf =
-      frame.gcrf_to_itrf * profile_angular_velocity_gcrf(c.x_gcrf, frame.sun_gcrf, observation_attitude) - frame.omega;
+  pose.angular_velocity_itrf = frame.gcrf_to_itrf * attitude.angular_velocity_gcrf(t_s, c.x_gcrf, frame.sun_gcrf) - frame.omega;
   return pose;
 }
 
@@ -294,14 +352,71 @@ core::Result<bool> record_epoch(Craft& c, const GpsReceiverEpoch& epoch, double 
   return true;
 }
 
-// Both spacecraft one step ahead along their truth dynamics.
-core::Result<bool> propagate_crafts(std::array<Craft, 2>& crafts, core::GpsTime t, double step_s) {
-  for (Craft& c : crafts) {
-    auto next = c.truth.propagator->propagate_to(t, c.x_gcrf, t + step_s);
+// One maneuver piece executed on the craft's truth at the piece's time (the craft's state is
+// there): the commanded RTN dv in GCRF (the true RTN frame), in the body frame of the true
+// attitude, executed by the propulsion model with its errors, back to GCRF with the same attitude,
+// added to the velocity; a maneuvers.csv row (columns: gnss_simulation.hpp).
+core::Result<bool> execute_piece(Craft& c, const GnssManeuverPiece& piece, const CampaignScenario& s,
+                                 const AttitudeModel& attitude, std::FILE* f) {
+  const core::GpsTime t = s.t0 + piece.t_s;
+  const Eigen::Quaterniond q = attitude.at(piece.t_s, c.x_gcrf.r, c.x_gcrf.v, astro::sun_position_gcrf(t));
+  const Eigen::Vector3d dv_cmd_gcrf = core::gcrf_to_rtn_matrix(c.x_gcrf).transpose() * piece.dv_rtn_mps;
+  auto executed = c.propulsion->execute(piece.t_s, q.conjugate() * dv_cmd_gcrf);
+  if (!executed.ok()) {
+    // The schedule is checked before the run (spacing, burst length), so what is left is the
+    // size of the command (impulse range, propellant).
+    const std::string field = executed.error().field == "t_s" ? "gnss.maneuvers.pieces_per_burst" : "gnss.maneuvers.dv_mps";
+    return core::Error{field, c.name + " propulsion refused the piece at t = " + std::to_string(piece.t_s) +
+                                  " s: " + executed.error().describe()};
+  }
+  const Eigen::Vector3d dv_gcrf = q * executed->dv_executed_body_mps;
+  c.x_gcrf.v += dv_gcrf;
+  ++c.maneuvers;
+  std::fprintf(f, "%.3f,%s,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f\n", piece.t_s, c.name.c_str(), dv_cmd_gcrf.x(), dv_cmd_gcrf.y(),
+               dv_cmd_gcrf.z(), dv_gcrf.x(), dv_gcrf.y(), dv_gcrf.z());
+  return true;
+}
+
+// Both spacecraft one step ahead along their truth dynamics, from the epoch t_s to t_s + step_s,
+// with the maneuver pieces of [t_s, t_s + step_s) executed at their times (so an epoch's truth
+// row is the state before a piece fired at that very epoch). `next_piece` walks the plan.
+core::Result<bool> propagate_crafts(GnssRun& run, const CampaignScenario& s, double t_s, const AttitudeModel& attitude,
+                                    std::size_t& next_piece) {
+  const double end_s = t_s + s.step_s;
+  std::array<double, 2> at_s{t_s, t_s};  // where each craft's state is
+  const auto advance = [&](int k, double to_s) -> core::Result<bool> {
+    Craft& c = run.crafts[static_cast<std::size_t>(k)];
+    auto next = c.truth.propagator->propagate_to(s.t0 + at_s[static_cast<std::size_t>(k)], c.x_gcrf, s.t0 + to_s);
     if (!next.ok()) return core::Error{c.name + " truth", next.error().describe()};
     c.x_gcrf = *next;
+    at_s[static_cast<std::size_t>(k)] = to_s;
+    return true;
+  };
+  const std::vector<GnssManeuverPiece>& pieces = run.operations.pieces;
+  for (; next_piece < pieces.size() && pieces[next_piece].t_s < end_s; ++next_piece) {
+    const GnssManeuverPiece& piece = pieces[next_piece];
+    if (piece.t_s > at_s[static_cast<std::size_t>(piece.craft)]) {
+      if (auto ok = advance(piece.craft, piece.t_s); !ok) return ok.error();
+    }
+    Craft& c = run.crafts[static_cast<std::size_t>(piece.craft)];
+    if (auto ok = execute_piece(c, piece, s, attitude, run.files->maneuvers.get()); !ok) return ok.error();
+  }
+  for (int k = 0; k < 2; ++k) {
+    if (auto ok = advance(k, end_s); !ok) return ok.error();
   }
   return true;
+}
+
+// A lrf.csv row at the epoch t_s (the crafts' states and attitudes are at t_s): the range between
+// the true payload points r + C (payload - centre of mass), OSC to DSC, with the bias and the noise.
+void write_lrf_row(std::FILE* f, double t_s, const std::array<Craft, 2>& crafts, const GnssLrfSettings& lrf,
+                   RandomStream& rng) {
+  const auto payload = [](const Craft& c) {
+    return Eigen::Vector3d(c.x_gcrf.r + c.attitude * c.geometry->payload_from_com_body_m());
+  };
+  const double truth = (payload(crafts[1]) - payload(crafts[0])).norm();
+  const double measured = truth + lrf.bias_m + rng.normal(lrf.sigma_m);
+  std::fprintf(f, "%.3f,%.6f,%.6f\n", t_s, measured, truth);
 }
 
 core::Result<bool> close_rinex(std::array<Craft, 2>& crafts) {
@@ -322,6 +437,14 @@ nlohmann::json run_summary(const CampaignScenario& s, const GnssRun& run, std::i
   summary["satellites"] = run.world.satellites->truth().size();
   summary["wall_s"] = wall;
   summary["receiver_us_per_epoch_two_spacecraft"] = 1e6 * measure_wall_s / epochs;
+  summary["observations"] = nlohmann::json::array();
+  for (const ObservationWindow& w : run.operations.windows) {
+    summary["observations"].push_back({{"slew_start_s", w.slew_start_s}, {"start_s", w.start_s}, {"end_s", w.end_s}});
+  }
+  summary["observation_period_s"] = run.operations.period_s;
+  summary["maneuvers"] = {{"dsc", run.crafts[0].maneuvers}, {"osc", run.crafts[1].maneuvers}};
+  summary["maneuver_pieces_skipped"] = run.operations.skipped_pieces;
+  summary["lrf_measurements"] = run.operations.lrf_epochs.size();
   summary["t0"] = {{"iso", s.t0.format(core::TimeScale::kGps, 3)}, {"week", s.t0.week()}, {"seconds_of_week", s.t0.seconds_of_week()}};
   const auto vector = [](const Eigen::Vector3d& x) { return nlohmann::json::array({x.x(), x.y(), x.z()}); };
   for (const Craft& c : run.crafts) {
@@ -345,27 +468,36 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
                                                 const std::function<void(const RunProgress&)>& progress) {
   const auto wall_start = std::chrono::steady_clock::now();
   if (auto ok = write_resolved_scenario(s, out_dir); !ok) return ok.error();
+  const auto steps = static_cast<std::int64_t>(std::floor(s.gnss.duration_s / s.step_s + 1e-9));
   GnssRun run;
-  if (auto ok = set_up_run(run, s, out_dir); !ok) return ok.error();
+  if (auto ok = set_up_run(run, s, out_dir, static_cast<double>(steps) * s.step_s); !ok) return ok.error();
   const GpsSatelliteTruth& satellites = *run.world.satellites;
 
-  const auto steps = static_cast<std::int64_t>(std::floor(s.gnss.duration_s / s.step_s + 1e-9));
-  const bool observation_attitude = s.gnss.attitude == "observation";
+  AttitudeModel attitude;
+  if (s.gnss.attitude == "observation") attitude.kind = AttitudeModel::Kind::kObservation;
+  if (s.gnss.attitude == "campaign") attitude = AttitudeModel{AttitudeModel::Kind::kCampaign, &*run.profile};
+  std::size_t next_piece = 0, next_lrf = 0;
+  const std::vector<std::int64_t>& lrf_epochs = run.operations.lrf_epochs;
+  RandomStream lrf_rng(s.seed, "osc.lrf");
   double measure_wall_s = 0.0;
   for (std::int64_t k = 0; k <= steps; ++k) {
     const double t_s = static_cast<double>(k) * s.step_s;
     const core::GpsTime t = s.t0 + t_s;
     const EpochFrame frame = epoch_frame(run.world, t);
     for (Craft& c : run.crafts) {
-      const ReceiverPose pose = receiver_pose(c, frame, t, observation_attitude);
+      const ReceiverPose pose = receiver_pose(c, frame, t, t_s, attitude);
       const auto measure_start = std::chrono::steady_clock::now();
       const GpsReceiverEpoch& epoch = c.receiver->measure(pose, satellites);
       measure_wall_s += seconds_since(measure_start);
       if (auto ok = record_epoch(c, epoch, t_s, *run.files); !ok) return ok.error();
     }
+    if (next_lrf < lrf_epochs.size() && lrf_epochs[next_lrf] == k) {
+      write_lrf_row(run.files->lrf.get(), t_s, run.crafts, s.gnss.lrf, lrf_rng);
+      ++next_lrf;
+    }
     if (progress && k % 60 == 0) progress({t_s, s.gnss.duration_s, seconds_since(wall_start)});
     if (k == steps) break;
-    if (auto ok = propagate_crafts(run.crafts, t, s.step_s); !ok) return ok.error();
+    if (auto ok = propagate_crafts(run, s, t_s, attitude, next_piece); !ok) return ok.error();
   }
 
   if (auto ok = close_rinex(run.crafts); !ok) return ok.error();

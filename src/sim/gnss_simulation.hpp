@@ -4,9 +4,12 @@
 // other GNSS software.
 //
 // The world: the scenario's truth force model (RK4 at integration_step_s) for both spacecraft from
-// their initial states; attitude nominal (antenna at the zenith) or observation (payload +X at the
-// Sun), [gnss] attitude; the true centre of mass drawn as in `visors run` (same seed, same
-// geometry); the GPS constellation of [gnss] nav_file moved to the scenario start
+// their initial states; attitude nominal (antenna at the zenith), observation (payload +X at the
+// Sun) or campaign ([gnss] attitude: nominal, with the observation windows of [gnss.observations]
+// flown through sim::AttitudeProfile, eigen-axis slews at gnc.science.slew_rate_radps, 1.5 deg/s,
+// as in `visors run`); the true centre of mass and payload point drawn as in `visors run` (same
+// seed, same geometry); optionally a maneuver schedule ([gnss.maneuvers]) and a laser rangefinder
+// ([gnss.lrf]), planned as sim/gnss_operations.hpp says; the GPS constellation of [gnss] nav_file moved to the scenario start
 // (gnss/constellation.hpp) with broadcast errors (sim/gps_satellite_truth.hpp); one receiver per
 // spacecraft (sim/gps_receiver.hpp) with the navigation file's Klobuchar coefficients as the truth
 // ionosphere. Earth orientation: the force model's EOP file when it names one, else zero EOP
@@ -14,9 +17,51 @@
 //
 // Output directory: scenario.toml (resolved), dsc.rnx and osc.rnx (RINEX 3.05 observations,
 // C1C L1C D1C S1C, LLI bit 0 on loss of lock), brdc.rnx (RINEX 3.05 navigation: the broadcast
-// ephemerides the receivers decode, i.e. with the broadcast errors), truth.csv, channels_truth.csv
-// and summary.json (counts, t0, and per receiver the body-frame phase centre, centre of mass and
-// boresight [m, unit]).
+// ephemerides the receivers decode, i.e. with the broadcast errors), truth.csv, channels_truth.csv,
+// maneuvers.csv and lrf.csv (always written; a header line only when there is nothing to record)
+// and summary.json (counts, t0, per receiver the body-frame phase centre, centre of mass and
+// boresight [m, unit]; "observations": [{"slew_start_s", "start_s", "end_s"}, ...] (empty unless
+// attitude = "campaign"), "observation_period_s", "maneuvers": {"dsc": n, "osc": n} executed
+// pieces, "maneuver_pieces_skipped" (pieces x spacecraft not commanded: in an observation's
+// quiet time), "lrf_measurements").
+//
+// Truth attitude. Every use of the attitude (truth.csv quaternion, the drag area of the truth
+// forces, the receiver's antenna pose and its angular velocity, the maneuvers' body frame, the
+// payload points of the rangefinder) is the same function of (t_s, r, v, Sun): the fixed target,
+// or AttitudeProfile::body_to_gcrf(t_s, ...) for "campaign". The angular velocity is the rotation
+// between the attitudes at t_s - 0.5 s and t_s + 0.5 s (states there by two-body motion from the
+// epoch's), divided by 1 s.
+//
+// Maneuvers (spacecraft != "none"; schedule, directions and skipping: sim/gnss_operations.hpp).
+// Each piece is executed on the truth at its own time t_p (46.5 s spacing puts every other piece
+// half-way between epochs): the craft's truth is propagated to t_p, the commanded dv (its RTN
+// frame of the true state at t_p) is rotated to GCRF, then into the body frame of the true
+// attitude at t_p; sim::Propulsion::execute (the scenario's [propulsion] settings, the craft's
+// [dsc]/[osc] mass_kg and propellant_kg, RandomStream(seed, "<craft>.propulsion") as `visors run`:
+// quantisation, 5 % magnitude, 0.05 deg direction, Isp drawn) gives the executed body dv, rotated
+// back to GCRF with the same attitude and added to the velocity; propagation goes on to the next
+// epoch. A piece at an epoch's time fires after that epoch's record (its truth.csv row is the
+// state before the impulse). A command the propulsion refuses is an error of the run, naming
+// gnss.maneuvers.dv_mps (impulse range, propellant). The mass change is not fed back to the truth
+// forces (as in `visors run`).
+//
+// maneuvers.csv, one row per executed piece and spacecraft, in time order (DSC first at equal
+// times):
+//   t_s [s]                       impulse time, seconds since t0 (3 decimals)
+//   spacecraft                    dsc or osc
+//   dv_cmd_x_gcrf_mps, dv_cmd_y_gcrf_mps, dv_cmd_z_gcrf_mps [m/s]  commanded dv in GCRF: what the
+//                                 flight software commanded (the RTN command in the true RTN
+//                                 frame), what a filter may use (%.9f)
+//   dv_x_gcrf_mps, dv_y_gcrf_mps, dv_z_gcrf_mps [m/s]  executed dv in GCRF, truth (%.9f)
+//
+// lrf.csv, one row per rangefinder epoch (enabled, attitude = "campaign"; epochs:
+// sim/gnss_operations.hpp):
+//   t_s [s]                       time tag, seconds since t0 (3 decimals)
+//   range_m [m]                   measured: true_range_m + bias_m + N(0, sigma_m), the noise from
+//                                 RandomStream(seed, "osc.lrf") (%.6f)
+//   true_range_m [m]              |p_osc - p_dsc| at T, p = r_gcrf + A(q) (payload point - centre
+//                                 of mass, body), the true payload points (sim/spacecraft_geometry
+//                                 .hpp draws) and the true attitudes of truth.csv (%.6f)
 //
 // Instants. Every epoch has a time tag T = t0 + t_s (t0 = time.start_gps), the RINEX epoch, and
 // the simulation takes it as TRUE GPS time: the state columns of truth.csv are at T, which is what
