@@ -477,10 +477,10 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
 }
 
 // The fixed combinations the hold still has to constrain, moved to the top k' rows of C and z:
-// those whose float variance c P c' exceeds the hold variance. Holding a combination again at
-// every epoch would add the same information each time, its variance falling as 1/epochs: P
-// over-confident after hours (the 24 h NEES grew past 15 with it). C has entries only in the
-// SDCP ambiguity columns.
+// those whose float variance c P c' exceeds the hold variance. Once held, a combination's
+// variance stays below it (ambiguities have no process noise), so each is held once, not again
+// at every epoch (an update of k rows each time). C has entries only in the SDCP ambiguity
+// columns.
 Eigen::Index CdgpsFilter::Impl::rows_to_hold(Eigen::Index k, double hold_variance) {
   constexpr int a = state::kSdcpAmbiguities;
   Eigen::Index kept = 0;

@@ -190,9 +190,8 @@ TEST_F(CdgpsFilterRun, FixesTheIntegersWithinAMinute) {
 TEST_F(CdgpsFilterRun, StaysFixedAfterTheFirstFix) { EXPECT_GE(result->fixed_epochs, 600 - result->first_fix - 6); }
 
 // Fix-and-hold feeds each fixed combination back once (while its float variance exceeds the hold
-// variance), not at every fixed epoch: re-holding the same integers each second made P
-// over-confident over a day. Over 10 min the holds come at the first fix and when a satellite
-// rises or a new combination is fixed: a few dozen epochs, not ~550.
+// variance), not at every fixed epoch. Over 10 min the holds come at the first fix and when a
+// satellite rises or a new combination is fixed: a few dozen epochs, not ~550.
 TEST_F(CdgpsFilterRun, HoldsEachFixOnceNotEveryEpoch) {
   EXPECT_GT(result->held_epochs, 0);
   EXPECT_LT(result->held_epochs, result->fixed_epochs / 5);
