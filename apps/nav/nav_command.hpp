@@ -1,11 +1,13 @@
 #pragma once
-// `visors nav RUN_DIR [--out DIR] [--duration S] [--crosslink-drop P] [--outage START DURATION]`:
-// replays a `visors gnss-sim` run directory
+// `visors nav RUN_DIR [--out DIR] [--duration S] [--crosslink-drop P] [--outage START DURATION]
+//  [--elevation-weighting] [--float] [--no-laser]`: replays a `visors gnss-sim` run directory
 // through the on-board carrier-phase differential GPS filter (src/nav/cdgps_filter.hpp) of each
-// spacecraft at 1 Hz, and scores it against the run's truth: relative position and velocity
-// (OSC minus DSC, RTN of the DSC), absolute position and velocity, fix rate, time to first fix,
-// wrong fixes (a full fix whose double-difference integers differ from the truth), NIS.
-// Writes DIR/nav_<craft>.csv (one row per epoch) and DIR/summary.json.
+// spacecraft at 1 Hz, with the run's commanded impulses and laser ranges (nav_inputs.hpp: what the
+// filter reads), and scores it against the run's truth (nav_score.hpp): relative position and
+// velocity (OSC minus DSC, RTN of the DSC), absolute position and velocity, fix rate, time to
+// first fix, wrong fixes (a full fix whose double-difference integers differ from the truth),
+// NEES/NIS, and during observations the payload points' relative error along the line of sight.
+// Writes DIR/nav_<craft>.csv (one row per epoch), DIR/summary.json and DIR/nav.html.
 
 #include <string>
 
@@ -16,6 +18,8 @@ struct NavOptions {
   std::string out = "out/nav";
   double duration_s = 0.0;  // 0: the whole run
   bool elevation_weighting = false;  // the filter's CdgpsSettings::elevation_weighting
+  bool float_only = false;           // no integer ambiguity resolution (CdgpsSettings::ambiguity_resolution)
+  bool no_laser = false;             // the run's laser ranges (lrf.csv) not fused
   // Faults injected by the replay (the run's data unchanged otherwise).
   double crosslink_drop = 0.0;   // probability that the other receiver's epoch is lost
   double outage_start_s = -1.0;  // GPS outage of both receivers from this time [s]; < 0: none

@@ -3,8 +3,11 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <span>
 #include <sstream>
 #include <string_view>
+
+#include <nlohmann/json.hpp>
 
 #include "baseline/receiver_observables.hpp"
 #include "core/files/csv_file.hpp"
@@ -17,8 +20,6 @@ namespace visors::nav_app {
 namespace {
 
 using core::Error;
-
-long long key_ms(double t_s) { return std::llround(t_s * 1000.0); }
 
 core::Result<std::vector<nav::GpsReceiverEpoch>> read_observations(const std::filesystem::path& path) {
   auto file = gnss::files::read_rinex_observations(path);
@@ -50,21 +51,92 @@ core::Result<gnss::EphemerisSet> read_ephemerides(const std::filesystem::path& p
   return gnss::EphemerisSet::screen(nav.value().records, nav.value().record_lines);
 }
 
+// The numbers of a row's fields [first, first + out.size()); false at the first that is not one.
+bool parse_fields(const core::files::CsvRow& row, std::size_t first, std::span<double> out) {
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const auto value = core::files::parse_finite_number(row.fields[first + i]);
+    if (!value) return false;
+    out[i] = *value;
+  }
+  return true;
+}
+
+core::Result<nav::Craft> craft_named(const std::string& name, const std::filesystem::path& path, std::size_t line) {
+  if (name == "dsc") return nav::Craft::kDsc;
+  if (name == "osc") return nav::Craft::kOsc;
+  return Error{path.string() + ": line " + std::to_string(line), "spacecraft '" + name + "' is neither dsc nor osc"};
+}
+
 core::Result<bool> read_truth(const std::filesystem::path& path, RunInputs& in) {
-  constexpr std::array<std::string_view, 8> columns = {"t_s", "spacecraft", "x_gcrf_m", "y_gcrf_m", "z_gcrf_m",
-                                                       "vx_gcrf_mps", "vy_gcrf_mps", "vz_gcrf_mps"};
+  constexpr std::array<std::string_view, 12> columns = {
+      "t_s",         "spacecraft",  "x_gcrf_m",        "y_gcrf_m",        "z_gcrf_m",        "vx_gcrf_mps",
+      "vy_gcrf_mps", "vz_gcrf_mps", "qw_body_to_gcrf", "qx_body_to_gcrf", "qy_body_to_gcrf", "qz_body_to_gcrf"};
   auto rows = core::files::read_csv_columns(path, columns, "truth file");
   if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
   for (const auto& row : rows.value()) {
-    std::array<double, 7> v{};
-    for (std::size_t i = 0; i < 7; ++i) {
-      const auto value = core::files::parse_finite_number(row.fields[i == 0 ? 0 : i + 1]);
-      if (!value) return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
-      v[i] = *value;
+    std::array<double, 11> v{};
+    if (!parse_fields(row, 2, std::span(v).subspan(1)) || !parse_fields(row, 0, std::span(v).first(1))) {
+      return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
     }
-    const core::StateVector x{Eigen::Vector3d(v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6])};
-    auto& entry = in.truth[key_ms(v[0])];
-    (row.fields[1] == "dsc" ? entry.first : entry.second) = x;
+    const auto craft = craft_named(row.fields[1], path, row.line);
+    if (!craft) return craft.error();
+    const Eigen::Quaterniond q(v[7], v[8], v[9], v[10]);
+    if (std::abs(q.norm() - 1.0) > 1e-6) return Error{path.string() + ": line " + std::to_string(row.line), "attitude quaternion is not unit"};
+    in.truth[key_ms(v[0])][static_cast<std::size_t>(*craft)] =
+        CraftTruth{{Eigen::Vector3d(v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6])}, q.normalized()};
+  }
+  return true;
+}
+
+// maneuvers.csv: the commanded columns only (the executed ones are the truth).
+core::Result<bool> read_impulses(const std::filesystem::path& path, RunInputs& in) {
+  if (!std::filesystem::exists(path)) return true;
+  constexpr std::array<std::string_view, 5> columns = {"t_s", "spacecraft", "dv_cmd_x_gcrf_mps", "dv_cmd_y_gcrf_mps",
+                                                       "dv_cmd_z_gcrf_mps"};
+  auto rows = core::files::read_csv_columns(path, columns, "maneuver file");
+  if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
+  for (const auto& row : rows.value()) {
+    std::array<double, 4> v{};
+    if (!parse_fields(row, 0, std::span(v).first(1)) || !parse_fields(row, 2, std::span(v).subspan(1))) {
+      return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
+    }
+    const auto craft = craft_named(row.fields[1], path, row.line);
+    if (!craft) return craft.error();
+    if (!in.impulses.empty() && v[0] < in.impulses.back().t_s) {
+      return Error{path.string() + ": line " + std::to_string(row.line), "impulses out of time order"};
+    }
+    in.impulses.push_back({v[0], *craft, Eigen::Vector3d(v[1], v[2], v[3])});
+  }
+  return true;
+}
+
+// lrf.csv: the measured ranges (true_range_m is the truth).
+core::Result<bool> read_laser_ranges(const std::filesystem::path& path, RunInputs& in) {
+  if (!std::filesystem::exists(path)) return true;
+  constexpr std::array<std::string_view, 2> columns = {"t_s", "range_m"};
+  auto rows = core::files::read_csv_columns(path, columns, "laser range file");
+  if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
+  for (const auto& row : rows.value()) {
+    std::array<double, 2> v{};
+    if (!parse_fields(row, 0, v)) return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
+    in.laser_ranges_m[key_ms(v[0])] = v[1];
+  }
+  return true;
+}
+
+// summary.json's "observations" (absent in runs without the campaign attitude).
+core::Result<bool> read_observation_spans(const std::filesystem::path& path, RunInputs& in) {
+  std::ifstream file(path);
+  if (!file) return true;
+  const nlohmann::json summary = nlohmann::json::parse(file, nullptr, false);
+  if (summary.is_discarded()) return Error{path.string(), "is not JSON"};
+  if (!summary.contains("observations")) return true;
+  for (const auto& o : summary["observations"]) {
+    if (!o.contains("slew_start_s") || !o.contains("start_s") || !o.contains("end_s") || !o["start_s"].is_number() ||
+        !o["end_s"].is_number() || !o["slew_start_s"].is_number()) {
+      return Error{path.string() + ": observations", "each needs numbers slew_start_s, start_s, end_s"};
+    }
+    in.observations.push_back({o["slew_start_s"].get<double>(), o["start_s"].get<double>(), o["end_s"].get<double>()});
   }
   return true;
 }
@@ -88,6 +160,26 @@ core::Result<bool> read_phase_truth(const std::filesystem::path& path, RunInputs
 
 }  // namespace
 
+nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf, const sim::CampaignScenario& s) {
+  nav::AntennaGeometry a;
+  a.body_to_gcrf = body_to_gcrf.toRotationMatrix();
+  a.arp_body_m = s.gnss.receiver.antenna_body_m - sim::GeometrySettings{}.com_nominal_body_m;
+  a.pco_body_m = s.gnss.receiver.phase_center_offset_m * Eigen::Vector3d::UnitZ();
+  a.boresight_body = Eigen::Vector3d::UnitZ();  // gnss-sim's nominal boresight
+  return a;
+}
+
+nav::LaserRangeGeometry laser_geometry(const Eigen::Quaterniond& dsc_body_to_gcrf, const Eigen::Quaterniond& osc_body_to_gcrf) {
+  const sim::GeometrySettings nominal;
+  nav::LaserRangeGeometry g;
+  g.dsc_body_to_gcrf = dsc_body_to_gcrf.toRotationMatrix();
+  g.osc_body_to_gcrf = osc_body_to_gcrf.toRotationMatrix();
+  g.dsc_lever_body_m = nominal.payload_nominal_body_m - nominal.com_nominal_body_m;
+  g.osc_lever_body_m = nominal.payload_nominal_body_m - nominal.com_nominal_body_m;
+  g.bias_m = 0.0;  // calibrated
+  return g;
+}
+
 core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
   RunInputs in;
   std::ifstream scenario_file(run_dir / "scenario.toml");
@@ -107,12 +199,16 @@ core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
   if (!ephemerides) return ephemerides.error();
   in.ephemerides = std::move(ephemerides).value();
   if (auto ok = read_truth(run_dir / "truth.csv", in); !ok) return ok.error();
+  if (auto ok = read_impulses(run_dir / "maneuvers.csv", in); !ok) return ok.error();
+  if (auto ok = read_laser_ranges(run_dir / "lrf.csv", in); !ok) return ok.error();
+  if (auto ok = read_observation_spans(run_dir / "summary.json", in); !ok) return ok.error();
   if (auto ok = read_phase_truth(run_dir / "channels_truth.csv", in); !ok) return ok.error();
   const char* names[2] = {"dsc", "osc"};
   for (std::size_t k = 0; k < 2; ++k) {
     sim::RandomStream rng(in.scenario.seed, std::string(names[k]) + ".geometry");  // as gnss-sim draws it
     const auto geometry = sim::SpacecraftGeometry::draw(sim::GeometrySettings{}, rng);
     in.com_knowledge_error_body_m[k] = geometry.com_body_m() - geometry.com_nominal_body_m();
+    in.payload_lever_error_body_m[k] = geometry.payload_from_com_body_m() - geometry.payload_from_com_nominal_body_m();
   }
   return in;
 }

@@ -1,20 +1,34 @@
 #pragma once
-// What `visors nav` reads from a `visors gnss-sim` run directory: the resolved scenario, both
-// receivers' observations (RINEX 3: C1C, L1C and its loss-of-lock indicator), the broadcast
-// ephemerides (brdc.rnx), and for scoring only the truth: each spacecraft's centre of mass in
-// GCRF at the time tag (truth.csv) and each channel's integer ambiguity and receiver phase
-// offset (channels_truth.csv), from which the true double-difference integers follow.
+// What `visors nav` reads from a `visors gnss-sim` run directory (file formats:
+// sim/gnss_simulation.hpp).
+// What the spacecraft know on board: the resolved scenario (the receivers' noise specification,
+// the LRF's), both receivers' observations (RINEX 3: C1C, L1C and its loss-of-lock and
+// half-cycle indicators), the broadcast ephemerides (brdc.rnx), the commanded impulses
+// (maneuvers.csv: the command, not the executed truth), the laser ranges (lrf.csv) and the
+// attitude, taken from truth.csv's quaternions: the star trackers' 10-arcsec class error moves a
+// 0.2 m lever arm by 10 um, below the phase noise (the antenna mounting errors, 30 arcsec, are in
+// the measurements, unknown to the filter).
+// For scoring only, the truth: each spacecraft's centre of mass in GCRF at the time tag
+// (truth.csv), each channel's integer ambiguity and receiver phase offset (channels_truth.csv),
+// from which the true double-difference integers follow, the observation windows
+// (summary.json) and the centre-of-mass and payload-point draws of the run's seed.
+// maneuvers.csv, lrf.csv and summary.json's "observations" are optional (runs of older versions).
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <utility>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/state_vector.hpp"
 #include "core/status.hpp"
 #include "gnss/ephemeris_set.hpp"
 #include "nav/gps_observations.hpp"
+#include "nav/gps_range_model.hpp"
+#include "nav/laser_range_model.hpp"
 #include "sim/campaign_scenario.hpp"
 
 namespace visors::nav_app {
@@ -23,18 +37,54 @@ struct ChannelTruth {
   double single_difference_cycles = 0.0;  // ambiguity + receiver phase offset (per receiver)
 };
 
+/// One spacecraft at an epoch's time tag: the true centre of mass (GCRF) and attitude.
+struct CraftTruth {
+  core::StateVector x_gcrf;
+  Eigen::Quaterniond body_to_gcrf = Eigen::Quaterniond::Identity();
+};
+
+/// A commanded impulse as the flight software knows it [s after the scenario start, GCRF m/s].
+struct CommandedImpulse {
+  double t_s = 0.0;
+  nav::Craft craft = nav::Craft::kOsc;
+  Eigen::Vector3d dv_gcrf_mps = Eigen::Vector3d::Zero();
+};
+
+/// An observation: the slew starts at slew_start_s, the observation spans [start_s, end_s] [s].
+struct ObservationSpan {
+  double slew_start_s = 0.0, start_s = 0.0, end_s = 0.0;
+};
+
 struct RunInputs {
   sim::CampaignScenario scenario;
   std::vector<nav::GpsReceiverEpoch> dsc, osc;  // in time order
   gnss::EphemerisSet ephemerides;
-  /// Truth centre of mass at each epoch's time tag [s after the scenario start].
-  std::map<long long, std::pair<core::StateVector, core::StateVector>> truth;  // key: ms
+  std::vector<CommandedImpulse> impulses;  // in time order
+  std::map<long long, double> laser_ranges_m;  // key: ms after the scenario start
+  std::vector<ObservationSpan> observations;
+  /// Truth at each epoch's time tag, DSC and OSC; key: ms after the scenario start.
+  std::map<long long, std::array<CraftTruth, 2>> truth;
   /// Per epoch (ms) and PRN: the receiver's (integer ambiguity + phase offset) [cycles], DSC and OSC.
   std::map<long long, std::map<int, std::pair<double, double>>> phase_truth;
   /// True minus nominal centre of mass, body frame [m], DSC and OSC: the draw gnss-sim made from
   /// the scenario's seed (sim/spacecraft_geometry.hpp). The filter knows only the nominal one.
   std::array<Eigen::Vector3d, 2> com_knowledge_error_body_m{};
+  /// True minus nominal payload reference point relative to the centre of mass, body frame [m],
+  /// DSC and OSC (the LRF's end points).
+  std::array<Eigen::Vector3d, 2> payload_lever_error_body_m{};
 };
+
+/// Milliseconds after the scenario start: the key of the maps above.
+inline long long key_ms(double t_s) { return std::llround(t_s * 1000.0); }
+
+/// The antenna as the spacecraft knows it: the attitude (body to GCRF), the nominal centre of
+/// mass, the antenna reference point and the phase-centre offset along the boresight (body +Z).
+nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf, const sim::CampaignScenario& s);
+
+/// The laser range's end points as the spacecraft know them: the nominal payload reference points
+/// (sim/spacecraft_geometry.hpp: the OSC's photon sieve, the DSC's detector) from the nominal
+/// centres of mass, and the attitudes.
+nav::LaserRangeGeometry laser_geometry(const Eigen::Quaterniond& dsc_body_to_gcrf, const Eigen::Quaterniond& osc_body_to_gcrf);
 
 /// Reads `run_dir`; errors name the file (and line).
 core::Result<RunInputs> read_run(const std::filesystem::path& run_dir);

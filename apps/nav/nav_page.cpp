@@ -24,15 +24,29 @@ constexpr const char* kAxisNames[3] = {"R", "T", "N"};
 
 std::size_t stride(const Replay& r) { return std::max<std::size_t>(1, r.epochs.size() / kMaxPoints); }
 
-// Outages as bands over the panel's y range.
-void mark_outages(report::Plot& plot, const Replay& r, double y0, double y1) {
+// The runs of consecutive epochs where `inside(e)` holds, as bands over the panel's y range.
+template <typename Inside>
+void mark_spans(report::Plot& plot, const Replay& r, double y0, double y1, const char* colour, const char* label,
+                Inside inside) {
+  bool labelled = false;
   for (std::size_t i = 0; i < r.epochs.size(); ++i) {
-    if (std::string_view(r.epochs[i].status) != "outage") continue;
+    if (!inside(r.epochs[i])) continue;
     std::size_t j = i;
-    while (j + 1 < r.epochs.size() && std::string_view(r.epochs[j + 1].status) == "outage") ++j;
-    plot.band(r.epochs[i].t_s / 60.0, r.epochs[j].t_s / 60.0, y0, y1, "#f2d7d5", i == 0 ? "GPS outage" : "");
+    while (j + 1 < r.epochs.size() && inside(r.epochs[j + 1])) ++j;
+    plot.band(r.epochs[i].t_s / 60.0, r.epochs[j].t_s / 60.0, y0, y1, colour, labelled ? "" : label);
+    labelled = true;
     i = j;
   }
+}
+
+// Outages, slews and observations as bands, the commanded impulses as vertical lines.
+void mark_events(report::Plot& plot, const Replay& r, double y0, double y1) {
+  mark_spans(plot, r, y0, y1, "#f2d7d5", "GPS outage", [](const EpochScore& e) { return std::string_view(e.status) == "outage"; });
+  mark_spans(plot, r, y0, y1, "#e8e8e8", "slew", [](const EpochScore& e) { return e.in_slew; });
+  mark_spans(plot, r, y0, y1, "#d5e8f2", "observation", [](const EpochScore& e) { return e.in_observation; });
+  std::vector<double> impulses;
+  for (double t : r.impulse_t_s) impulses.push_back(t / 60.0);
+  if (!impulses.empty()) plot.vlines(impulses, "impulse", {"#7a3e9d", 0.6, true});
 }
 
 // One RTN time series per axis of `value(e)` scaled by `scale`, clipped to +-limit.
@@ -49,7 +63,7 @@ report::Plot rtn_plot(const Replay& r, const std::string& title, const std::stri
     plot.line(kAxisNames[axis], t, y, {kAxisColours[axis], 1.0, false});
   }
   plot.y_range(-limit, limit);
-  mark_outages(plot, r, -limit, limit);
+  mark_events(plot, r, -limit, limit);
   return plot;
 }
 

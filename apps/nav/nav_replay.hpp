@@ -31,6 +31,12 @@ struct EpochScore {
   int nis_count = 0, detected_slips = 0;
   double step_us = 0.0;
   double nees = 0.0;  // of the antennas' relative position (3 degrees of freedom)
+  // Observations (run's summary.json): the epoch lies in an observation window, or in a slew to
+  // or from one; the relative error of the payload reference points (what the telescope's focal
+  // geometry needs: the LRF's end points) along the line of sight and across it [m].
+  bool in_observation = false, in_slew = false;
+  double payload_los_m = 0.0, payload_lateral_m = 0.0;
+  const char* laser = "";  // "used", "rejected" or "" (no range at this epoch, or not fused)
 };
 
 struct Replay {
@@ -39,6 +45,7 @@ struct Replay {
   std::vector<EpochScore> epochs;
   double first_fix_s = -1.0;  // time to first fix after the cold start [s]
   double start_s = -1.0;      // the filter's first epoch [s after the scenario start]
+  std::vector<double> impulse_t_s;  // commanded impulses applied [s after the scenario start]
 };
 
 /// The self-contained HTML page (inline SVG) of the replays: per filter, the relative position

@@ -1,0 +1,260 @@
+#include "nav/nav_score.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include "core/rtn_frame.hpp"
+
+namespace visors::nav_app {
+namespace {
+
+using nav::Craft;
+using Json = nlohmann::json;
+
+// A full fix is wrong when any of the epoch's double differences of the fixed SDCP ambiguities
+// differs from the truth's by more than half a cycle.
+bool wrong_fix(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
+               const std::map<int, std::pair<double, double>>& truth) {
+  const auto slots = filter.sdcp_slots();
+  const auto state_of = [&slots](int prn) {
+    for (int i = 0; i < slots.count; ++i) {
+      if (slots.prn[static_cast<std::size_t>(i)] == prn) return slots.state[static_cast<std::size_t>(i)];
+    }
+    return -1;
+  };
+  const auto true_sd = [&truth](int prn) {
+    const auto it = truth.find(prn);
+    return it == truth.end() ? NAN : it->second.second - it->second.first;
+  };
+  const int reference = r.dd_prns[0];
+  for (int j = 1; j <= r.double_differences; ++j) {
+    const int prn = r.dd_prns[static_cast<std::size_t>(j)];
+    const double estimated = filter.x_fixed()(state_of(prn)) - filter.x_fixed()(state_of(reference));
+    const double expected = true_sd(prn) - true_sd(reference);
+    if (std::isfinite(expected) && std::abs(estimated - expected) > 0.5) return true;
+  }
+  return false;
+}
+
+// Normalised estimation error squared of the antennas' relative position, r_osc + C_osc p_osc -
+// r_dsc - C_dsc p_dsc, with its covariance J P J' (J over the scaled states).
+double antenna_nees(const nav::NavMatrix& P, const Eigen::Vector3d& error_gcrf, const Eigen::Matrix3d& c_dsc,
+                    const Eigen::Matrix3d& c_osc) {
+  Eigen::Matrix<double, 3, nav::kNavStates> J = Eigen::Matrix<double, 3, nav::kNavStates>::Zero();
+  J.block<3, 3>(0, nav::state::position(Craft::kOsc)) = Eigen::Matrix3d::Identity();
+  J.block<3, 3>(0, nav::state::position(Craft::kDsc)) = -Eigen::Matrix3d::Identity();
+  J.block<3, 3>(0, nav::state::phase_center(Craft::kOsc)) = nav::state::kPhaseCenterUnit * c_osc;
+  J.block<3, 3>(0, nav::state::phase_center(Craft::kDsc)) = -nav::state::kPhaseCenterUnit * c_dsc;
+  const Eigen::Matrix3d S = J * P * J.transpose();
+  return error_gcrf.dot(S.ldlt().solve(error_gcrf));
+}
+
+// Where t_s lies against the run's observations: in a window, or in the slew to it or back from
+// it (taken as long as the slew to it: the same angle at the same rate).
+void locate(const RunInputs& in, double t_s, EpochScore& e) {
+  for (const ObservationSpan& o : in.observations) {
+    const double lead = o.start_s - o.slew_start_s;
+    e.in_observation = e.in_observation || (t_s >= o.start_s && t_s <= o.end_s);
+    e.in_slew = e.in_slew || (t_s >= o.slew_start_s && t_s < o.start_s) || (t_s > o.end_s && t_s <= o.end_s + lead);
+  }
+}
+
+// The relative error of the payload reference points (the estimate's nominal levers against the
+// true ones), split along the true line of sight OSC -> DSC and across it.
+void score_payload(const Eigen::Vector3d& relative_com_error_gcrf, const std::array<CraftTruth, 2>& truth,
+                   const RunInputs& in, EpochScore& e) {
+  const Eigen::Matrix3d c_dsc = truth[0].body_to_gcrf.toRotationMatrix();
+  const Eigen::Matrix3d c_osc = truth[1].body_to_gcrf.toRotationMatrix();
+  const nav::LaserRangeGeometry nominal = laser_geometry(truth[0].body_to_gcrf, truth[1].body_to_gcrf);
+  const Eigen::Vector3d p_dsc = truth[0].x_gcrf.r + c_dsc * (nominal.dsc_lever_body_m + in.payload_lever_error_body_m[0]);
+  const Eigen::Vector3d p_osc = truth[1].x_gcrf.r + c_osc * (nominal.osc_lever_body_m + in.payload_lever_error_body_m[1]);
+  const Eigen::Vector3d los = (p_dsc - p_osc).normalized();
+  // (est_osc + C_osc l) - (est_dsc + C_dsc l) - (p_osc - p_dsc), l the nominal levers.
+  const Eigen::Vector3d error = relative_com_error_gcrf - c_osc * in.payload_lever_error_body_m[1] +
+                                c_dsc * in.payload_lever_error_body_m[0];
+  e.payload_los_m = -error.dot(los);  // > 0: the estimated OSC -> DSC distance is too long
+  e.payload_lateral_m = (error - error.dot(los) * los).norm();
+}
+
+}  // namespace
+
+EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r, const RunInputs& in, double t_s,
+                 Craft local) {
+  EpochScore e;
+  e.t_s = t_s;
+  locate(in, t_s, e);
+  const bool full = r.fix_applied && r.fix.outcome == nav::FixOutcome::kFixed;
+  e.status = full ? "fixed" : r.fix_applied ? "partial" : "float";
+  const nav::NavVector& x = r.fix_applied ? filter.x_fixed() : filter.x();
+  const auto truth = in.truth.find(key_ms(t_s));
+  if (truth == in.truth.end()) return e;
+  const core::StateVector& dsc = truth->second[0].x_gcrf;
+  const core::StateVector& osc = truth->second[1].x_gcrf;
+  const core::StateVector est_dsc = nav::CdgpsFilter::centre_of_mass(x, Craft::kDsc);
+  const core::StateVector est_osc = nav::CdgpsFilter::centre_of_mass(x, Craft::kOsc);
+  const Eigen::Matrix3d to_rtn = core::gcrf_to_rtn_matrix(dsc);
+  const Eigen::Vector3d relative_error_gcrf = (est_osc.r - est_dsc.r) - (osc.r - dsc.r);
+  e.relative_position_rtn_m = to_rtn * relative_error_gcrf;
+  e.relative_velocity_rtn_mps = to_rtn * ((est_osc.v - est_dsc.v) - (osc.v - dsc.v));
+  score_payload(relative_error_gcrf, truth->second, in, e);
+  // Antenna error = (estimated - true centre of mass) + C (estimated phase-centre error + true
+  // minus nominal centre of mass): the estimate's antenna is CoM + C (arp + pco + p), the truth's
+  // CoM_true + C (arp + pco - delta).
+  const Eigen::Matrix3d c_dsc = truth->second[0].body_to_gcrf.toRotationMatrix();
+  const Eigen::Matrix3d c_osc = truth->second[1].body_to_gcrf.toRotationMatrix();
+  const auto lever_error = [&](const Eigen::Matrix3d& c, Craft craft, std::size_t k) {
+    const Eigen::Vector3d p = nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft));
+    return Eigen::Vector3d(c * (p + in.com_knowledge_error_body_m[k]));
+  };
+  const Eigen::Vector3d com_offsets = lever_error(c_osc, Craft::kOsc, 1) - lever_error(c_dsc, Craft::kDsc, 0);
+  e.relative_antenna_rtn_m = e.relative_position_rtn_m + to_rtn * com_offsets;
+  e.nees = antenna_nees(r.fix_applied ? filter.P_fixed() : filter.P(), to_rtn.transpose() * e.relative_antenna_rtn_m,
+                        c_dsc, c_osc);
+  const core::StateVector& own_truth = local == Craft::kDsc ? dsc : osc;
+  const core::StateVector& own = local == Craft::kDsc ? est_dsc : est_osc;
+  e.absolute_position_m = (own.r - own_truth.r).norm();
+  e.absolute_velocity_mps = (own.v - own_truth.v).norm();
+  if (full) {
+    const auto phases = in.phase_truth.find(key_ms(t_s));
+    e.wrong_fix = phases != in.phase_truth.end() && wrong_fix(filter, r, phases->second);
+  }
+  e.empirical_dsc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kDsc));
+  e.empirical_osc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kOsc));
+  e.double_differences = r.double_differences;
+  e.satellites = r.sdcp_used;
+  e.graphic_used = r.graphic_used;
+  e.graphic_rejected = r.graphic_rejected;
+  e.sdcp_rejected = r.sdcp_rejected;
+  e.nis_sum = r.nis_sum;
+  e.nis_count = r.nis_count;
+  e.detected_slips = r.detected_slips;
+  return e;
+}
+
+namespace {
+
+double rms(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (double x : v) sum += x * x;
+  return v.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(v.size()));
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size())))];
+}
+
+// Error statistics over a window of epochs.
+struct WindowStats {
+  std::vector<double> rel_pos, rel_antenna, rel_vel, abs_pos, abs_vel;
+  double nees_sum = 0.0;
+  double worst = 0.0, worst_antenna = 0.0;
+  double worst_outside_slews = 0.0, worst_antenna_outside_slews = 0.0;
+  int fixed = 0, partial = 0, wrong = 0;
+
+  void add(const EpochScore& e) {
+    rel_pos.push_back(e.relative_position_rtn_m.norm());
+    rel_antenna.push_back(e.relative_antenna_rtn_m.norm());
+    rel_vel.push_back(e.relative_velocity_rtn_mps.norm());
+    abs_pos.push_back(e.absolute_position_m);
+    abs_vel.push_back(e.absolute_velocity_mps);
+    worst = std::max(worst, e.relative_position_rtn_m.norm());
+    worst_antenna = std::max(worst_antenna, e.relative_antenna_rtn_m.norm());
+    if (!e.in_slew) {
+      worst_outside_slews = std::max(worst_outside_slews, e.relative_position_rtn_m.norm());
+      worst_antenna_outside_slews = std::max(worst_antenna_outside_slews, e.relative_antenna_rtn_m.norm());
+    }
+    fixed += std::string_view(e.status) == "fixed" ? 1 : 0;
+    partial += std::string_view(e.status) == "partial" ? 1 : 0;
+    wrong += e.wrong_fix ? 1 : 0;
+    nees_sum += e.nees;
+  }
+
+  [[nodiscard]] Json json() const {
+    const double n = static_cast<double>(rel_pos.size());
+    return Json{{"epochs", rel_pos.size()},
+                {"fix_rate", n > 0 ? fixed / n : 0.0},
+                {"partial_rate", n > 0 ? partial / n : 0.0},
+                {"wrong_fix_epochs", wrong},
+                {"relative_position_rms_m", rms(rel_pos)},
+                {"relative_position_worst_m", worst},
+                {"relative_antenna_rms_m", rms(rel_antenna)},
+                {"relative_antenna_worst_m", worst_antenna},
+                {"relative_position_worst_outside_slews_m", worst_outside_slews},
+                {"relative_antenna_worst_outside_slews_m", worst_antenna_outside_slews},
+                {"relative_velocity_rms_mps", rms(rel_vel)},
+                {"absolute_position_rms_m", rms(abs_pos)},
+                {"absolute_velocity_rms_mps", rms(abs_vel)},
+                {"antenna_nees_mean", n > 0 ? nees_sum / n : 0.0}};
+  }
+};
+
+// The payload points' relative error during the observations, and the laser ranges.
+struct ObservationStats {
+  std::vector<double> los, lateral;
+  int laser_used = 0, laser_rejected = 0;
+
+  void add(const EpochScore& e) {
+    const std::string_view laser(e.laser);
+    laser_used += laser == "used" ? 1 : 0;
+    laser_rejected += laser == "rejected" ? 1 : 0;
+    if (!e.in_observation) return;
+    los.push_back(e.payload_los_m);
+    lateral.push_back(e.payload_lateral_m);
+  }
+
+  [[nodiscard]] Json json() const {
+    return Json{{"epochs", los.size()},
+                {"payload_los_rms_m", rms(los)},
+                {"payload_los_worst_m", los.empty() ? 0.0 : std::abs(*std::max_element(los.begin(), los.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }))},
+                {"payload_lateral_rms_m", rms(lateral)},
+                {"laser_ranges_used", laser_used},
+                {"laser_ranges_rejected", laser_rejected}};
+  }
+};
+
+constexpr double kConvergenceS = 300.0;  // the "converged" window starts this long after the first fix [s]
+
+}  // namespace
+
+// The figures of the acceptance over the epochs after the first fix, and over those from
+// kConvergenceS later (the velocity takes minutes to converge after a cold start).
+Json summarise(const Replay& r) {
+  WindowStats after_fix, converged;
+  ObservationStats observations;
+  std::vector<double> steps;
+  int slips = 0, nis_count = 0, wrong_run = 0, longest_wrong_run = 0;
+  double nis = 0.0, outage_end_s = -1.0, refix_s = -1.0;
+  for (const EpochScore& e : r.epochs) {
+    if (std::string_view(e.status) == "outage") outage_end_s = e.t_s + 1.0;
+    if (outage_end_s >= 0.0 && refix_s < 0.0 && std::string_view(e.status) == "fixed") refix_s = e.t_s - outage_end_s;
+    wrong_run = e.wrong_fix ? wrong_run + 1 : 0;
+    longest_wrong_run = std::max(longest_wrong_run, wrong_run);
+    steps.push_back(e.step_us);
+    slips += e.detected_slips;
+    nis += e.nis_sum;
+    nis_count += e.nis_count;
+    observations.add(e);
+    if (r.first_fix_s < 0.0 || e.t_s - r.start_s < r.first_fix_s) continue;
+    after_fix.add(e);
+    if (e.t_s - r.start_s >= r.first_fix_s + kConvergenceS) converged.add(e);
+  }
+  return Json{{"filter", r.name},
+              {"epochs", r.epochs.size()},
+              {"start_s", r.start_s},
+              {"time_to_first_fix_s", r.first_fix_s},
+              {"after_first_fix", after_fix.json()},
+              {"converged", converged.json()},
+              {"observations", observations.json()},
+              {"impulses_applied", r.impulse_t_s.size()},
+              {"detected_slips", slips},
+              {"longest_wrong_fix_s", longest_wrong_run},
+              {"refix_after_outage_s", refix_s},
+              {"nis_mean", nis_count > 0 ? nis / nis_count : 0.0},
+              {"step_us", {{"median", percentile(steps, 0.5)}, {"p99_9", percentile(steps, 0.999)}}}};
+}
+
+}  // namespace visors::nav_app
