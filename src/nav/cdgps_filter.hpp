@@ -14,7 +14,9 @@
 //    it; a satellite unmeasured for longer than slot_timeout_s is released (a lost crosslink epoch
 //    or a short gap keeps the ambiguity, and with it a held integer). A phase flagged with an
 //    unresolved half cycle is not used (the receiver flags the loss of lock when it resolves it).
-// 2. Sequential scalar updates (nav/scalar_update.hpp, Joseph form): GRAPHIC first, then SDCP,
+// 2. Sequential scalar updates (nav/scalar_update.hpp, Joseph form): GRAPHIC first, then the SD
+//    code of the common satellites averaged into one scalar (those within the gate of the
+//    median's innovation; it fixes the clock difference, CdgpsSettings::sd_code), then SDCP,
 //    each predicted once per epoch at the prior state and linearised there (the innovation of a
 //    later scalar is corrected by h (x - x_prior)), in consensus order: the scalar whose
 //    innovation is the epoch's median first, so that a slipped or blundered one cannot capture
@@ -71,6 +73,7 @@ struct CdgpsEpochReport {
   const char* reason = "";     // "not_initialised", "time_tag", "dsc", "osc" (the failing input)
   int graphic_used = 0, graphic_rejected = 0;
   int sdcp_used = 0, sdcp_rejected = 0;
+  int sd_code_used = 0, sd_code_rejected = 0;  // satellites in the averaged SD code; outliers left out
   int new_ambiguities = 0;     // slots (re)initialised: rises, flagged and detected slips
   int detected_slips = 0;      // SDCP gate failures (slips the indicator did not flag)
   int missing_ephemeris = 0;

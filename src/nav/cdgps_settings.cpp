@@ -29,6 +29,7 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
                 {"graphic_sigma_m", s.graphic_sigma_m},
                 {"sdcp_sigma_m", s.sdcp_sigma_m},
                 {"gate_sigmas", s.gate_sigmas},
+                {"sd_code_sigma_m", s.sd_code_sigma_m},
                 {"hold_variance_cycles2", s.hold_variance_cycles2},
                 {"impulse_magnitude_sigma", s.impulse_magnitude_sigma},
                 {"impulse_direction_sigma_deg", s.impulse_direction_sigma_deg}};

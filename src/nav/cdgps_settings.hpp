@@ -46,6 +46,14 @@ struct CdgpsSettings {
   double graphic_sigma_m = 0.3;
   double sdcp_sigma_m = 0.00283;           // sqrt(2) x 2 mm
   double gate_sigmas = 5.0;                // scalar innovation gate [innovation sigmas]
+  // The SD code (nav/gps_measurement_model.hpp) of the satellites both receivers track, averaged
+  // into one scalar per epoch: it ties the clock difference to the codes. Without it the remote
+  // clock is set by the cold start and the float SD ambiguities' common part, and wanders as
+  // satellites are handed over; c dt off by 40 m puts the remote antenna 7.6 km/s x 133 ns = 1 mm
+  // along-track (24 h: an along-track bias growing to 1.5 mm, NEES 13; after a 5-min outage:
+  // 1 mm for the rest of the orbit). sqrt(2) x the 0.2 m code noise, per satellite.
+  bool sd_code = true;
+  double sd_code_sigma_m = 0.3;
   // Elevation weighting: each receiver's code and phase sigma divided by the sine of the
   // satellite's elevation above the antenna plane, floored at min_weighting_elevation_deg (a
   // receiver whose noise grows at low elevation; gnss-sim's elevation_dependent_noise). Off by

@@ -30,13 +30,19 @@ MeasurementPrediction predict_graphic(const NavVector& x, Craft craft, const Ran
   return out;
 }
 
-MeasurementPrediction predict_sdcp(const NavVector& x, const RangePrediction& osc, const RangePrediction& dsc,
-                                   int n_state, double wavelength_m) {
+MeasurementPrediction predict_sd_code(const NavVector& x, const RangePrediction& osc, const RangePrediction& dsc) {
   MeasurementPrediction out;
   out.value_m = (osc.range_m - dsc.range_m) + (x(state::clock(Craft::kOsc)) - x(state::clock(Craft::kDsc))) -
-                (osc.satellite_clock_m - dsc.satellite_clock_m) + wavelength_m * x(n_state);
+                (osc.satellite_clock_m - dsc.satellite_clock_m);
   add_range_partials(out.h, Craft::kOsc, osc, 1.0);
   add_range_partials(out.h, Craft::kDsc, dsc, -1.0);
+  return out;
+}
+
+MeasurementPrediction predict_sdcp(const NavVector& x, const RangePrediction& osc, const RangePrediction& dsc,
+                                   int n_state, double wavelength_m) {
+  MeasurementPrediction out = predict_sd_code(x, osc, dsc);
+  out.value_m += wavelength_m * x(n_state);
   out.h(n_state) = wavelength_m;
   return out;
 }

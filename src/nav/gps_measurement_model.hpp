@@ -9,6 +9,9 @@
 //   the two transmission instants, which is kept; the differential ionosphere over 40 m and the
 //   phase wind-up of identical attitudes are neglected):
 //     dPhi = rho_osc - rho_dsc + c dt_osc - c dt_dsc - (c dt^j(t_tx,osc) - c dt^j(t_tx,dsc)) + lambda N_j
+//   SD code, OSC minus DSC (the same without the ambiguity; the differential ionosphere, +I
+//   here, is as negligible): dP = dPhi - lambda N_j. It is what fixes the clock difference in
+//   absolute terms: the SDCP alone leave it in the common part of the float SD ambiguities.
 //
 // The rows are partial derivatives with respect to the scaled states (nav/navigation_state.hpp:
 // velocity in mm/s, phase-centre error in mm): each SI partial times unit(state).
@@ -31,6 +34,9 @@ ReceiverEstimate receiver_estimate(const NavVector& x, Craft craft);
 
 /// GRAPHIC of `craft`'s receiver from its range prediction and the state of its B slot.
 MeasurementPrediction predict_graphic(const NavVector& x, Craft craft, const RangePrediction& range, int b_state);
+
+/// SD code (OSC minus DSC) from both range predictions of the same satellite.
+MeasurementPrediction predict_sd_code(const NavVector& x, const RangePrediction& osc, const RangePrediction& dsc);
 
 /// SDCP (OSC minus DSC) from both range predictions of the same satellite and the state of its
 /// N slot [cycles], wavelength lambda [m].

@@ -7,8 +7,9 @@
 // single-difference ranges (channels_truth.csv) to the files' rounding: 0.1 mm on the ranges and
 // on each position axis (gnss_simulation.hpp), up to ~0.27 mm on a single difference, ~0.07 mm
 // RMS. Receiver clocks drawn 300 km (1 ms) off make any error in how the reception instant moves
-// the antenna visible (1 ms at 7.6 km/s is 7.6 m; a wrong frame velocity, omega x r ~ 500 m/s,
-// 0.5 m; the neglected acceleration, 4 um).
+// the antenna visible: moving it with the Earth-fixed instead of the inertial velocity (omega x r,
+// ~500 m/s) shows as 3 cm in these single differences (tried once); the model's neglected
+// acceleration over 1 ms is 4 um.
 #include <gtest/gtest.h>
 
 #include <array>

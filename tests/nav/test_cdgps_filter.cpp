@@ -99,9 +99,17 @@ struct Impulse {
   bool told = false;  // the filter is told the commanded impulse
 };
 
-RunOutcome simulate(int epochs, int slip_epoch = -1, const Impulse& impulse = {}, const Degraded& degraded = {}) {
+// The remote (OSC) receiver's clock at initialisation, and the SD code switch.
+struct RemoteClock {
+  double initial_error_m = -15.0;  // estimate minus truth [m]
+  bool sd_code = true;
+};
+
+RunOutcome simulate(int epochs, int slip_epoch = -1, const Impulse& impulse = {}, const Degraded& degraded = {},
+                    const RemoteClock& remote = {}) {
   Simulation sim;
   CdgpsSettings settings;
+  settings.sd_code = remote.sd_code;
   settings.graphic_sigma_m = 0.1;  // no broadcast error here: (0.2 m code + 2 mm phase) / 2
   if (degraded.on) {
     sim.phase_sigma_m = 0.05;
@@ -114,7 +122,7 @@ RunOutcome simulate(int epochs, int slip_epoch = -1, const Impulse& impulse = {}
   core::GpsTime t = epoch();
   const Eigen::Vector3d dr(4.0, -3.0, 2.5), dv(0.03, 0.02, -0.04);
   filter.initialise(t, {sim.rx[0].x.r + dr, sim.rx[0].x.v + dv}, {sim.rx[1].x.r - dr, sim.rx[1].x.v + dv},
-                    sim.rx[0].clock_m + 20.0, sim.rx[1].clock_m - 15.0);
+                    sim.rx[0].clock_m + 20.0, sim.rx[1].clock_m + remote.initial_error_m);
   RunOutcome out;
   double nis = 0.0;
   int nis_count = 0;
@@ -195,6 +203,21 @@ TEST_F(CdgpsFilterRun, StaysFixedAfterTheFirstFix) { EXPECT_GE(result->fixed_epo
 TEST_F(CdgpsFilterRun, HoldsEachFixOnceNotEveryEpoch) {
   EXPECT_GT(result->held_epochs, 0);
   EXPECT_LT(result->held_epochs, result->fixed_epochs / 5);
+}
+
+// The remote clock is not measured by the local GRAPHIC: the SDCP leave it in the common part of
+// the float SD ambiguities, and an error of c dt places the remote antenna v dt along-track at its
+// reception instant (7.6 km/s x 400 m / c = 1 cm). The averaged SD code ties it to the codes
+// (CdgpsSettings::sd_code). Started 400 m off:
+TEST(CdgpsFilterRemoteClock, SdCodeRemovesTheAlongTrackErrorOfAWrongRemoteClock) {
+  const RunOutcome r = simulate(300, -1, {}, {}, {400.0, true});
+  EXPECT_LT(r.relative_error_m, 0.003);  // measured 1.8 mm (a single epoch), 10.5 without
+}
+
+// The control: without the SD code, the 1 cm of along-track error stays.
+TEST(CdgpsFilterRemoteClock, WithoutSdCodeTheWrongRemoteClockBiasesTheBaseline) {
+  const RunOutcome r = simulate(300, -1, {}, {}, {400.0, false});
+  EXPECT_GT(r.relative_error_m, 0.006);  // measured 10.5 mm
 }
 
 // Absolute: GRAPHIC (10 cm) over ten minutes, no ephemeris error here: better than a metre.
