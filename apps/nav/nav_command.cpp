@@ -141,8 +141,14 @@ nav::CdgpsFilter make_filter(const RunInputs& in, Craft local, const ReplaySetti
   settings.local = local;
   settings.elevation_weighting = r.elevation_weighting;
   settings.ambiguity_resolution = r.ambiguity_resolution;
-  // The receiver's phase noise is its specification, known on board: the SDCP's is sqrt(2) of it.
-  settings.sdcp_sigma_m = std::sqrt(2.0) * in.scenario.gnss.receiver.phase_sigma_m;
+  // The receiver's noise and multipath are its specification, known on board (characterised on
+  // the ground): a single difference has sqrt(2) of each receiver's; GRAPHIC half the code's
+  // multipath on top of the default's broadcast-error allowance. (Multipath is correlated over
+  // multipath_tau_s: a white sigma of the same size is the filter's approximation.)
+  const auto& rx = in.scenario.gnss.receiver;
+  settings.sdcp_sigma_m = std::sqrt(2.0) * std::hypot(rx.phase_sigma_m, rx.phase_multipath_m);
+  settings.sd_code_sigma_m = std::max(settings.sd_code_sigma_m, std::sqrt(2.0) * std::hypot(rx.code_sigma_m, rx.code_multipath_m));
+  settings.graphic_sigma_m = std::hypot(settings.graphic_sigma_m, 0.5 * rx.code_multipath_m);
   auto created = nav::CdgpsFilter::create(settings, onboard_model(in.scenario.dsc, "dsc"), onboard_model(in.scenario.osc, "osc"));
   if (!created) throw InputError("filter settings: " + created.error().describe());
   return std::move(created).value();
