@@ -14,7 +14,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$work"
 for seed in $(seq 1 "$n"); do
   scenario="$work/seed$seed.toml"
-  sed -e "s/^seed = .*/seed = $seed/" -e "s/^duration_s = .*/duration_s = $duration/" \
+  sed -e "s/^seed = .*/seed = $seed/" -e "0,/^duration_s = .*/s//duration_s = $duration/" \
     "$root/data/scenarios/gnss_sim.toml" > "$scenario"
   "$build/apps/visors" gnss-sim "$scenario" --out "$work/run$seed" > /dev/null
   "$build/apps/visors" nav "$work/run$seed" --out "$work/nav$seed" > /dev/null
