@@ -22,6 +22,8 @@
 // is barely changed. A piece whose time lies in [slew_start_s, end_s + 150 s] of an observation
 // window is skipped (not commanded: no thrusting during a slew, the observation, or the 150 s
 // after it), and counted.
+// The pieces planned here are the random part only; keeping = true adds a tangential correction
+// to each at execution time (sim/gnss_simulation.hpp, sim/formation_keeping.hpp).
 //
 // Laser rangefinder epochs (enabled only, attitude = "campaign"): in each window, the first
 // epoch of the step_s grid at or after start_s, then every interval_s (a multiple of step_s)

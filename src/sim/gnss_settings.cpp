@@ -124,7 +124,8 @@ core::Result<bool> read_observations(const toml::table& table, GnssObservationSe
 
 core::Result<bool> read_maneuvers(const toml::table& table, GnssManeuverSettings& m) {
   const std::string sec = "gnss.maneuvers";
-  if (auto e = check_keys(table, sec, {"spacecraft", "bursts_per_orbit", "pieces_per_burst", "dv_mps", "first_burst_s"})) {
+  if (auto e = check_keys(table, sec, {"spacecraft", "bursts_per_orbit", "pieces_per_burst", "dv_mps", "first_burst_s",
+                                         "keeping"})) {
     return *e;
   }
   VISORS_TRY(spacecraft, string_at(table, sec, "spacecraft", m.spacecraft));
@@ -132,6 +133,7 @@ core::Result<bool> read_maneuvers(const toml::table& table, GnssManeuverSettings
   VISORS_TRY(pieces, integer_at(table, sec, "pieces_per_burst", m.pieces_per_burst));
   VISORS_TRY(dv, number_at(table, sec, "dv_mps", m.dv_mps));
   VISORS_TRY(first, number_at(table, sec, "first_burst_s", m.first_burst_s));
+  VISORS_TRY(keeping, bool_at(table, sec, "keeping", m.keeping));
   if (spacecraft != "none" && spacecraft != "osc" && spacecraft != "dsc" && spacecraft != "both") {
     return Error{sec + ".spacecraft", "must be \"none\", \"osc\", \"dsc\" or \"both\", got \"" + spacecraft + "\""};
   }
@@ -139,7 +141,7 @@ core::Result<bool> read_maneuvers(const toml::table& table, GnssManeuverSettings
   if (pieces < 1 || pieces > kMaxPiecesPerBurst) return Error{sec + ".pieces_per_burst", "must be in 1..100"};
   if (!(dv > 0.0 && dv <= 1.0)) return Error{sec + ".dv_mps", "must be in (0, 1] m/s"};
   if (!(first >= 0.0)) return Error{sec + ".first_burst_s", "must be >= 0 s"};
-  m = GnssManeuverSettings{spacecraft, static_cast<int>(bursts), static_cast<int>(pieces), dv, first};
+  m = GnssManeuverSettings{spacecraft, static_cast<int>(bursts), static_cast<int>(pieces), dv, first, keeping};
   return true;
 }
 
@@ -237,8 +239,8 @@ std::string gnss_settings_to_toml(const GnssSettings& s) {
   const auto& m = s.maneuvers;
   out += fmt::format(
       "[gnss.maneuvers]\nspacecraft = \"{}\"\nbursts_per_orbit = {}\npieces_per_burst = {}\ndv_mps = {:.17g}\n"
-      "first_burst_s = {:.17g}\n\n",
-      m.spacecraft, m.bursts_per_orbit, m.pieces_per_burst, m.dv_mps, m.first_burst_s);
+      "first_burst_s = {:.17g}\nkeeping = {}\n\n",
+      m.spacecraft, m.bursts_per_orbit, m.pieces_per_burst, m.dv_mps, m.first_burst_s, m.keeping);
   const auto& l = s.lrf;
   out += fmt::format("[gnss.lrf]\nenabled = {}\ninterval_s = {:.17g}\nsigma_m = {:.17g}\nbias_m = {:.17g}\n\n", l.enabled,
                      l.interval_s, l.sigma_m, l.bias_m);

@@ -32,6 +32,9 @@
 //   pieces_per_burst = 4     # pieces 46.5 s apart ([propulsion] spacing)
 //   dv_mps = 0.002           # commanded |dv| of each piece [m/s]
 //   first_burst_s = 900.0    # first piece of the first burst [s after t0]
+//   keeping = false          # true: each piece also carries a tangential formation-keeping
+//                            # correction from the TRUE states (perfect knowledge, a test harness:
+//                            # sim/formation_keeping.hpp) holding the initial mean ROE's dlambda
 //   (the propulsion model is the scenario's: [propulsion] and the spacecraft's mass_kg and
 //   propellant_kg, as in `visors run`)
 //   [gnss.lrf]               # laser rangefinder OSC -> DSC, during observations only
@@ -65,6 +68,7 @@ struct GnssManeuverSettings {
   int pieces_per_burst = 4;
   double dv_mps = 0.002;         // commanded |dv| per piece [m/s]
   double first_burst_s = 900.0;  // [s after t0]
+  bool keeping = false;          // tangential formation-keeping correction (sim/formation_keeping.hpp)
 };
 
 /// [gnss.lrf]: laser rangefinder between the true payload points, during observations.

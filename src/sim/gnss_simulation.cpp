@@ -25,6 +25,7 @@
 #include "sim/drag_area.hpp"
 #include "core/rtn_frame.hpp"
 #include "sim/formation_initial_state.hpp"
+#include "sim/formation_keeping.hpp"
 #include "sim/gnss_operations.hpp"
 #include "sim/gps_receiver.hpp"
 #include "sim/gps_satellite_truth.hpp"
@@ -218,6 +219,15 @@ core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) 
                     std::move(lrf_csv).value()};
 }
 
+// Formation keeping ([gnss.maneuvers] keeping = true): the tangential correction of each piece of
+// the current burst, per craft (0 = DSC, 1 = OSC), from sim::along_track_correction at the burst's
+// first commanded piece.
+struct KeepingBurst {
+  int burst = -1;                                 // the burst these are for; -1: none yet
+  std::array<double, 2> dv_t_per_piece_mps{0.0, 0.0};  // wanted, the craft's T axis [m/s]
+  std::int64_t clamped_pieces = 0;                // pieces whose correction was cut to fit
+};
+
 // The two spacecraft set up with their receivers, and the output files opened: the set-up of the
 // run, in the order its errors are reported.
 struct GnssRun {
@@ -226,6 +236,7 @@ struct GnssRun {
   std::optional<TruthFiles> files;
   std::optional<AttitudeProfile> profile;  // the observation windows (attitude = "campaign")
   GnssOperations operations;
+  KeepingBurst keeping;                    // the current burst's corrections (keeping = true)
 };
 
 core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std::filesystem::path& out_dir,
@@ -377,6 +388,66 @@ core::Result<bool> execute_piece(Craft& c, const GnssManeuverPiece& piece, const
   return true;
 }
 
+// Formation keeping: the per-piece tangential corrections of the burst whose first commanded
+// piece is pieces[first] (the crafts' states are at at_s[k] <= its time). The law reads the TRUE
+// states of both spacecraft at that instant (a copy of the other craft's truth is propagated
+// there, so that the truth's own steps are those of a run without keeping) and the tangential
+// part of the random pieces still to fly in the burst's pair; the deputy-equivalent dv_T (da and
+// dlambda, plus the relative eccentricity's share: sim/formation_keeping.hpp) is flown by the
+// OSC (+), the DSC (-: a chief impulse changes da with the opposite sign) or half by each ("both").
+core::Result<std::array<double, 2>> plan_keeping_burst(GnssRun& run, const CampaignScenario& s, std::size_t first,
+                                                       const std::array<double, 2>& at_s) {
+  const std::vector<GnssManeuverPiece>& pieces = run.operations.pieces;
+  const GnssManeuverPiece& head = pieces[first];
+  // The random pieces still to fly in the burst's pair (this burst, and the second of the pair
+  // when this is the first): the law targets the da after the pair, so the random pair flies as
+  // without keeping and the correction is the keeping alone. The correction goes on this burst's.
+  const int pair_last = head.burst % 2 == 0 ? head.burst + 1 : head.burst;
+  std::array<int, 2> count{0, 0};
+  std::array<double, 2> random_t_mps{0.0, 0.0};
+  for (std::size_t i = first; i < pieces.size() && pieces[i].burst <= pair_last; ++i) {
+    const auto k = static_cast<std::size_t>(pieces[i].craft);
+    if (pieces[i].burst == head.burst) ++count[k];
+    random_t_mps[k] += pieces[i].dv_rtn_mps(1);
+  }
+  std::array<core::StateVector, 2> x_gcrf;
+  for (std::size_t k = 0; k < 2; ++k) {
+    Craft& c = run.crafts[k];
+    x_gcrf[k] = c.x_gcrf;
+    if (at_s[k] < head.t_s) {
+      auto there = c.truth.propagator->propagate_to(s.t0 + at_s[k], c.x_gcrf, s.t0 + head.t_s);
+      if (!there.ok()) return core::Error{c.name + " truth", there.error().describe()};
+      x_gcrf[k] = *there;
+    }
+  }
+  const double planned_mps = random_t_mps[1] - random_t_mps[0];  // deputy-equivalent
+  const astro::RelativeOrbitalElements target = s.initial_roe_m / s.chief_mean.a;
+  const auto law = along_track_correction(x_gcrf[0], x_gcrf[1], target, planned_mps, s.gnc.gravity);
+  if (!law.ok()) return core::Error{"gnss.maneuvers.keeping", law.error().describe()};
+  const double dv_t_mps = law->dv_t_deputy_mps + eccentricity_tangential_dv_mps(*law, target, s.gnss.maneuvers.bursts_per_orbit);
+  const double share = count[0] > 0 && count[1] > 0 ? 0.5 : 1.0;
+  std::array<double, 2> per_piece{0.0, 0.0};
+  if (count[0] > 0) per_piece[0] = -share * dv_t_mps / count[0];
+  if (count[1] > 0) per_piece[1] = share * dv_t_mps / count[1];
+  return per_piece;
+}
+
+// The burst's tangential correction added to a piece's random command (its T axis), fitted into
+// the propulsion's impulse range at the craft's current mass: clamped so that |piece| stays under
+// the maximum impulse (the random part is kept whole; the remainder is not carried over, the next
+// burst's law sees what is left), and kept out of the band where the total would round below the
+// minimum impulse (a correction smaller than the minimum is fine: the total is what is executed).
+void add_keeping_correction(KeepingBurst& keeping, const Craft& c, const PropulsionSettings& propulsion,
+                            GnssManeuverPiece& piece) {
+  const double mass_kg = c.propulsion->mass_kg();
+  const double max_dv_mps = propulsion.max_impulse_ns / mass_kg * (1.0 - 1e-9);  // round-off on the boundary
+  const double min_dv_mps = (propulsion.min_impulse_ns + propulsion.quantum_ns) / mass_kg;
+  const double wanted_mps = keeping.dv_t_per_piece_mps[static_cast<std::size_t>(piece.craft)];
+  const double fitted_mps = fit_tangential_correction(piece.dv_rtn_mps, wanted_mps, min_dv_mps, max_dv_mps);
+  if (std::abs(fitted_mps - wanted_mps) > 1e-12) ++keeping.clamped_pieces;
+  piece.dv_rtn_mps(1) += fitted_mps;
+}
+
 // Both spacecraft one step ahead along their truth dynamics, from the epoch t_s to t_s + step_s,
 // with the maneuver pieces of [t_s, t_s + step_s) executed at their times (so an epoch's truth
 // row is the state before a piece fired at that very epoch). `next_piece` walks the plan.
@@ -399,7 +470,16 @@ core::Result<bool> propagate_crafts(GnssRun& run, const CampaignScenario& s, dou
       if (auto ok = advance(piece.craft, piece.t_s); !ok) return ok.error();
     }
     Craft& c = run.crafts[static_cast<std::size_t>(piece.craft)];
-    if (auto ok = execute_piece(c, piece, s, attitude, run.files->maneuvers.get()); !ok) return ok.error();
+    GnssManeuverPiece commanded = piece;
+    if (s.gnss.maneuvers.keeping) {
+      if (run.keeping.burst != piece.burst) {
+        auto burst = plan_keeping_burst(run, s, next_piece, at_s);
+        if (!burst.ok()) return burst.error();
+        run.keeping = KeepingBurst{piece.burst, *burst, run.keeping.clamped_pieces};
+      }
+      add_keeping_correction(run.keeping, c, s.propulsion, commanded);
+    }
+    if (auto ok = execute_piece(c, commanded, s, attitude, run.files->maneuvers.get()); !ok) return ok.error();
   }
   for (int k = 0; k < 2; ++k) {
     if (auto ok = advance(k, end_s); !ok) return ok.error();
@@ -444,6 +524,7 @@ nlohmann::json run_summary(const CampaignScenario& s, const GnssRun& run, std::i
   summary["observation_period_s"] = run.operations.period_s;
   summary["maneuvers"] = {{"dsc", run.crafts[0].maneuvers}, {"osc", run.crafts[1].maneuvers}};
   summary["maneuver_pieces_skipped"] = run.operations.skipped_pieces;
+  if (s.gnss.maneuvers.keeping) summary["keeping_clamped_pieces"] = run.keeping.clamped_pieces;
   summary["lrf_measurements"] = run.operations.lrf_epochs.size();
   summary["t0"] = {{"iso", s.t0.format(core::TimeScale::kGps, 3)}, {"week", s.t0.week()}, {"seconds_of_week", s.t0.seconds_of_week()}};
   const auto vector = [](const Eigen::Vector3d& x) { return nlohmann::json::array({x.x(), x.y(), x.z()}); };

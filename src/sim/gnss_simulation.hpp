@@ -23,7 +23,7 @@
 // boresight [m, unit]; "observations": [{"slew_start_s", "start_s", "end_s"}, ...] (empty unless
 // attitude = "campaign"), "observation_period_s", "maneuvers": {"dsc": n, "osc": n} executed
 // pieces, "maneuver_pieces_skipped" (pieces x spacecraft not commanded: in an observation's
-// quiet time), "lrf_measurements").
+// quiet time), "lrf_measurements", and with keeping = true "keeping_clamped_pieces").
 //
 // Truth attitude. Every use of the attitude (truth.csv quaternion, the drag area of the truth
 // forces, the receiver's antenna pose and its angular velocity, the maneuvers' body frame, the
@@ -44,6 +44,22 @@
 // state before the impulse). A command the propulsion refuses is an error of the run, naming
 // gnss.maneuvers.dv_mps (impulse range, propellant). The mass change is not fed back to the truth
 // forces (as in `visors run`).
+//
+// Formation keeping ([gnss.maneuvers] keeping = true; false by default, the run is then the one
+// above). At the first commanded piece of each burst, sim::along_track_correction (sim/
+// formation_keeping.hpp: equations, sources) reads the TRUE states of both spacecraft at that
+// instant (a perfect-knowledge formation-keeping law, what a test harness for navigation needs;
+// the other craft's truth is propagated there on a copy) and gives the deputy-equivalent
+// tangential dv_T that brings the mean dlambda back to [formation] initial_roe_m's within an
+// orbit, net of the tangential part of the random pieces still to fly in the burst's pair, plus
+// sim::eccentricity_tangential_dv_mps's share that brings the mean (dex, dey) back within an orbit
+// (bursts_per_orbit >= 3). dv_T is flown by the OSC
+// (spacecraft = "osc"), as -dv_T by the DSC ("dsc"), or +dv_T/2 by the OSC and -dv_T/2 by the DSC
+// ("both"), spread evenly over the craft's commanded pieces of the burst and added along the T
+// axis of each piece's RTN command (the random part unchanged). Each piece's total goes through
+// the propulsion model as above; the correction is clamped so that the total stays within the
+// impulse range at the craft's current mass (summary "keeping_clamped_pieces"). maneuvers.csv's
+// commanded columns are the total (random + correction).
 //
 // maneuvers.csv, one row per executed piece and spacecraft, in time order (DSC first at equal
 // times):
