@@ -133,6 +133,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   nav->add_flag("--elevation-weighting", nav_options.elevation_weighting,
                 "weight code and phase by the elevation above the antenna plane (1/sin)");
+  nav->add_option("--crosslink-delay", nav_options.crosslink_delay_s,
+                  "the other receiver's epochs arrive S s late: each solution is also scored when it is in use")
+      ->capture_default_str();
   nav->add_flag("--float", nav_options.float_only, "no integer ambiguity resolution: the float filter alone");
   nav->add_flag("--no-laser", nav_options.no_laser, "do not fuse the run's laser ranges (lrf.csv)");
   std::vector<double> outage;

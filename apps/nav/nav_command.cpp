@@ -134,6 +134,7 @@ struct ReplaySettings {
   bool ambiguity_resolution = true;
   bool fuse_laser = true;
   ReplayFaults faults;
+  double latency_s = 0.0;  // the crosslink delay rounded up to whole epochs [s]
 };
 
 nav::CdgpsFilter make_filter(const RunInputs& in, Craft local, const ReplaySettings& r) {
@@ -175,11 +176,32 @@ const char* fuse_laser_range(nav::CdgpsFilter& f, const RunInputs& in, double t_
   return status == nav::ScalarUpdateStatus::kAccepted ? "used" : "rejected";
 }
 
+// The epoch's solution as it is used latency_s later (a crosslink delay: the joint epoch is
+// processed when the remote data arrive): carried by the mean dynamics, plus the commanded
+// impulses of that interval (their velocity change and the drift it adds by then; an impulse at
+// the epoch itself comes after its measurements), scored against the truth then.
+void score_forecast(nav::CdgpsFilter& f, const nav::CdgpsEpochReport& report, const RunInputs& in, double t_s,
+                    double latency_s, EpochScore& e) {
+  const double later = t_s + latency_s;
+  nav::NavVector x = f.forecast(report.fix_applied ? f.x_fixed() : f.x(), in.scenario.t0 + later);
+  const auto first = std::lower_bound(in.impulses.begin(), in.impulses.end(), t_s - 1e-9,
+                                      [](const CommandedImpulse& i, double t) { return i.t_s < t; });
+  for (auto i = first; i != in.impulses.end() && i->t_s < later - 1e-9; ++i) {
+    x.segment<3>(nav::state::velocity(i->craft)) += i->dv_gcrf_mps / nav::state::kVelocityUnit;
+    x.segment<3>(nav::state::position(i->craft)) += i->dv_gcrf_mps * (later - i->t_s);
+  }
+  const RelativeErrors errors = relative_errors(x, in, later);
+  if (!errors.valid) return;
+  e.forecast_antenna_rtn_m = errors.antenna_rtn_m;
+  e.forecast_velocity_rtn_mps = errors.velocity_rtn_mps;
+}
+
 // One filter over the run, driven by its own receiver's epochs.
 Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
   Replay out;
   out.local = local;
   out.name = local == Craft::kDsc ? "dsc" : "osc";
+  out.latency_s = r.latency_s;
   nav::CdgpsFilter f = make_filter(in, local, r);
   core::OnboardEarthFrame frame(uplinked_earth_orientation(in.scenario));
   ColdStart cold;
@@ -231,6 +253,7 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
     const char* laser = laser_here ? fuse_laser_range(f, in, t_s, *attitudes) : "";
     const double step_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     EpochScore e = score(f, report, in, t_s, local);
+    if (r.latency_s > 0.0) score_forecast(f, report, in, t_s, r.latency_s, e);
     e.step_us = step_us;
     e.laser = laser;
     if (out.first_fix_s < 0.0 && std::string_view(e.status) == "fixed") out.first_fix_s = t_s - out.start_s;
@@ -285,6 +308,13 @@ void print_overview(const Json& s) {
   }
   print_window("after the first fix", s["after_first_fix"]);
   print_window("from 300 s after it", s["converged"]);
+  if (s["latency_s"].get<double>() > 0.0) {
+    const Json& c = s["converged"];
+    fmt::print("    in use {:.0f} s later (crosslink delay), from 300 s after the first fix: antennas {:.2f} mm RMS (worst {:.2f}), "
+               "relative velocity {:.1f} um/s RMS\n",
+               s["latency_s"].get<double>(), 1e3 * c["forecast_antenna_rms_m"].get<double>(),
+               1e3 * c["forecast_antenna_worst_m"].get<double>(), 1e6 * c["forecast_velocity_rms_mps"].get<double>());
+  }
   const Json& o = s["observations"];
   if (o["epochs"].get<int>() > 0 || o["laser_ranges_used"].get<int>() > 0) {
     fmt::print("    observations: {} epochs, payload points {:.2f} mm RMS along the line of sight (worst {:.2f}), {:.2f} mm "
@@ -305,6 +335,9 @@ int run_nav_command(const NavOptions& options) {
     if (!(options.duration_s >= 0.0)) throw InputError("--duration: must be >= 0 s");
     if (!(options.crosslink_drop >= 0.0 && options.crosslink_drop <= 1.0)) throw InputError("--crosslink-drop: must be in [0, 1]");
     if (!(options.outage_s >= 0.0)) throw InputError("--outage: the duration must be >= 0 s");
+    if (!(options.crosslink_delay_s >= 0.0 && options.crosslink_delay_s <= 60.0)) {
+      throw InputError("--crosslink-delay: must be in [0, 60] s");
+    }
     auto inputs = read_run(options.run_dir);
     if (!inputs) throw InputError(inputs.error().describe());
     std::filesystem::create_directories(options.out);
@@ -313,7 +346,8 @@ int run_nav_command(const NavOptions& options) {
     std::vector<Replay> replays;
     for (Craft local : {Craft::kDsc, Craft::kOsc}) {
       const ReplaySettings settings{options.duration_s, options.elevation_weighting, !options.float_only, !options.no_laser,
-                                    {options.crosslink_drop, options.outage_start_s, options.outage_s}};
+                                    {options.crosslink_drop, options.outage_start_s, options.outage_s},
+                                    std::ceil(options.crosslink_delay_s - 1e-9)};
       replays.push_back(replay(inputs.value(), local, settings));
       const Json s = summarise(replays.back());
       write_epochs(replays.back(), options.out);

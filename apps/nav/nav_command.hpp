@@ -1,6 +1,6 @@
 #pragma once
 // `visors nav RUN_DIR [--out DIR] [--duration S] [--crosslink-drop P] [--outage START DURATION]
-//  [--elevation-weighting] [--float] [--no-laser]`: replays a `visors gnss-sim` run directory
+//  [--crosslink-delay S] [--elevation-weighting] [--float] [--no-laser]`: replays a `visors gnss-sim` run directory
 // through the on-board carrier-phase differential GPS filter (src/nav/cdgps_filter.hpp) of each
 // spacecraft at 1 Hz, with the run's commanded impulses and laser ranges (nav_inputs.hpp: what the
 // filter reads), and scores it against the run's truth (nav_score.hpp): relative position and
@@ -22,6 +22,8 @@ struct NavOptions {
   bool no_laser = false;             // the run's laser ranges (lrf.csv) not fused
   // Faults injected by the replay (the run's data unchanged otherwise).
   double crosslink_drop = 0.0;   // probability that the other receiver's epoch is lost
+  double crosslink_delay_s = 0.0;  // the other receiver's epochs arrive this late [s]: each joint
+                                   // epoch is processed then, and its solution scored also there
   double outage_start_s = -1.0;  // GPS outage of both receivers from this time [s]; < 0: none
   double outage_s = 0.0;         // its duration [s]
 };

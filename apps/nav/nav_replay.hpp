@@ -37,6 +37,11 @@ struct EpochScore {
   bool in_observation = false, in_slew = false;
   double payload_los_m = 0.0, payload_lateral_m = 0.0;
   const char* laser = "";  // "used", "rejected" or "" (no range at this epoch, or not fused)
+  // With a crosslink delay of L s the epoch's solution is in use L s later: its forecast to then
+  // (CdgpsFilter::forecast, plus the commanded impulses of those L s) against the truth then. The
+  // epoch's own errors when there is no delay.
+  Eigen::Vector3d forecast_antenna_rtn_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d forecast_velocity_rtn_mps = Eigen::Vector3d::Zero();
 };
 
 struct Replay {
@@ -46,6 +51,7 @@ struct Replay {
   double first_fix_s = -1.0;  // time to first fix after the cold start [s]
   double start_s = -1.0;      // the filter's first epoch [s after the scenario start]
   std::vector<double> impulse_t_s;  // commanded impulses applied [s after the scenario start]
+  double latency_s = 0.0;           // the crosslink delay rounded up to whole epochs [s]
 };
 
 /// The self-contained HTML page (inline SVG) of the replays: per filter, the relative position

@@ -64,7 +64,7 @@ void locate(const RunInputs& in, double t_s, EpochScore& e) {
 // The relative error of the payload reference points (the estimate's nominal levers against the
 // true ones), split along the true line of sight OSC -> DSC and across it.
 void score_payload(const Eigen::Vector3d& relative_com_error_gcrf, const std::array<CraftTruth, 2>& truth,
-                   const RunInputs& in, EpochScore& e) {
+                   const RunInputs& in, RelativeErrors& e) {
   const Eigen::Matrix3d c_dsc = truth[0].body_to_gcrf.toRotationMatrix();
   const Eigen::Matrix3d c_osc = truth[1].body_to_gcrf.toRotationMatrix();
   const nav::LaserRangeGeometry nominal = laser_geometry(truth[0].body_to_gcrf, truth[1].body_to_gcrf);
@@ -80,6 +80,34 @@ void score_payload(const Eigen::Vector3d& relative_com_error_gcrf, const std::ar
 
 }  // namespace
 
+RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, double t_s) {
+  RelativeErrors out;
+  const auto truth = in.truth.find(key_ms(t_s));
+  if (truth == in.truth.end()) return out;
+  out.valid = true;
+  const core::StateVector& dsc = truth->second[0].x_gcrf;
+  const core::StateVector& osc = truth->second[1].x_gcrf;
+  const core::StateVector est_dsc = nav::CdgpsFilter::centre_of_mass(x, Craft::kDsc);
+  const core::StateVector est_osc = nav::CdgpsFilter::centre_of_mass(x, Craft::kOsc);
+  out.gcrf_to_rtn = core::gcrf_to_rtn_matrix(dsc);
+  const Eigen::Vector3d relative_error_gcrf = (est_osc.r - est_dsc.r) - (osc.r - dsc.r);
+  out.position_rtn_m = out.gcrf_to_rtn * relative_error_gcrf;
+  out.velocity_rtn_mps = out.gcrf_to_rtn * ((est_osc.v - est_dsc.v) - (osc.v - dsc.v));
+  score_payload(relative_error_gcrf, truth->second, in, out);
+  // Antenna error = (estimated - true centre of mass) + C (estimated phase-centre error + true
+  // minus nominal centre of mass): the estimate's antenna is CoM + C (arp + pco + p), the truth's
+  // CoM_true + C (arp + pco - delta).
+  out.c_dsc = truth->second[0].body_to_gcrf.toRotationMatrix();
+  out.c_osc = truth->second[1].body_to_gcrf.toRotationMatrix();
+  const auto lever_error = [&](const Eigen::Matrix3d& c, Craft craft, std::size_t k) {
+    const Eigen::Vector3d p = nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft));
+    return Eigen::Vector3d(c * (p + in.com_knowledge_error_body_m[k]));
+  };
+  const Eigen::Vector3d com_offsets = lever_error(out.c_osc, Craft::kOsc, 1) - lever_error(out.c_dsc, Craft::kDsc, 0);
+  out.antenna_rtn_m = out.position_rtn_m + out.gcrf_to_rtn * com_offsets;
+  return out;
+}
+
 EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r, const RunInputs& in, double t_s,
                  Craft local) {
   EpochScore e;
@@ -88,34 +116,22 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   const bool full = r.fix_applied && r.fix.outcome == nav::FixOutcome::kFixed;
   e.status = full ? "fixed" : r.fix_applied ? "partial" : "float";
   const nav::NavVector& x = r.fix_applied ? filter.x_fixed() : filter.x();
-  const auto truth = in.truth.find(key_ms(t_s));
-  if (truth == in.truth.end()) return e;
-  const core::StateVector& dsc = truth->second[0].x_gcrf;
-  const core::StateVector& osc = truth->second[1].x_gcrf;
-  const core::StateVector est_dsc = nav::CdgpsFilter::centre_of_mass(x, Craft::kDsc);
-  const core::StateVector est_osc = nav::CdgpsFilter::centre_of_mass(x, Craft::kOsc);
-  const Eigen::Matrix3d to_rtn = core::gcrf_to_rtn_matrix(dsc);
-  const Eigen::Vector3d relative_error_gcrf = (est_osc.r - est_dsc.r) - (osc.r - dsc.r);
-  e.relative_position_rtn_m = to_rtn * relative_error_gcrf;
-  e.relative_velocity_rtn_mps = to_rtn * ((est_osc.v - est_dsc.v) - (osc.v - dsc.v));
-  score_payload(relative_error_gcrf, truth->second, in, e);
-  // Antenna error = (estimated - true centre of mass) + C (estimated phase-centre error + true
-  // minus nominal centre of mass): the estimate's antenna is CoM + C (arp + pco + p), the truth's
-  // CoM_true + C (arp + pco - delta).
-  const Eigen::Matrix3d c_dsc = truth->second[0].body_to_gcrf.toRotationMatrix();
-  const Eigen::Matrix3d c_osc = truth->second[1].body_to_gcrf.toRotationMatrix();
-  const auto lever_error = [&](const Eigen::Matrix3d& c, Craft craft, std::size_t k) {
-    const Eigen::Vector3d p = nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft));
-    return Eigen::Vector3d(c * (p + in.com_knowledge_error_body_m[k]));
-  };
-  const Eigen::Vector3d com_offsets = lever_error(c_osc, Craft::kOsc, 1) - lever_error(c_dsc, Craft::kDsc, 0);
-  e.relative_antenna_rtn_m = e.relative_position_rtn_m + to_rtn * com_offsets;
-  e.nees = antenna_nees(r.fix_applied ? filter.P_fixed() : filter.P(), to_rtn.transpose() * e.relative_antenna_rtn_m,
-                        c_dsc, c_osc);
-  const core::StateVector& own_truth = local == Craft::kDsc ? dsc : osc;
-  const core::StateVector& own = local == Craft::kDsc ? est_dsc : est_osc;
-  e.absolute_position_m = (own.r - own_truth.r).norm();
-  e.absolute_velocity_mps = (own.v - own_truth.v).norm();
+  const RelativeErrors relative = relative_errors(x, in, t_s);
+  if (!relative.valid) return e;
+  e.relative_position_rtn_m = relative.position_rtn_m;
+  e.relative_velocity_rtn_mps = relative.velocity_rtn_mps;
+  e.relative_antenna_rtn_m = relative.antenna_rtn_m;
+  e.payload_los_m = relative.payload_los_m;
+  e.payload_lateral_m = relative.payload_lateral_m;
+  e.forecast_antenna_rtn_m = relative.antenna_rtn_m;  // no delay: the epoch's own
+  e.forecast_velocity_rtn_mps = relative.velocity_rtn_mps;
+  e.nees = antenna_nees(r.fix_applied ? filter.P_fixed() : filter.P(), relative.gcrf_to_rtn.transpose() * e.relative_antenna_rtn_m,
+                        relative.c_dsc, relative.c_osc);
+  const std::array<CraftTruth, 2>& truth = in.truth.find(key_ms(t_s))->second;
+  const std::size_t own = local == Craft::kDsc ? 0 : 1;
+  const core::StateVector estimate = nav::CdgpsFilter::centre_of_mass(x, local);
+  e.absolute_position_m = (estimate.r - truth[own].x_gcrf.r).norm();
+  e.absolute_velocity_mps = (estimate.v - truth[own].x_gcrf.v).norm();
   if (full) {
     const auto phases = in.phase_truth.find(key_ms(t_s));
     e.wrong_fix = phases != in.phase_truth.end() && wrong_fix(filter, r, phases->second);
@@ -149,7 +165,7 @@ double percentile(std::vector<double> v, double p) {
 
 // Error statistics over a window of epochs.
 struct WindowStats {
-  std::vector<double> rel_pos, rel_antenna, rel_vel, abs_pos, abs_vel;
+  std::vector<double> rel_pos, rel_antenna, rel_vel, abs_pos, abs_vel, forecast_antenna, forecast_vel;
   double nees_sum = 0.0;
   double worst = 0.0, worst_antenna = 0.0;
   double worst_outside_slews = 0.0, worst_antenna_outside_slews = 0.0;
@@ -159,6 +175,8 @@ struct WindowStats {
     rel_pos.push_back(e.relative_position_rtn_m.norm());
     rel_antenna.push_back(e.relative_antenna_rtn_m.norm());
     rel_vel.push_back(e.relative_velocity_rtn_mps.norm());
+    forecast_antenna.push_back(e.forecast_antenna_rtn_m.norm());
+    forecast_vel.push_back(e.forecast_velocity_rtn_mps.norm());
     abs_pos.push_back(e.absolute_position_m);
     abs_vel.push_back(e.absolute_velocity_mps);
     worst = std::max(worst, e.relative_position_rtn_m.norm());
@@ -188,7 +206,10 @@ struct WindowStats {
                 {"relative_velocity_rms_mps", rms(rel_vel)},
                 {"absolute_position_rms_m", rms(abs_pos)},
                 {"absolute_velocity_rms_mps", rms(abs_vel)},
-                {"antenna_nees_mean", n > 0 ? nees_sum / n : 0.0}};
+                {"antenna_nees_mean", n > 0 ? nees_sum / n : 0.0},
+                {"forecast_antenna_rms_m", rms(forecast_antenna)},
+                {"forecast_antenna_worst_m", forecast_antenna.empty() ? 0.0 : *std::max_element(forecast_antenna.begin(), forecast_antenna.end())},
+                {"forecast_velocity_rms_mps", rms(forecast_vel)}};
   }
 };
 
@@ -246,6 +267,7 @@ Json summarise(const Replay& r) {
               {"epochs", r.epochs.size()},
               {"start_s", r.start_s},
               {"time_to_first_fix_s", r.first_fix_s},
+              {"latency_s", r.latency_s},
               {"after_first_fix", after_fix.json()},
               {"converged", converged.json()},
               {"observations", observations.json()},

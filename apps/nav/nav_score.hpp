@@ -10,6 +10,20 @@
 
 namespace visors::nav_app {
 
+/// The relative errors of a solution x (OSC minus DSC) against the truth at t_s [s after the
+/// scenario start], in the DSC's RTN frame: centres of mass, antennas (nav_replay.hpp), the
+/// payload points along and across the line of sight. valid = false when the truth has no t_s.
+struct RelativeErrors {
+  bool valid = false;
+  Eigen::Vector3d position_rtn_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_rtn_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d antenna_rtn_m = Eigen::Vector3d::Zero();
+  double payload_los_m = 0.0, payload_lateral_m = 0.0;
+  Eigen::Matrix3d gcrf_to_rtn = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d c_dsc = Eigen::Matrix3d::Identity(), c_osc = Eigen::Matrix3d::Identity();  // true attitudes
+};
+RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, double t_s);
+
 /// The epoch's errors of the filter's solution (the fixed one when the report applied a fix) at
 /// t_s [s after the scenario start], the filter running on `local`.
 EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& report, const RunInputs& in, double t_s,

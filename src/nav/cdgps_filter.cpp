@@ -96,6 +96,7 @@ struct CdgpsFilter::Impl {
   double innovation(const Scalar& m) const { return m.z - (m.p.value_m + m.p.h.dot(x - x_prior)); }
   void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
   void process(const CdgpsSettings& s, CdgpsEpochReport& report);
+  std::array<core::StateVector, 2> propagate_mean_states(NavVector& xs, double dt, const CdgpsSettings& s);
   void update_sd_code(const CdgpsSettings& s, CdgpsEpochReport& report);
   void resolve(const CdgpsSettings& s, CdgpsEpochReport& report);
   Eigen::Index rows_to_hold(Eigen::Index k, double hold_variance);
@@ -200,21 +201,42 @@ void CdgpsFilter::predict(core::GpsTime t) {
   Impl& m = *impl_;
   const double dt = t.seconds_since(m.t);
   if (!m.initialised || !(dt > 0.0)) return;
+  const std::array<core::StateVector, 2> before = m.propagate_mean_states(m.x, dt, settings_);
   for (int k = 0; k < 2; ++k) {
     const Craft c = kCrafts[k];
-    const core::StateVector x0 = centre_of_mass(m.x, c);
-    const Eigen::Vector3d a0 = state::kEmpiricalUnit * m.x.segment<3>(state::empirical_acceleration(c));
-    const MeanPropagation mean =
-        propagate_mean(m.models[static_cast<std::size_t>(k)], m.t, x0, a0, settings_.empirical_tau_s, dt, settings_.max_step_s);
-    m.x.segment<3>(state::position(c)) = mean.x_gcrf.r;
-    m.x.segment<3>(state::velocity(c)) = mean.x_gcrf.v / state::kVelocityUnit;
-    m.x.segment<3>(state::empirical_acceleration(c)) = mean.a_emp_rtn_mps2 / state::kEmpiricalUnit;
-    propagate_dynamic_block(m.P, c, x0, mean.x_gcrf, m.models[static_cast<std::size_t>(k)].gm(), dt, settings_);
+    propagate_dynamic_block(m.P, c, before[static_cast<std::size_t>(k)], centre_of_mass(m.x, c),
+                            m.models[static_cast<std::size_t>(k)].gm(), dt, settings_);
     m.P(state::clock(c), state::clock(c)) += settings_.clock_random_walk_m * settings_.clock_random_walk_m * dt;
   }
   m.P = (0.5 * (m.P + m.P.transpose())).eval();
   m.t = t;
   m.fixed_valid = false;  // the fixed solution was of the previous epoch
+}
+
+// Both spacecraft's position, velocity and empirical acceleration in x carried dt from the epoch
+// by RK4 under the on-board model plus the empirical acceleration (its Gauss-Markov mean);
+// returns the centres of mass before (for the covariance's transition).
+std::array<core::StateVector, 2> CdgpsFilter::Impl::propagate_mean_states(NavVector& xs, double dt, const CdgpsSettings& s) {
+  std::array<core::StateVector, 2> before;
+  for (int k = 0; k < 2; ++k) {
+    const Craft c = kCrafts[k];
+    before[static_cast<std::size_t>(k)] = centre_of_mass(xs, c);
+    const Eigen::Vector3d a0 = state::kEmpiricalUnit * xs.segment<3>(state::empirical_acceleration(c));
+    const MeanPropagation mean = propagate_mean(models[static_cast<std::size_t>(k)], t, before[static_cast<std::size_t>(k)],
+                                                a0, s.empirical_tau_s, dt, s.max_step_s);
+    xs.segment<3>(state::position(c)) = mean.x_gcrf.r;
+    xs.segment<3>(state::velocity(c)) = mean.x_gcrf.v / state::kVelocityUnit;
+    xs.segment<3>(state::empirical_acceleration(c)) = mean.a_emp_rtn_mps2 / state::kEmpiricalUnit;
+  }
+  return before;
+}
+
+NavVector CdgpsFilter::forecast(const NavVector& from, core::GpsTime t) {
+  Impl& m = *impl_;
+  NavVector out = from;
+  const double dt = t.seconds_since(m.t);
+  if (m.initialised && dt > 0.0) (void)m.propagate_mean_states(out, dt, settings_);
+  return out;
 }
 
 ScalarUpdateStatus CdgpsFilter::update_laser_range(double z_m, double sigma_m, const LaserRangeGeometry& geometry) {

@@ -134,6 +134,12 @@ class CdgpsFilter {
   [[nodiscard]] SlotList sdcp_slots() const;
   /// SI state of one spacecraft's centre of mass from x (or x_fixed()).
   [[nodiscard]] static core::StateVector centre_of_mass(const NavVector& x, Craft craft);
+
+  /// The solution `from` (x() or x_fixed()) carried from epoch() to t >= epoch() by the mean
+  /// dynamics of the time update, x and P untouched: what the estimate says of t when the
+  /// measurements of epoch() are the last processed (a crosslink delay, the control's instant).
+  /// Allocation-free.
+  [[nodiscard]] NavVector forecast(const NavVector& from, core::GpsTime t);
   [[nodiscard]] const CdgpsSettings& settings() const { return settings_; }
 
   CdgpsFilter(CdgpsFilter&&) noexcept;

@@ -60,6 +60,7 @@ class NavOperations : public ::testing::Test {
     const auto sim = run_visors("gnss-sim " + operations_scenario(dir->path(), "ops", 0.002) + " --out " + run.string());
     ASSERT_EQ(sim.exit_code, 0) << sim.err;
     nominal = replay(run, dir->path() / "nav", "");
+    delayed = replay(run, dir->path() / "delayed", "--crosslink-delay 2.5");
     // 5 cm phase: the float filter alone, with and without the laser ranges.
     const auto degraded = dir->path() / "degraded";
     const auto sim2 = run_visors("gnss-sim " + operations_scenario(dir->path(), "degraded", 0.05) + " --out " + degraded.string());
@@ -71,6 +72,7 @@ class NavOperations : public ::testing::Test {
   void SetUp() override {
     if (!have_navigation_file()) GTEST_SKIP() << "shared data not found: set VISORS_DATA_PATH to the shared data folder";
     ASSERT_FALSE(nominal.is_null());
+    ASSERT_FALSE(delayed.is_null());
     ASSERT_FALSE(with_laser.is_null());
     ASSERT_FALSE(without_laser.is_null());
   }
@@ -81,10 +83,11 @@ class NavOperations : public ::testing::Test {
     return n;
   }
   static TempDir* dir;
-  static nlohmann::json nominal, with_laser, without_laser;
+  static nlohmann::json nominal, delayed, with_laser, without_laser;
 };
 TempDir* NavOperations::dir = nullptr;
 nlohmann::json NavOperations::nominal;
+nlohmann::json NavOperations::delayed;
 nlohmann::json NavOperations::with_laser;
 nlohmann::json NavOperations::without_laser;
 
@@ -130,8 +133,24 @@ TEST_F(NavOperations, LaserCutsTheLineOfSightErrorWithoutAFix) {
   }
 }
 
+// A 2.5 s crosslink delay: each joint epoch's solution is in use 3 s later (whole epochs),
+// carried there by the forecast with the commanded impulses of those seconds; the antennas stay
+// millimetric (issue 15: relative position <= 3 mm).
+TEST_F(NavOperations, CrosslinkDelayKeepsTheSolutionMillimetricWhenInUse) {
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(delayed["filters"][k]["latency_s"].get<double>(), 3.0) << k;
+    EXPECT_LT(delayed["filters"][k]["converged"]["forecast_antenna_rms_m"].get<double>(), 0.003) << k;
+  }
+}
+
 TEST_F(NavOperations, FloatReplayNeverFixes) {
   for (int k = 0; k < 2; ++k) EXPECT_EQ(with_laser["filters"][k]["time_to_first_fix_s"].get<double>(), -1.0) << k;
+}
+
+TEST(NavCommand, CrosslinkDelayAboveAMinuteNamesTheOption) {
+  const auto run = run_visors("nav /tmp/visors-no-such-run --crosslink-delay 100");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--crosslink-delay"), std::string::npos) << run.err;
 }
 
 }  // namespace

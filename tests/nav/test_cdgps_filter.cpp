@@ -337,6 +337,19 @@ TEST(CdgpsFilterManeuver, CommandedImpulseKeepsTheFix) {
   EXPECT_LT(r.relative_error_m, 0.005);
 }
 
+// The forecast is the time update's mean, without touching the filter.
+TEST(CdgpsFilterForecast, IsThePredictedMeanAndLeavesTheFilterAlone) {
+  Simulation sim;
+  CdgpsFilter filter = initialised_filter(sim);
+  const NavVector x = filter.x();
+  const NavMatrix P = filter.P();
+  const NavVector ahead = filter.forecast(filter.x(), epoch() + 5.0);
+  EXPECT_EQ(filter.x(), x);
+  EXPECT_EQ(filter.P(), P);
+  filter.predict(epoch() + 5.0);
+  EXPECT_LT((ahead - filter.x()).norm(), 1e-9);
+}
+
 // The execution covariance of a commanded impulse: (5 % |dv|)^2 along it, (1 deg |dv|)^2 across
 // (CdgpsSettings defaults; the formula of apply_impulse's comment), in the scaled units.
 TEST(CdgpsFilterManeuver, ImpulseAddsItsExecutionCovariance) {
