@@ -297,16 +297,18 @@ void print_window(const char* label, const Json& w) {
 }
 
 void print_overview(const Json& s) {
-  fmt::print("  {} filter: cold start at {:.0f} s, first fix {:.0f} s later; NIS {:.2f}; slips detected {}; step {:.0f} us "
-             "median, {:.0f} us p99.9\n",
-             s["filter"].get<std::string>(), s["start_s"].get<double>(), s["time_to_first_fix_s"].get<double>(),
+  const double first_fix_s = s["time_to_first_fix_s"].get<double>();
+  fmt::print("  {} filter: cold start at {:.0f} s, {}; NIS {:.2f}; slips detected {}; step {:.0f} us median, {:.0f} us p99.9\n",
+             s["filter"].get<std::string>(), s["start_s"].get<double>(),
+             first_fix_s >= 0.0 ? fmt::format("first fix {:.0f} s later", first_fix_s) : std::string("never fixed"),
              s["nis_mean"].get<double>(), s["detected_slips"].get<int>(), s["step_us"]["median"].get<double>(),
              s["step_us"]["p99_9"].get<double>());
   if (s["refix_after_outage_s"].get<double>() >= 0.0) {
     fmt::print("    refixed {:.0f} s after the outage; longest wrong fix held {} s\n", s["refix_after_outage_s"].get<double>(),
                s["longest_wrong_fix_s"].get<int>());
   }
-  print_window("after the first fix", s["after_first_fix"]);
+  const bool fixed = s["window_from"].get<std::string>() == "first_fix";
+  print_window(fixed ? "after the first fix" : "after the cold start (never fixed)", s["after_first_fix"]);
   print_window("from 300 s after it", s["converged"]);
   if (s["latency_s"].get<double>() > 0.0) {
     const Json& c = s["converged"];

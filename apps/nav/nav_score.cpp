@@ -242,8 +242,10 @@ constexpr double kConvergenceS = 300.0;  // the "converged" window starts this l
 }  // namespace
 
 // The figures of the acceptance over the epochs after the first fix, and over those from
-// kConvergenceS later (the velocity takes minutes to converge after a cold start).
+// kConvergenceS later (the velocity takes minutes to converge after a cold start). A replay that
+// never fixes (--float, or no fix possible) is scored from its cold start instead.
 Json summarise(const Replay& r) {
+  const double window_start_s = std::max(0.0, r.first_fix_s);  // after the cold start [s]
   WindowStats after_fix, converged;
   ObservationStats observations;
   std::vector<double> steps;
@@ -259,15 +261,16 @@ Json summarise(const Replay& r) {
     nis += e.nis_sum;
     nis_count += e.nis_count;
     observations.add(e);
-    if (r.first_fix_s < 0.0 || e.t_s - r.start_s < r.first_fix_s) continue;
+    if (r.start_s < 0.0 || e.t_s - r.start_s < window_start_s) continue;
     after_fix.add(e);
-    if (e.t_s - r.start_s >= r.first_fix_s + kConvergenceS) converged.add(e);
+    if (e.t_s - r.start_s >= window_start_s + kConvergenceS) converged.add(e);
   }
   return Json{{"filter", r.name},
               {"epochs", r.epochs.size()},
               {"start_s", r.start_s},
               {"time_to_first_fix_s", r.first_fix_s},
               {"latency_s", r.latency_s},
+              {"window_from", r.first_fix_s >= 0.0 ? "first_fix" : "cold_start"},
               {"after_first_fix", after_fix.json()},
               {"converged", converged.json()},
               {"observations", observations.json()},
