@@ -6,26 +6,21 @@ namespace visors::nav {
 
 namespace {
 
-// P <- (P + P')/2 in place over the strict lower triangle: the rank-one updates leave round-off
-// asymmetry, and the next update reads P h' as (h P)'.
-void symmetrise(NavMatrix& P) {
+// The Joseph update given u = P h': with w = u - (h u) k, the header's
+//   P+ = (P - k u') - (w - r k) k' = P - k u' - v k',  v = u - (h u + r) k,
+// in one pass over the lower triangle, each element the mean of its two mirror images (the
+// update is symmetric in exact arithmetic; averaging keeps P exactly symmetric against the
+// round-off, and the next update reads P h' as (h P)'), then mirrored. Three passes over P
+// before (two rank-one updates and a symmetrisation); 44 % of the replay's time went here.
+void joseph_rank_one(NavMatrix& P, const NavRow& h, const NavVector& k, double r, const NavVector& u) {
+  const NavVector v = u - ((h * u).value() + r) * k;
   for (int j = 0; j < kNavStates; ++j) {
-    for (int i = j + 1; i < kNavStates; ++i) {
-      const double mean = 0.5 * (P(i, j) + P(j, i));
-      P(i, j) = mean;
-      P(j, i) = mean;
+    const double kj = k(j), uj = u(j), vj = v(j);
+    for (int i = j; i < kNavStates; ++i) {
+      P(i, j) = 0.5 * (P(i, j) + P(j, i)) - 0.5 * (k(i) * uj + kj * u(i) + v(i) * kj + vj * k(i));
     }
   }
-}
-
-// The Joseph update given u = P h' (overwritten): header equations M = P - k u',
-// w = u - (h u) k, P+ = M - (w - r k) k'.
-void joseph_rank_one(NavMatrix& P, const NavRow& h, const NavVector& k, double r, NavVector& u) {
-  const double hu = (h * u).value();
-  P.noalias() -= k * u.transpose();  // M = (I - k h) P
-  u -= (hu + r) * k;                 // w - r k = (I - k h) P h' - r k
-  P.noalias() -= u * k.transpose();  // M (I - k h)' + k r k'
-  symmetrise(P);
+  P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
 }
 
 bool finite_scalars(double innovation, double variance, double gate_sigmas) {
