@@ -138,6 +138,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   nav->add_flag("--float", nav_options.float_only, "no integer ambiguity resolution: the float filter alone");
   nav->add_flag("--no-laser", nav_options.no_laser, "do not fuse the run's laser ranges (lrf.csv)");
+  nav->add_option("--settings", nav_options.settings_file,
+                  "TOML file with a [nav] table of filter settings (CdgpsSettings field names)");
   std::vector<double> outage;
   nav->add_option("--outage", outage, "GPS outage of both receivers: START DURATION [s]")->expected(2);
   nav->callback([&] {

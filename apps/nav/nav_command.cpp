@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <random>
 #include <vector>
@@ -11,6 +14,8 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "config/cdgps_settings_toml.hpp"
+#include "config/toml_fields.hpp"
 #include "core/files/data_path.hpp"
 #include "core/files/eop_file.hpp"
 #include "core/files/output_file.hpp"
@@ -135,13 +140,14 @@ struct ReplaySettings {
   bool fuse_laser = true;
   ReplayFaults faults;
   double latency_s = 0.0;  // the crosslink delay rounded up to whole epochs [s]
+  const toml::table* settings_file = nullptr;  // the --settings file's tables, if any
 };
 
+// The filter's settings: the defaults, the receiver's specification, the --settings file, the
+// command line's switches, in that order of precedence (the last wins).
 nav::CdgpsFilter make_filter(const RunInputs& in, Craft local, const ReplaySettings& r) {
   nav::CdgpsSettings settings;
   settings.local = local;
-  settings.elevation_weighting = r.elevation_weighting;
-  settings.ambiguity_resolution = r.ambiguity_resolution;
   // The receiver's noise and multipath are its specification, known on board (characterised on
   // the ground): a single difference has sqrt(2) of each receiver's; GRAPHIC half the code's
   // multipath on top of the default's broadcast-error allowance. (Multipath is correlated over
@@ -150,6 +156,13 @@ nav::CdgpsFilter make_filter(const RunInputs& in, Craft local, const ReplaySetti
   settings.sdcp_sigma_m = std::sqrt(2.0) * std::hypot(rx.phase_sigma_m, rx.phase_multipath_m);
   settings.sd_code_sigma_m = std::max(settings.sd_code_sigma_m, std::sqrt(2.0) * std::hypot(rx.code_sigma_m, rx.code_multipath_m));
   settings.graphic_sigma_m = std::hypot(settings.graphic_sigma_m, 0.5 * rx.code_multipath_m);
+  if (r.settings_file != nullptr) {
+    if (auto ok = config::read_cdgps_settings(*r.settings_file, settings); !ok) {
+      throw InputError("--settings: " + ok.error().describe());
+    }
+  }
+  settings.elevation_weighting = settings.elevation_weighting || r.elevation_weighting;
+  settings.ambiguity_resolution = settings.ambiguity_resolution && r.ambiguity_resolution;
   auto created = nav::CdgpsFilter::create(settings, onboard_model(in.scenario.dsc, "dsc"), onboard_model(in.scenario.osc, "osc"));
   if (!created) throw InputError("filter settings: " + created.error().describe());
   return std::move(created).value();
@@ -194,6 +207,26 @@ void score_forecast(nav::CdgpsFilter& f, const nav::CdgpsEpochReport& report, co
   if (!errors.valid) return;
   e.forecast_antenna_rtn_m = errors.antenna_rtn_m;
   e.forecast_velocity_rtn_mps = errors.velocity_rtn_mps;
+}
+
+// The --settings file's tables (nullopt without one); checked against a default filter now, so
+// that a bad key is reported before the run is read.
+std::optional<toml::table> read_settings_file(const std::string& path) {
+  if (path.empty()) return std::nullopt;
+  std::ifstream file(path);
+  if (!file) throw InputError("--settings: " + path + " cannot be read");
+  std::stringstream text;
+  text << file.rdbuf();
+  auto table = config::toml_fields::parse(text.str());
+  if (!table) throw InputError("--settings: " + path + ": " + table.error().describe());
+  for (const auto& [key, value] : table.value()) {
+    if (key.str() != "nav") throw InputError("--settings: " + path + ": unknown table '" + std::string(key.str()) + "' (only [nav])");
+  }
+  nav::CdgpsSettings check;
+  if (auto ok = config::read_cdgps_settings(table.value(), check); !ok) {
+    throw InputError("--settings: " + path + ": " + ok.error().describe());
+  }
+  return std::move(table).value();
 }
 
 // One filter over the run, driven by its own receiver's epochs.
@@ -340,6 +373,7 @@ int run_nav_command(const NavOptions& options) {
     if (!(options.crosslink_delay_s >= 0.0 && options.crosslink_delay_s <= 60.0)) {
       throw InputError("--crosslink-delay: must be in [0, 60] s");
     }
+    const std::optional<toml::table> settings_file = read_settings_file(options.settings_file);
     auto inputs = read_run(options.run_dir);
     if (!inputs) throw InputError(inputs.error().describe());
     std::filesystem::create_directories(options.out);
@@ -349,7 +383,7 @@ int run_nav_command(const NavOptions& options) {
     for (Craft local : {Craft::kDsc, Craft::kOsc}) {
       const ReplaySettings settings{options.duration_s, options.elevation_weighting, !options.float_only, !options.no_laser,
                                     {options.crosslink_drop, options.outage_start_s, options.outage_s},
-                                    std::ceil(options.crosslink_delay_s - 1e-9)};
+                                    std::ceil(options.crosslink_delay_s - 1e-9), settings_file ? &*settings_file : nullptr};
       replays.push_back(replay(inputs.value(), local, settings));
       const Json s = summarise(replays.back());
       write_epochs(replays.back(), options.out);

@@ -1,6 +1,6 @@
 #pragma once
 // `visors nav RUN_DIR [--out DIR] [--duration S] [--crosslink-drop P] [--outage START DURATION]
-//  [--crosslink-delay S] [--elevation-weighting] [--float] [--no-laser]`: replays a `visors gnss-sim` run directory
+//  [--crosslink-delay S] [--elevation-weighting] [--float] [--no-laser] [--settings FILE]`: replays a `visors gnss-sim` run directory
 // through the on-board carrier-phase differential GPS filter (src/nav/cdgps_filter.hpp) of each
 // spacecraft at 1 Hz, with the run's commanded impulses and laser ranges (nav_inputs.hpp: what the
 // filter reads), and scores it against the run's truth (nav_score.hpp): relative position and
@@ -20,6 +20,8 @@ struct NavOptions {
   bool elevation_weighting = false;  // the filter's CdgpsSettings::elevation_weighting
   bool float_only = false;           // no integer ambiguity resolution (CdgpsSettings::ambiguity_resolution)
   bool no_laser = false;             // the run's laser ranges (lrf.csv) not fused
+  std::string settings_file;         // a TOML file with a [nav] table of filter settings
+                                     // (config/cdgps_settings_toml.hpp); empty: none
   // Faults injected by the replay (the run's data unchanged otherwise).
   double crosslink_drop = 0.0;   // probability that the other receiver's epoch is lost
   double crosslink_delay_s = 0.0;  // the other receiver's epochs arrive this late [s]: each joint

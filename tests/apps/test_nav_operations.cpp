@@ -147,6 +147,14 @@ TEST_F(NavOperations, FloatReplayNeverFixes) {
   for (int k = 0; k < 2; ++k) EXPECT_EQ(with_laser["filters"][k]["time_to_first_fix_s"].get<double>(), -1.0) << k;
 }
 
+TEST(NavCommand, SettingsFileWithAnUnknownKeyNamesIt) {
+  TempDir dir;
+  std::ofstream(dir.path() / "nav.toml") << "[nav]\nsdcp_sigma = 0.004\n";
+  const auto run = run_visors("nav /tmp/visors-no-such-run --settings " + (dir.path() / "nav.toml").string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("nav.sdcp_sigma"), std::string::npos) << run.err;
+}
+
 TEST(NavCommand, CrosslinkDelayAboveAMinuteNamesTheOption) {
   const auto run = run_visors("nav /tmp/visors-no-such-run --crosslink-delay 100");
   EXPECT_EQ(run.exit_code, 2);
