@@ -162,10 +162,14 @@ void CdgpsFilter::initialise(core::GpsTime t, const core::StateVector& dsc_gcrf,
     for (int i = 0; i < 3; ++i) {
       variance(state::position(c) + i, s.position_sigma_m);
       variance(state::velocity(c) + i, s.velocity_sigma_mps);
-      variance(state::empirical_acceleration(c) + i, s.empirical_sigma_mps2);
+      variance(state::empirical_acceleration(c) + i, std::hypot(s.empirical_common_sigma_mps2, s.empirical_sigma_mps2));
       variance(state::phase_center(c) + i, s.phase_center_sigma_m);
     }
     variance(state::clock(c), s.clock_sigma_m);
+  }
+  for (int i = 0; i < 3; ++i) {  // the empirical accelerations' common part (add_empirical_noise)
+    const int a = state::empirical_acceleration(Craft::kDsc) + i, b = state::empirical_acceleration(Craft::kOsc) + i;
+    m.P(a, b) = m.P(b, a) = std::pow(s.empirical_common_sigma_mps2 / state::kEmpiricalUnit, 2);
   }
   for (int i = state::kGraphicAmbiguities; i < kNavStates; ++i) m.P(i, i) = AmbiguitySlotBank::kParkedVariance;
   m.graphic.release_all(m.x, m.P);
@@ -176,10 +180,10 @@ void CdgpsFilter::initialise(core::GpsTime t, const core::StateVector& dsc_gcrf,
   m.initialised = true;
 }
 
-// Covariance of one spacecraft's (r, v, a_emp) block: P <- Phi P Phi' + Q in the state units,
-// Phi from the mean's two ends, Q the Gauss-Markov chain per RTN axis rotated to GCRF for r, v.
-static void propagate_dynamic_block(NavMatrix& P, Craft c, const core::StateVector& x0, const core::StateVector& x1,
-                                    double gm, double dt, const CdgpsSettings& s) {
+// One spacecraft's (r, v, a_emp) rows and columns of P carried by Phi (from the mean's two ends),
+// in the state units.
+static void transition_dynamic_block(NavMatrix& P, Craft c, const core::StateVector& x0, const core::StateVector& x1,
+                                     double gm, double dt, const CdgpsSettings& s) {
   const int first = state::position(c);
   Eigen::Matrix<double, 9, 9> phi = dynamic_transition(x0, x1, gm, dt, s.empirical_tau_s);
   Eigen::Matrix<double, 9, 1> units;
@@ -187,14 +191,35 @@ static void propagate_dynamic_block(NavMatrix& P, Craft c, const core::StateVect
   phi = units.cwiseInverse().asDiagonal() * phi * units.asDiagonal();  // S^-1 Phi S
   P.middleRows<9>(first) = (phi * P.middleRows<9>(first)).eval();
   P.middleCols<9>(first) = (P.middleCols<9>(first) * phi.transpose()).eval();
-  const Eigen::Matrix3d q = gauss_markov_chain(dt, s.empirical_tau_s, s.empirical_sigma_mps2).noise;
-  const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(x0).transpose();  // RTN -> GCRF
-  Eigen::Matrix<double, 9, 9> Q = Eigen::Matrix<double, 9, 9>::Zero();
-  const Eigen::Matrix3d frames[3] = {R, R, Eigen::Matrix3d::Identity()};  // r, v in GCRF; a in RTN
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) Q.block<3, 3>(3 * i, 3 * j) = q(i, j) * frames[i] * frames[j].transpose();
+}
+
+// The process noise of the empirical accelerations (CdgpsSettings: a part common to both
+// spacecraft and an independent part of each), as the Gauss-Markov chain per RTN axis (q, over r,
+// v, a) in the blocks of crafts a and b: q(i, j) F_a[i] F_b[j]' with F = (R, R, I), R the
+// spacecraft's RTN -> GCRF at the start (r, v in GCRF, a in its RTN; the two RTN frames 40 m
+// apart differ by 6e-6 rad). The whole Q = G (q_c x I) G' + blockdiag(F q_i F') is positive
+// semidefinite by construction.
+static void add_empirical_noise(NavMatrix& P, const std::array<core::StateVector, 2>& x0, double dt, const CdgpsSettings& s) {
+  const Eigen::Matrix3d q_common = gauss_markov_chain(dt, s.empirical_tau_s, s.empirical_common_sigma_mps2).noise;
+  const Eigen::Matrix3d q_own = gauss_markov_chain(dt, s.empirical_tau_s, s.empirical_sigma_mps2).noise;
+  std::array<std::array<Eigen::Matrix3d, 3>, 2> frames;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(x0[static_cast<std::size_t>(k)]).transpose();
+    frames[static_cast<std::size_t>(k)] = {R, R, Eigen::Matrix3d::Identity()};
   }
-  P.block<9, 9>(first, first) += units.cwiseInverse().asDiagonal() * Q * units.cwiseInverse().asDiagonal();
+  for (int a = 0; a < 2; ++a) {
+    for (int b = 0; b < 2; ++b) {
+      const Eigen::Matrix3d q = a == b ? Eigen::Matrix3d(q_common + q_own) : q_common;
+      const int row = state::position(kCrafts[a]), col = state::position(kCrafts[b]);
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          P.block<3, 3>(row + 3 * i, col + 3 * j) += q(i, j) / (unit(row + 3 * i) * unit(col + 3 * j)) *
+                                                      frames[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)] *
+                                                      frames[static_cast<std::size_t>(b)][static_cast<std::size_t>(j)].transpose();
+        }
+      }
+    }
+  }
 }
 
 void CdgpsFilter::predict(core::GpsTime t) {
@@ -204,10 +229,11 @@ void CdgpsFilter::predict(core::GpsTime t) {
   const std::array<core::StateVector, 2> before = m.propagate_mean_states(m.x, dt, settings_);
   for (int k = 0; k < 2; ++k) {
     const Craft c = kCrafts[k];
-    propagate_dynamic_block(m.P, c, before[static_cast<std::size_t>(k)], centre_of_mass(m.x, c),
-                            m.models[static_cast<std::size_t>(k)].gm(), dt, settings_);
+    transition_dynamic_block(m.P, c, before[static_cast<std::size_t>(k)], centre_of_mass(m.x, c),
+                             m.models[static_cast<std::size_t>(k)].gm(), dt, settings_);
     m.P(state::clock(c), state::clock(c)) += settings_.clock_random_walk_m * settings_.clock_random_walk_m * dt;
   }
+  add_empirical_noise(m.P, before, dt, settings_);
   m.P = (0.5 * (m.P + m.P.transpose())).eval();
   m.t = t;
   m.fixed_valid = false;  // the fixed solution was of the previous epoch

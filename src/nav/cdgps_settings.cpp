@@ -15,6 +15,9 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   if (s.local != Craft::kDsc && s.local != Craft::kOsc) return core::Error{"local", "must be dsc or osc"};
   if (!positive(s.max_step_s)) return core::Error{"max_step_s", "must be a finite number > 0"};
   if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_sigma_mps2)) return e;
+  if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_common_sigma_mps2)) {
+    return core::Error{"empirical_common_sigma_mps2", e->message};
+  }
   const struct {
     const char* field;
     double value;

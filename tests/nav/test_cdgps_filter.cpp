@@ -337,6 +337,38 @@ TEST(CdgpsFilterManeuver, CommandedImpulseKeepsTheFix) {
   EXPECT_LT(r.relative_error_m, 0.005);
 }
 
+// The empirical acceleration's common part (CdgpsSettings::empirical_common_sigma_mps2) loosens
+// each spacecraft's absolute dynamics and leaves their relative dynamics as the independent part
+// sets it: over 10 min of time update from tight priors, the variance of the relative velocity
+// differs from a filter without the common part by the RTN frames' difference only (40 m apart:
+// 6e-6 rad), while each absolute velocity's grows (by (5e-7/5e-8)^2 = 100 times, less the prior).
+struct VelocityVariances {
+  double absolute_mps2 = 0.0, relative_mps2 = 0.0;  // along T of the DSC, [m^2/s^2]
+};
+
+VelocityVariances after_ten_minutes(double common_sigma) {
+  Simulation sim;
+  CdgpsSettings settings;
+  settings.empirical_common_sigma_mps2 = common_sigma;
+  settings.position_sigma_m = 1e-4;  // the priors below the process noise's ten minutes
+  settings.velocity_sigma_mps = 1e-7;
+  auto filter = CdgpsFilter::create(settings, model(), model()).value();
+  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  for (int n = 1; n <= 600; ++n) filter.predict(epoch() + static_cast<double>(n));
+  const Eigen::Vector3d t_gcrf = core::gcrf_to_rtn_matrix(CdgpsFilter::centre_of_mass(filter.x(), Craft::kDsc)).row(1).transpose();
+  Eigen::Matrix<double, kNavStates, 1> absolute = Eigen::Matrix<double, kNavStates, 1>::Zero(), relative = absolute;
+  absolute.segment<3>(state::velocity(Craft::kDsc)) = state::kVelocityUnit * t_gcrf;
+  relative.segment<3>(state::velocity(Craft::kOsc)) = state::kVelocityUnit * t_gcrf;
+  relative.segment<3>(state::velocity(Craft::kDsc)) = -state::kVelocityUnit * t_gcrf;
+  return {absolute.dot(filter.P() * absolute), relative.dot(filter.P() * relative)};
+}
+
+TEST(CdgpsFilterDynamics, CommonEmpiricalAccelerationLeavesTheRelativeDynamicsAlone) {
+  const VelocityVariances without = after_ten_minutes(0.0), with = after_ten_minutes(5e-7);
+  EXPECT_GT(with.absolute_mps2, 10.0 * without.absolute_mps2);
+  EXPECT_NEAR(with.relative_mps2, without.relative_mps2, 0.01 * without.relative_mps2);
+}
+
 // The forecast is the time update's mean, without touching the filter.
 TEST(CdgpsFilterForecast, IsThePredictedMeanAndLeavesTheFilterAlone) {
   Simulation sim;
