@@ -78,9 +78,9 @@ std::string error_figure(const Replay& r) {
 
 std::string empirical_figure(const Replay& r) {
   report::Figure figure(fmt::format("fig-emp-{}", r.name), kWidth, 200.0, 2);
-  figure.add(rtn_plot(r, "DSC empirical acceleration", "[nm/s^2]", 1e9, 500.0,
+  figure.add(rtn_plot(r, "DSC empirical acceleration", "[nm/s^2]", 1e9, 3000.0,
                       [](const EpochScore& e) { return e.empirical_dsc_rtn_mps2; }));
-  figure.add(rtn_plot(r, "OSC empirical acceleration", "[nm/s^2]", 1e9, 500.0,
+  figure.add(rtn_plot(r, "OSC empirical acceleration", "[nm/s^2]", 1e9, 3000.0,
                       [](const EpochScore& e) { return e.empirical_osc_rtn_mps2; }));
   return figure.svg("Estimated empirical accelerations in RTN");
 }
