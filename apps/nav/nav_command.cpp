@@ -4,9 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <random>
 #include <vector>
@@ -19,6 +17,7 @@
 #include "core/files/data_path.hpp"
 #include "core/files/eop_file.hpp"
 #include "core/files/output_file.hpp"
+#include "core/files/text_file.hpp"
 #include "dynamics/files/force_model_files.hpp"
 #include "nav/cdgps_filter.hpp"
 #include "nav/nav_inputs.hpp"
@@ -213,11 +212,9 @@ void score_forecast(nav::CdgpsFilter& f, const nav::CdgpsEpochReport& report, co
 // that a bad key is reported before the run is read.
 std::optional<toml::table> read_settings_file(const std::string& path) {
   if (path.empty()) return std::nullopt;
-  std::ifstream file(path);
-  if (!file) throw InputError("--settings: " + path + " cannot be read");
-  std::stringstream text;
-  text << file.rdbuf();
-  auto table = config::toml_fields::parse(text.str());
+  const auto text = core::files::read_text_file(path);
+  if (!text) throw InputError("--settings: " + path + " cannot be read");
+  auto table = config::toml_fields::parse(*text);
   if (!table) throw InputError("--settings: " + path + ": " + table.error().describe());
   for (const auto& [key, value] : table.value()) {
     if (key.str() != "nav") throw InputError("--settings: " + path + ": unknown table '" + std::string(key.str()) + "' (only [nav])");

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <fstream>
 #include <span>
-#include <sstream>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "baseline/receiver_observables.hpp"
 #include "core/files/csv_file.hpp"
+#include "core/files/text_file.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/files/rinex_obs_file.hpp"
 #include "sim/random_stream.hpp"
@@ -182,11 +182,9 @@ nav::LaserRangeGeometry laser_geometry(const Eigen::Quaterniond& dsc_body_to_gcr
 
 core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
   RunInputs in;
-  std::ifstream scenario_file(run_dir / "scenario.toml");
-  if (!scenario_file) return Error{(run_dir / "scenario.toml").string(), "cannot be read (is this a gnss-sim run directory?)"};
-  std::stringstream text;
-  text << scenario_file.rdbuf();
-  auto scenario = sim::campaign_from_toml(text.str());
+  const auto text = core::files::read_text_file(run_dir / "scenario.toml");
+  if (!text) return Error{(run_dir / "scenario.toml").string(), "cannot be read (is this a gnss-sim run directory?)"};
+  auto scenario = sim::campaign_from_toml(*text);
   if (!scenario) return Error{"scenario.toml: " + scenario.error().field, scenario.error().message};
   in.scenario = std::move(scenario).value();
   auto dsc = read_observations(run_dir / "dsc.rnx");

@@ -2,10 +2,10 @@
 
 #include <cctype>
 #include <cmath>
-#include <fstream>
 
-#include "core/angles.hpp"
 #include "config/toml_fields.hpp"
+#include "core/angles.hpp"
+#include "core/files/text_file.hpp"
 
 namespace visors::preview {
 namespace {
@@ -139,11 +139,9 @@ core::Result<PreviewScenario> parse_preview_scenario(const std::string& toml_tex
 }
 
 core::Result<PreviewScenario> load_preview_scenario(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return Error{path.string(), "cannot be opened"};
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_preview_scenario(text.str());
+  const auto text = core::files::read_text_file(path);
+  if (!text) return Error{path.string(), "cannot be opened"};
+  return parse_preview_scenario(*text);
 }
 
 }  // namespace visors::preview

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "astro/keplerian_elements.hpp"
+#include "config/force_model_toml.hpp"
+#include "config/toml_fields.hpp"
 #include "core/angles.hpp"
 #include "core/constants.hpp"
-#include "config/toml_fields.hpp"
-#include "config/force_model_toml.hpp"
+#include "core/files/text_file.hpp"
 
 namespace visors::propagate {
 namespace {
@@ -164,11 +163,9 @@ core::Result<PropagateScenario> parse_propagate_scenario(const std::string& toml
 }
 
 core::Result<PropagateScenario> load_propagate_scenario(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return Error{"scenario", "cannot read " + path.string()};
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_propagate_scenario(text.str());
+  const auto text = core::files::read_text_file(path);
+  if (!text) return Error{"scenario", "cannot read " + path.string()};
+  return parse_propagate_scenario(*text);
 }
 
 }  // namespace visors::propagate

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 #include <unistd.h>
@@ -12,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "core/files/data_path.hpp"
+#include "core/files/text_file.hpp"
 #include "report/report.hpp"
 #include "sim/campaign_simulation.hpp"
 #include "sim/gnss_simulation.hpp"
@@ -42,10 +42,7 @@ std::optional<sim::CampaignScenario> load_scenario(const std::string& scenario_p
     fmt::print(stderr, "{}: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n", command, scenario_path);
     return std::nullopt;
   }
-  std::ifstream in(*path);
-  std::stringstream text;
-  text << in.rdbuf();
-  auto scenario = sim::campaign_from_toml(text.str());
+  auto scenario = sim::campaign_from_toml(core::files::read_text_file(*path).value_or(""));
   if (!scenario.ok()) {
     fmt::print(stderr, "{}: {}: {}\n", command, path->string(), scenario.error().describe());
     return std::nullopt;
