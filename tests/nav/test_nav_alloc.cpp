@@ -243,7 +243,7 @@ TEST(NavAllocation, ScalarUpdateAllocatesNothing) {
 }
 
 
-// The navigation filter's epoch (time update, slot management, GRAPHIC and SDCP updates, integer
+// The navigation filter's epoch (time update, slot management, GRAPHIC, SD code and SDCP updates, integer
 // resolution, fixed solution, hold) on the synthetic constellation (support/synthetic_gps.hpp),
 // after a warm-up that fixes the integers: nothing allocated.
 TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) {
@@ -283,6 +283,15 @@ TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) {
             }),
             0);
   EXPECT_GT(updates, 0);
+  // The campaign's operations between epochs: a commanded impulse, a laser range, a forecast.
+  NavVector ahead = filter.x();
+  EXPECT_EQ(test::count_allocations([&] {
+              (void)filter.apply_impulse(Craft::kOsc, Eigen::Vector3d(0.0, 0.002, 0.0));
+              (void)filter.update_laser_range(40.0, 0.002, LaserRangeGeometry{});
+              ahead = filter.forecast(filter.x(), t0 + 42.0);
+            }),
+            0);
+  EXPECT_NE(ahead, filter.x());
 }
 
 }  // namespace
