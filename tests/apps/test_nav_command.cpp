@@ -15,9 +15,7 @@
 namespace visors::test {
 namespace {
 
-bool have_navigation_file() {
-  return core::files::find_data_file("gnss/NYA100NOR_S_20241280000_01D_GN.rnx").has_value();
-}
+bool have_navigation_file() { return have_gnss_data("NYA100NOR_S_20241280000_01D_GN.rnx"); }
 
 // The default gnss-sim scenario cut to `seconds`.
 std::string short_scenario(const std::filesystem::path& dir, double seconds) {

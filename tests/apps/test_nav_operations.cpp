@@ -17,9 +17,7 @@
 namespace visors::test {
 namespace {
 
-bool have_navigation_file() {
-  return core::files::find_data_file("gnss/NYA100NOR_S_20241280000_01D_GN.rnx").has_value();
-}
+bool have_navigation_file() { return have_gnss_data("NYA100NOR_S_20241280000_01D_GN.rnx"); }
 
 void replace(std::string& text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);

@@ -76,7 +76,7 @@ void read_ranges(SimulatedRun& run) {
 class RangeModelAgainstGnssSim : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    if (!core::files::find_data_file("gnss/NYA100NOR_S_20241280000_01D_GN.rnx")) return;
+    if (!have_gnss_data("NYA100NOR_S_20241280000_01D_GN.rnx")) return;
     run = new SimulatedRun;
     std::string text = file_text(std::filesystem::path(VISORS_SOURCE_DIR) / "data/scenarios/gnss_sim.toml");
     const std::string duration = "duration_s = 5700.0", clock = "clock_step_sigma_m = 1.0";
