@@ -94,6 +94,7 @@ struct CdgpsFilter::Impl {
   void predict_scalars(Craft local);
   void start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count, double variance);
   double innovation(const Scalar& m) const { return m.z - (m.p.value_m + m.p.h.dot(x - x_prior)); }
+  double innovations(const std::array<Scalar, kGpsSlots>& scalars, int count, std::array<double, kGpsSlots>& values) const;
   void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
   void process(const CdgpsSettings& s, CdgpsEpochReport& report);
   std::array<core::StateVector, 2> propagate_mean_states(NavVector& xs, double dt, const CdgpsSettings& s);
@@ -428,6 +429,17 @@ void CdgpsFilter::Impl::start_ambiguities(AmbiguitySlotBank& bank, std::array<Sc
   }
 }
 
+// The innovations of the first `count` scalars into `values`, and their median (the upper one
+// for an even count; 0 for none).
+double CdgpsFilter::Impl::innovations(const std::array<Scalar, kGpsSlots>& scalars, int count,
+                                      std::array<double, kGpsSlots>& values) const {
+  for (int i = 0; i < count; ++i) values[static_cast<std::size_t>(i)] = innovation(scalars[static_cast<std::size_t>(i)]);
+  if (count == 0) return 0.0;
+  std::array<double, kGpsSlots> sorted = values;
+  std::nth_element(sorted.begin(), sorted.begin() + count / 2, sorted.begin() + count);
+  return sorted[static_cast<std::size_t>(count / 2)];
+}
+
 // The order of the sequential updates: the receiver clocks are nearly free at each epoch (a random
 // walk of metres), so the first scalar processed mostly sets the clock (GRAPHIC) or the clock
 // difference (SDCP), and a slip or a code blunder in it would pass its own gate and make every
@@ -436,10 +448,7 @@ void CdgpsFilter::Impl::start_ambiguities(AmbiguitySlotBank& bank, std::array<Sc
 // that fail.
 void CdgpsFilter::Impl::order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count) {
   std::array<double, kGpsSlots> values{};
-  for (int i = 0; i < count; ++i) values[static_cast<std::size_t>(i)] = innovation(scalars[static_cast<std::size_t>(i)]);
-  std::array<double, kGpsSlots> sorted = values;
-  std::nth_element(sorted.begin(), sorted.begin() + count / 2, sorted.begin() + count);
-  const double median = count > 0 ? sorted[static_cast<std::size_t>(count / 2)] : 0.0;
+  const double median = innovations(scalars, count, values);
   std::array<int, kGpsSlots> order{};
   for (int i = 0; i < count; ++i) order[static_cast<std::size_t>(i)] = i;
   std::sort(order.begin(), order.begin() + count, [&](int a, int b) {
@@ -458,10 +467,7 @@ void CdgpsFilter::Impl::update_sd_code(const CdgpsSettings& s, CdgpsEpochReport&
   if (!s.sd_code || code_count == 0) return;
   constexpr int n = 2 * kSpacecraftStates;  // the rows' span: both spacecraft blocks
   std::array<double, kGpsSlots> values{};
-  for (int i = 0; i < code_count; ++i) values[static_cast<std::size_t>(i)] = innovation(code_scalars[static_cast<std::size_t>(i)]);
-  std::array<double, kGpsSlots> sorted = values;
-  std::nth_element(sorted.begin(), sorted.begin() + code_count / 2, sorted.begin() + code_count);
-  const double median = sorted[static_cast<std::size_t>(code_count / 2)];
+  const double median = innovations(code_scalars, code_count, values);
   NavRow h = NavRow::Zero();
   double innovation_sum = 0.0, variance_sum = 0.0;
   int used = 0;
