@@ -298,18 +298,22 @@ void write_epochs(const Replay& r, const std::filesystem::path& dir) {
   if (!file.get()) throw std::runtime_error(path.string() + ": cannot be written");
   std::fprintf(file.get(),
                "t_s,status,wrong_fix,sdcp,sdcp_rejected,graphic,graphic_rejected,double_differences,rel_r_m,rel_t_m,rel_n_m,rel_antenna_r_m,rel_antenna_t_m,"
-               "rel_antenna_n_m,rel_vr_mps,rel_vt_mps,rel_vn_mps,abs_position_m,abs_velocity_mps,detected_slips,antenna_nees,"
-               "nis_sum,nis_count,step_us,in_observation,in_slew,payload_los_m,payload_lateral_m,laser\n");
+               "rel_antenna_n_m,rel_vr_mps,rel_vt_mps,rel_vn_mps,abs_position_m,abs_velocity_mps,clock_error_dsc_m,clock_error_osc_m,"
+               "detected_slips,antenna_nees,"
+               "rel_antenna_sigma_r_m,rel_antenna_sigma_t_m,rel_antenna_sigma_n_m,nis_sum,nis_count,graphic_nis_sum,sdcp_nis_sum,sdcp_used,step_us,"
+               "in_observation,in_slew,"
+               "payload_los_m,payload_lateral_m,laser\n");
   for (const EpochScore& e : r.epochs) {
     std::fprintf(file.get(),
-                 "%.3f,%s,%d,%d,%d,%d,%d,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.8f,%.8f,%.8f,%.4f,%.6f,%d,"
-                 "%.4f,%.4f,%d,%.1f,%d,%d,%.6f,%.6f,%s\n",
+                 "%.3f,%s,%d,%d,%d,%d,%d,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.8f,%.8f,%.8f,%.4f,%.6f,%.4f,%.4f,%d,"
+                 "%.4f,%.6f,%.6f,%.6f,%.4f,%d,%.4f,%.4f,%d,%.1f,%d,%d,%.6f,%.6f,%s\n",
                  e.t_s, e.status, e.wrong_fix ? 1 : 0, e.satellites, e.sdcp_rejected, e.graphic_used, e.graphic_rejected,
                  e.double_differences, e.relative_position_rtn_m(0),
                  e.relative_position_rtn_m(1), e.relative_position_rtn_m(2), e.relative_antenna_rtn_m(0),
                  e.relative_antenna_rtn_m(1), e.relative_antenna_rtn_m(2), e.relative_velocity_rtn_mps(0),
                  e.relative_velocity_rtn_mps(1), e.relative_velocity_rtn_mps(2), e.absolute_position_m,
-                 e.absolute_velocity_mps, e.detected_slips, e.nees, e.nis_sum, e.nis_count, e.step_us,
+                 e.absolute_velocity_mps, e.clock_error_dsc_m, e.clock_error_osc_m, e.detected_slips, e.nees, e.antenna_sigma_rtn_m(0), e.antenna_sigma_rtn_m(1),
+                 e.antenna_sigma_rtn_m(2), e.nis_sum, e.nis_count, e.graphic_nis_sum, e.sdcp_nis_sum, e.sdcp_used, e.step_us,
                  e.in_observation ? 1 : 0, e.in_slew ? 1 : 0, e.payload_los_m, e.payload_lateral_m, e.laser);
   }
 }

@@ -68,13 +68,13 @@ core::Result<nav::Craft> craft_named(const std::string& name, const std::filesys
 }
 
 core::Result<bool> read_truth(const std::filesystem::path& path, RunInputs& in) {
-  constexpr std::array<std::string_view, 12> columns = {
-      "t_s",         "spacecraft",  "x_gcrf_m",        "y_gcrf_m",        "z_gcrf_m",        "vx_gcrf_mps",
-      "vy_gcrf_mps", "vz_gcrf_mps", "qw_body_to_gcrf", "qx_body_to_gcrf", "qy_body_to_gcrf", "qz_body_to_gcrf"};
+  constexpr std::array<std::string_view, 13> columns = {
+      "t_s",         "spacecraft",  "x_gcrf_m",        "y_gcrf_m",        "z_gcrf_m",        "vx_gcrf_mps",      "vy_gcrf_mps",
+      "vz_gcrf_mps", "qw_body_to_gcrf", "qx_body_to_gcrf", "qy_body_to_gcrf", "qz_body_to_gcrf", "receiver_clock_m"};
   auto rows = core::files::read_csv_columns(path, columns, "truth file");
   if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
   for (const auto& row : rows.value()) {
-    std::array<double, 11> v{};
+    std::array<double, 12> v{};
     if (!parse_fields(row, 2, std::span(v).subspan(1)) || !parse_fields(row, 0, std::span(v).first(1))) {
       return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
     }
@@ -83,7 +83,7 @@ core::Result<bool> read_truth(const std::filesystem::path& path, RunInputs& in) 
     const Eigen::Quaterniond q(v[7], v[8], v[9], v[10]);
     if (std::abs(q.norm() - 1.0) > 1e-6) return Error{path.string() + ": line " + std::to_string(row.line), "attitude quaternion is not unit"};
     in.truth[key_ms(v[0])][static_cast<std::size_t>(*craft)] =
-        CraftTruth{{Eigen::Vector3d(v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6])}, q.normalized()};
+        CraftTruth{{Eigen::Vector3d(v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6])}, q.normalized(), v[11]};
   }
   return true;
 }

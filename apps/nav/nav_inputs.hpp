@@ -41,6 +41,7 @@ struct ChannelTruth {
 struct CraftTruth {
   core::StateVector x_gcrf;
   Eigen::Quaterniond body_to_gcrf = Eigen::Quaterniond::Identity();
+  double receiver_clock_m = 0.0;  // c dt_r at the time tag [m]
 };
 
 /// A commanded impulse as the flight software knows it [s after the scenario start, GCRF m/s].

@@ -21,6 +21,9 @@ struct EpochScore {
   // error of the antennas' relative position, what the GPS measurements determine.
   Eigen::Vector3d relative_antenna_rtn_m = Eigen::Vector3d::Zero();
   double absolute_position_m = 0.0, absolute_velocity_mps = 0.0;  // of the local spacecraft, 3D
+  // Receiver clocks, estimate minus truth [m]: the remote one's error relative to the local one
+  // moves the remote antenna |v| dt along-track at its reception instant.
+  double clock_error_dsc_m = 0.0, clock_error_osc_m = 0.0;
   Eigen::Vector3d empirical_dsc_rtn_mps2 = Eigen::Vector3d::Zero();  // estimated empirical accelerations
   Eigen::Vector3d empirical_osc_rtn_mps2 = Eigen::Vector3d::Zero();
   const char* status = "float";  // fixed, partial, float, outage
@@ -29,8 +32,11 @@ struct EpochScore {
   int graphic_used = 0, graphic_rejected = 0, sdcp_rejected = 0;
   double nis_sum = 0.0;
   int nis_count = 0, detected_slips = 0;
+  double graphic_nis_sum = 0.0, sdcp_nis_sum = 0.0;  // their parts of nis_sum (graphic_used, sdcp_used scalars)
+  int sdcp_used = 0;
   double step_us = 0.0;
   double nees = 0.0;  // of the antennas' relative position (3 degrees of freedom)
+  Eigen::Vector3d antenna_sigma_rtn_m = Eigen::Vector3d::Zero();  // the filter's 1-sigma of that position
   // Observations (run's summary.json): the epoch lies in an observation window, or in a slew to
   // or from one; the relative error of the payload reference points (what the telescope's focal
   // geometry needs: the LRF's end points) along the line of sight and across it [m].

@@ -38,17 +38,15 @@ bool wrong_fix(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   return false;
 }
 
-// Normalised estimation error squared of the antennas' relative position, r_osc + C_osc p_osc -
-// r_dsc - C_dsc p_dsc, with its covariance J P J' (J over the scaled states).
-double antenna_nees(const nav::NavMatrix& P, const Eigen::Vector3d& error_gcrf, const Eigen::Matrix3d& c_dsc,
-                    const Eigen::Matrix3d& c_osc) {
+// The covariance [m^2, GCRF] of the antennas' relative position, r_osc + C_osc p_osc - r_dsc -
+// C_dsc p_dsc: J P J' (J over the scaled states).
+Eigen::Matrix3d antenna_covariance(const nav::NavMatrix& P, const Eigen::Matrix3d& c_dsc, const Eigen::Matrix3d& c_osc) {
   Eigen::Matrix<double, 3, nav::kNavStates> J = Eigen::Matrix<double, 3, nav::kNavStates>::Zero();
   J.block<3, 3>(0, nav::state::position(Craft::kOsc)) = Eigen::Matrix3d::Identity();
   J.block<3, 3>(0, nav::state::position(Craft::kDsc)) = -Eigen::Matrix3d::Identity();
   J.block<3, 3>(0, nav::state::phase_center(Craft::kOsc)) = nav::state::kPhaseCenterUnit * c_osc;
   J.block<3, 3>(0, nav::state::phase_center(Craft::kDsc)) = -nav::state::kPhaseCenterUnit * c_dsc;
-  const Eigen::Matrix3d S = J * P * J.transpose();
-  return error_gcrf.dot(S.ldlt().solve(error_gcrf));
+  return J * P * J.transpose();
 }
 
 // Where t_s lies against the run's observations: in a window, or in the slew to it or back from
@@ -125,13 +123,19 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   e.payload_lateral_m = relative.payload_lateral_m;
   e.forecast_antenna_rtn_m = relative.antenna_rtn_m;  // no delay: the epoch's own
   e.forecast_velocity_rtn_mps = relative.velocity_rtn_mps;
-  e.nees = antenna_nees(r.fix_applied ? filter.P_fixed() : filter.P(), relative.gcrf_to_rtn.transpose() * e.relative_antenna_rtn_m,
-                        relative.c_dsc, relative.c_osc);
+  // Normalised estimation error squared of the antennas' relative position, and its 1-sigma per RTN axis.
+  const Eigen::Matrix3d S_rtn = relative.gcrf_to_rtn *
+                                antenna_covariance(r.fix_applied ? filter.P_fixed() : filter.P(), relative.c_dsc, relative.c_osc) *
+                                relative.gcrf_to_rtn.transpose();
+  e.nees = e.relative_antenna_rtn_m.dot(S_rtn.ldlt().solve(e.relative_antenna_rtn_m));
+  e.antenna_sigma_rtn_m = S_rtn.diagonal().cwiseSqrt();
   const std::array<CraftTruth, 2>& truth = in.truth.find(key_ms(t_s))->second;
   const std::size_t own = local == Craft::kDsc ? 0 : 1;
   const core::StateVector estimate = nav::CdgpsFilter::centre_of_mass(x, local);
   e.absolute_position_m = (estimate.r - truth[own].x_gcrf.r).norm();
   e.absolute_velocity_mps = (estimate.v - truth[own].x_gcrf.v).norm();
+  e.clock_error_dsc_m = x(nav::state::clock(Craft::kDsc)) - truth[0].receiver_clock_m;
+  e.clock_error_osc_m = x(nav::state::clock(Craft::kOsc)) - truth[1].receiver_clock_m;
   if (full) {
     const auto phases = in.phase_truth.find(key_ms(t_s));
     e.wrong_fix = phases != in.phase_truth.end() && wrong_fix(filter, r, phases->second);
@@ -145,6 +149,9 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   e.sdcp_rejected = r.sdcp_rejected;
   e.nis_sum = r.nis_sum;
   e.nis_count = r.nis_count;
+  e.graphic_nis_sum = r.graphic_nis_sum;
+  e.sdcp_nis_sum = r.sdcp_nis_sum;
+  e.sdcp_used = r.sdcp_used;
   e.detected_slips = r.detected_slips;
   return e;
 }

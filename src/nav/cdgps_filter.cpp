@@ -31,6 +31,10 @@ struct Scalar {
   double z = 0.0;          // measured [m]
   double coefficient = 1;  // d value / d ambiguity (1 for B [m], lambda for N [cycles])
   bool reinitialise = false;
+  // The ambiguity's value from this epoch's code, in its state's unit: GRAPHIC minus code
+  // (B - I, I the code's ionospheric delay) or SD phase minus SD code over lambda (the SD
+  // integer, 2 dI / lambda and the codes' noise off). Independent of the state's error.
+  double from_code = 0.0;
   double variance_scale = 1.0;  // elevation weighting (settings)
   MeasurementPrediction p;
 };
@@ -235,6 +239,8 @@ void CdgpsFilter::predict(core::GpsTime t) {
     m.P(state::clock(c), state::clock(c)) += settings_.clock_random_walk_m * settings_.clock_random_walk_m * dt;
   }
   add_empirical_noise(m.P, before, dt, settings_);
+  const double graphic_q = settings_.graphic_bias_random_walk_m * settings_.graphic_bias_random_walk_m * dt;
+  for (int slot : m.graphic.active_slots()) m.P(m.graphic.state_of(slot), m.graphic.state_of(slot)) += graphic_q;
   m.P = (0.5 * (m.P + m.P.transpose())).eval();
   m.t = t;
   m.fixed_valid = false;  // the fixed solution was of the previous epoch
@@ -342,6 +348,7 @@ void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local, CdgpsEpoc
     m = Scalar{};
     m.prn = o.prn;
     m.z = 0.5 * (o.code_m + kLambda * o.phase_cycles);
+    m.from_code = m.z - o.code_m;
     m.reinitialise = o.loss_of_lock;
   }
   code_count = 0;
@@ -362,6 +369,7 @@ void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local, CdgpsEpoc
     m.prn = o.prn;
     m.z = kLambda * (o.phase_cycles - d->phase_cycles);
     m.coefficient = kLambda;
+    m.from_code = (m.z - c.z) / kLambda;
     m.reinitialise = o.loss_of_lock || d->loss_of_lock;
   }
 }
@@ -417,15 +425,17 @@ void CdgpsFilter::Impl::predict_scalars(Craft local) {
   }
 }
 
-// New or flagged ambiguities start at the measurement's residual with the prior variance (digest
-// 5.4); the measurement then updates the rest of the state as usual.
+// New or flagged ambiguities start at their code value (Scalar::from_code) with the prior
+// variance, uncorrelated with the state; the measurement then updates the rest of the state as
+// usual. Not at the measurement's residual at the predicted state (digest 5.4): that value
+// carries the state's error, which an uncorrelated prior then hides: after a 30-minute coast,
+// 200 m off, every ambiguity absorbed the 200 m with a prior of 19 m, the filter believed its
+// state and never recovered (4 runs in 20, one wrong fix).
 void CdgpsFilter::Impl::start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count,
                                           double variance) {
   for (int i = 0; i < count; ++i) {
-    Scalar& m = scalars[static_cast<std::size_t>(i)];
-    if (!m.reinitialise) continue;
-    const double value = x(m.state) + innovation(m) / m.coefficient;
-    (void)bank.reinitialise(m.slot, value, variance, x, P);
+    const Scalar& m = scalars[static_cast<std::size_t>(i)];
+    if (m.reinitialise) (void)bank.reinitialise(m.slot, m.from_code, variance, x, P);
   }
 }
 
@@ -510,6 +520,7 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
                                  s.gate_sigmas, workspace);
     if (r.status == ScalarUpdateStatus::kAccepted) {
       ++report.graphic_used;
+      report.graphic_nis_sum += r.normalised_innovation_squared;
       account(r);
     } else {
       ++report.graphic_rejected;
@@ -525,13 +536,13 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
       ++report.sdcp_rejected;
       ++report.detected_slips;
       ++report.new_ambiguities;
-      const double value = x(m.state) + innovation(m) / m.coefficient;
-      (void)sdcp.reinitialise(m.slot, value, std::pow(s.sdcp_ambiguity_sigma_cycles, 2), x, P);
+      (void)sdcp.reinitialise(m.slot, m.from_code, std::pow(s.sdcp_ambiguity_sigma_cycles, 2), x, P);
       lock[static_cast<std::size_t>(m.slot)] = 0;
       r = scalar_update(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
     }
     if (r.status == ScalarUpdateStatus::kAccepted) {
       ++report.sdcp_used;
+      report.sdcp_nis_sum += r.normalised_innovation_squared;
       account(r);
       ++lock[static_cast<std::size_t>(m.slot)];
     } else {

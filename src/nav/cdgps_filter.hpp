@@ -81,6 +81,8 @@ struct CdgpsEpochReport {
   int half_cycle_skipped = 0;        // phases flagged with an unresolved half cycle, not used
   double nis_sum = 0.0;        // sum of the accepted scalars' normalised innovations squared
   int nis_count = 0;
+  double graphic_nis_sum = 0.0;  // the GRAPHIC part of nis_sum (graphic_used scalars)
+  double sdcp_nis_sum = 0.0;     // the SDCP part of nis_sum (sdcp_used scalars)
   int double_differences = 0;
   /// The satellites of this epoch's double differences: the reference, then the others.
   std::array<int, kGpsSlots> dd_prns{};

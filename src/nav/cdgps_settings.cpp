@@ -39,6 +39,9 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   for (const auto& [field, value] : sigmas) {
     if (!positive(value)) return core::Error{field, "must be a finite number > 0"};
   }
+  if (!(s.graphic_bias_random_walk_m >= 0.0 && std::isfinite(s.graphic_bias_random_walk_m))) {
+    return core::Error{"graphic_bias_random_walk_m", "must be a finite number >= 0"};
+  }
   if (!(s.min_weighting_elevation_deg > 0.0 && s.min_weighting_elevation_deg <= 90.0)) {
     return core::Error{"min_weighting_elevation_deg", "must be in (0, 90] deg"};
   }
