@@ -332,10 +332,12 @@ void print_window(const char* label, const Json& w) {
 
 void print_overview(const Json& s) {
   const double first_fix_s = s["time_to_first_fix_s"].get<double>();
-  fmt::print("  {} filter: cold start at {:.0f} s, {}; NIS {:.2f}; slips detected {}; step {:.0f} us median, {:.0f} us p99.9\n",
+  fmt::print("  {} filter: cold start at {:.0f} s, {}; NIS {:.2f}; slips detected {}; ephemeris switches {}; step {:.0f} us "
+             "median, {:.0f} us p99.9\n",
              s["filter"].get<std::string>(), s["start_s"].get<double>(),
              first_fix_s >= 0.0 ? fmt::format("first fix {:.0f} s later", first_fix_s) : std::string("never fixed"),
-             s["nis_mean"].get<double>(), s["detected_slips"].get<int>(), s["step_us"]["median"].get<double>(),
+             s["nis_mean"].get<double>(), s["detected_slips"].get<int>(), s["ephemeris_switches"].get<int>(),
+             s["step_us"]["median"].get<double>(),
              s["step_us"]["p99_9"].get<double>());
   if (s["refix_after_outage_s"].get<double>() >= 0.0) {
     fmt::print("    refixed {:.0f} s after the outage; longest wrong fix held {} s\n", s["refix_after_outage_s"].get<double>(),

@@ -31,7 +31,7 @@ struct EpochScore {
   int satellites = 0, double_differences = 0;
   int graphic_used = 0, graphic_rejected = 0, sdcp_rejected = 0;
   double nis_sum = 0.0;
-  int nis_count = 0, detected_slips = 0;
+  int nis_count = 0, detected_slips = 0, ephemeris_switches = 0;
   double graphic_nis_sum = 0.0, sdcp_nis_sum = 0.0;  // their parts of nis_sum (graphic_used, sdcp_used scalars)
   int sdcp_used = 0;
   double step_us = 0.0;

@@ -153,6 +153,7 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   e.sdcp_nis_sum = r.sdcp_nis_sum;
   e.sdcp_used = r.sdcp_used;
   e.detected_slips = r.detected_slips;
+  e.ephemeris_switches = r.ephemeris_switches;
   return e;
 }
 
@@ -256,7 +257,7 @@ Json summarise(const Replay& r) {
   WindowStats after_fix, converged;
   ObservationStats observations;
   std::vector<double> steps;
-  int slips = 0, nis_count = 0, wrong_run = 0, longest_wrong_run = 0;
+  int slips = 0, switches = 0, nis_count = 0, wrong_run = 0, longest_wrong_run = 0;
   double nis = 0.0, outage_end_s = -1.0, refix_s = -1.0;
   for (const EpochScore& e : r.epochs) {
     if (std::string_view(e.status) == "outage") outage_end_s = e.t_s + 1.0;
@@ -265,6 +266,7 @@ Json summarise(const Replay& r) {
     longest_wrong_run = std::max(longest_wrong_run, wrong_run);
     steps.push_back(e.step_us);
     slips += e.detected_slips;
+    switches += e.ephemeris_switches;
     nis += e.nis_sum;
     nis_count += e.nis_count;
     observations.add(e);
@@ -283,6 +285,7 @@ Json summarise(const Replay& r) {
               {"observations", observations.json()},
               {"impulses_applied", r.impulse_t_s.size()},
               {"detected_slips", slips},
+              {"ephemeris_switches", switches},
               {"longest_wrong_fix_s", longest_wrong_run},
               {"refix_after_outage_s", refix_s},
               {"nis_mean", nis_count > 0 ? nis / nis_count : 0.0},

@@ -22,7 +22,7 @@ struct FlagKey {
   bool nav::CdgpsSettings::*field;
 };
 
-constexpr std::array<NumberKey, 21> kNumbers = {{
+constexpr std::array<NumberKey, 22> kNumbers = {{
     {"max_step_s", &nav::CdgpsSettings::max_step_s},
     {"empirical_tau_s", &nav::CdgpsSettings::empirical_tau_s},
     {"empirical_sigma_mps2", &nav::CdgpsSettings::empirical_sigma_mps2},
@@ -36,6 +36,7 @@ constexpr std::array<NumberKey, 21> kNumbers = {{
     {"phase_center_sigma_m", &nav::CdgpsSettings::phase_center_sigma_m},
     {"graphic_ambiguity_sigma_m", &nav::CdgpsSettings::graphic_ambiguity_sigma_m},
     {"graphic_bias_random_walk_m", &nav::CdgpsSettings::graphic_bias_random_walk_m},
+    {"ephemeris_switch_sigma_m", &nav::CdgpsSettings::ephemeris_switch_sigma_m},
     {"sdcp_ambiguity_sigma_cycles", &nav::CdgpsSettings::sdcp_ambiguity_sigma_cycles},
     {"slot_timeout_s", &nav::CdgpsSettings::slot_timeout_s},
     {"graphic_sigma_m", &nav::CdgpsSettings::graphic_sigma_m},

@@ -79,6 +79,8 @@ struct CdgpsFilter::Impl {
   std::array<Eigen::Index, kGpsSlots> dd_others{};
   std::array<RangePrediction, 2 * 33> ranges{};  // per craft and PRN, this epoch
   std::array<bool, 2 * 33> ranged{};
+  std::array<core::GpsTime, 2 * 33> ranged_toe{};   // t_oe of the broadcast record each range used
+  std::array<core::GpsTime, kGpsSlots> graphic_toe{};  // ... at each GRAPHIC slot's last measurement
   std::array<double, 2 * 33> weight_scale{};  // 1 / sin^2(elevation above the antenna plane), floored
 
   double scale(Craft c, int prn) const {
@@ -97,6 +99,7 @@ struct CdgpsFilter::Impl {
                     CdgpsEpochReport& report);
   void predict_scalars(Craft local);
   void start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count, double variance);
+  void follow_ephemeris_switches(Craft local, double variance, CdgpsEpochReport& report);
   double innovation(const Scalar& m) const { return m.z - (m.p.value_m + m.p.h.dot(x - x_prior)); }
   double innovations(const std::array<Scalar, kGpsSlots>& scalars, int count, std::array<double, kGpsSlots>& values) const;
   void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
@@ -327,6 +330,7 @@ void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::Ep
       const auto index = static_cast<std::size_t>(33 * k + prn);
       ranges[index] = predict_range(t, receiver, *antennas[k], *e, frame);
       ranged[index] = true;
+      ranged_toe[index] = e->toe;
       const double sine = (antennas[k]->body_to_gcrf * antennas[k]->boresight_body).dot(ranges[index].line_of_sight_gcrf);
       weight_scale[index] = 1.0 / std::pow(std::max(sine, sin_floor), 2);
     }
@@ -436,6 +440,22 @@ void CdgpsFilter::Impl::start_ambiguities(AmbiguitySlotBank& bank, std::array<Sc
   for (int i = 0; i < count; ++i) {
     const Scalar& m = scalars[static_cast<std::size_t>(i)];
     if (m.reinitialise) (void)bank.reinitialise(m.slot, m.from_code, variance, x, P);
+  }
+}
+
+// A new broadcast data set (every 2 h) moves the modelled range of its satellite by the change of
+// the broadcast error along the line of sight, which the GRAPHIC bias of that satellite must take:
+// its variance grows by `variance` at the switch. (The SDCP do not see it: 1e-6 of it at 40 m.)
+void CdgpsFilter::Impl::follow_ephemeris_switches(Craft local, double variance, CdgpsEpochReport& report) {
+  for (int i = 0; i < graphic_count; ++i) {
+    const Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
+    const core::GpsTime toe = ranged_toe[static_cast<std::size_t>(33 * static_cast<int>(local) + m.prn)];
+    core::GpsTime& last = graphic_toe[static_cast<std::size_t>(m.slot)];
+    if (!m.reinitialise && last != toe) {
+      P(m.state, m.state) += variance;
+      ++report.ephemeris_switches;
+    }
+    last = toe;
   }
 }
 
@@ -646,6 +666,7 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.predict_scalars(settings_.local);
   m.start_ambiguities(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2));
   m.start_ambiguities(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2));
+  m.follow_ephemeris_switches(settings_.local, std::pow(settings_.ephemeris_switch_sigma_m, 2), report);
   m.order_by_consensus(m.graphic_scalars, m.graphic_count);
   m.order_by_consensus(m.sdcp_scalars, m.sdcp_count);
   m.process(settings_, report);

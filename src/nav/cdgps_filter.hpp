@@ -77,6 +77,7 @@ struct CdgpsEpochReport {
   int new_ambiguities = 0;     // slots (re)initialised: rises, flagged and detected slips
   int detected_slips = 0;      // SDCP gate failures (slips the indicator did not flag)
   int missing_ephemeris = 0;
+  int ephemeris_switches = 0;  // GRAPHIC biases widened for a new broadcast data set of their satellite
   int implausible_observations = 0;  // skipped (nav/gps_observations.hpp plausible())
   int half_cycle_skipped = 0;        // phases flagged with an unresolved half cycle, not used
   double nis_sum = 0.0;        // sum of the accepted scalars' normalised innovations squared

@@ -27,6 +27,7 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
                 {"clock_sigma_m", s.clock_sigma_m},
                 {"phase_center_sigma_m", s.phase_center_sigma_m},
                 {"graphic_ambiguity_sigma_m", s.graphic_ambiguity_sigma_m},
+                {"ephemeris_switch_sigma_m", s.ephemeris_switch_sigma_m},
                 {"sdcp_ambiguity_sigma_cycles", s.sdcp_ambiguity_sigma_cycles},
                 {"slot_timeout_s", s.slot_timeout_s},
                 {"graphic_sigma_m", s.graphic_sigma_m},

@@ -37,6 +37,10 @@ struct CdgpsSettings {
   // rose along the orbit from 0.4 to 1.3 (inside its per-epoch bounds 55 % of the epochs); with
   // 1e-3 and graphic_sigma_m at the white 0.1 m it is flat at 1.03 (87 %), absolute 2.1 -> 1.5 m.
   double graphic_bias_random_walk_m = 1e-3;
+  // Change of a satellite's broadcast range error when its data set changes (every 2 h), 1-sigma
+  // [m]: added to its GRAPHIC bias at the switch. gnss-sim's sets jump by ~0.3 m (its
+  // refresh_correlation 0.95 on ~1 m along a line of sight); real consecutive sets, 0.1-0.5 m.
+  double ephemeris_switch_sigma_m = 0.5;
   // Execution errors of a commanded impulse (apply_impulse), 1-sigma: along the command, as a
   // fraction of |dv| (the propulsion's 5 %: mission paper, propulsion table), and the direction
   // error across it. The direction default is the mission's worst case (0.05 .. 10 deg range,

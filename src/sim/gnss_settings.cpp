@@ -87,13 +87,18 @@ core::Result<bool> read_receiver(const toml::table& table, GpsReceiverSettings& 
 
 core::Result<bool> read_errors(const toml::table& table, BroadcastErrorSettings& b) {
   const std::string sec = "gnss.broadcast_errors";
-  if (auto e = check_keys(table, sec, {"radial_m", "along_m", "cross_m", "clock_m", "clock_drift_sps"})) return *e;
+  if (auto e = check_keys(table, sec, {"radial_m", "along_m", "cross_m", "clock_m", "clock_drift_sps", "refresh_s",
+                                       "refresh_correlation"})) {
+    return *e;
+  }
   VISORS_TRY(radial, number_at(table, sec, "radial_m", b.radial_m));
   VISORS_TRY(along, number_at(table, sec, "along_m", b.along_m));
   VISORS_TRY(cross, number_at(table, sec, "cross_m", b.cross_m));
   VISORS_TRY(clock, number_at(table, sec, "clock_m", b.clock_m));
   VISORS_TRY(drift, number_at(table, sec, "clock_drift_sps", b.clock_drift_sps));
-  const BroadcastErrorSettings out{radial, along, cross, clock, drift};
+  VISORS_TRY(refresh, number_at(table, sec, "refresh_s", b.refresh_s));
+  VISORS_TRY(rho, number_at(table, sec, "refresh_correlation", b.refresh_correlation));
+  const BroadcastErrorSettings out{radial, along, cross, clock, drift, refresh, rho};
   if (auto valid = out.validate(); !valid) return Error{sec + "." + valid.error().field, valid.error().message};
   b = out;
   return true;
@@ -231,8 +236,9 @@ std::string gnss_settings_to_toml(const GnssSettings& s) {
       "data_gap_probability = {:.17g}\ndata_gap_s = {:.17g}\n\n",
       r.unflagged_slip_fraction, r.half_cycle_slip_probability, r.half_cycle_resolve_s, r.elevation_dependent_noise,
       r.code_multipath_m, r.phase_multipath_m, r.multipath_tau_s, r.data_gap_probability, r.data_gap_s);
-  out += fmt::format("[gnss.broadcast_errors]\nradial_m = {:.17g}\nalong_m = {:.17g}\ncross_m = {:.17g}\nclock_m = {:.17g}\nclock_drift_sps = {:.17g}\n\n",
-                     b.radial_m, b.along_m, b.cross_m, b.clock_m, b.clock_drift_sps);
+  out += fmt::format("[gnss.broadcast_errors]\nradial_m = {:.17g}\nalong_m = {:.17g}\ncross_m = {:.17g}\nclock_m = {:.17g}\nclock_drift_sps = {:.17g}\n"
+                     "refresh_s = {:.17g}\nrefresh_correlation = {:.17g}\n\n",
+                     b.radial_m, b.along_m, b.cross_m, b.clock_m, b.clock_drift_sps, b.refresh_s, b.refresh_correlation);
   const auto& o = s.observations;
   out += fmt::format("[gnss.observations]\nfirst_start_s = {:.17g}\nperiod_s = {:.17g}\nduration_s = {:.17g}\nslew_lead_s = {:.17g}\n\n",
                      o.first_start_s, o.period_s, o.duration_s, o.slew_lead_s);

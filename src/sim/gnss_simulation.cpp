@@ -79,7 +79,8 @@ core::Result<World> load_world(const CampaignScenario& s) {
   if (!source.ok()) return core::Error{"gnss.source_time_gps", source.error().describe()};
   auto constellation = gnss::GpsConstellation::from_broadcast(set, *source, s.t0);
   if (!constellation.ok()) return core::Error{"gnss.nav_file", constellation.error().describe()};
-  auto satellites = GpsSatelliteTruth::create(*constellation, s.gnss.broadcast_errors, RandomStream(s.seed, "gps.satellites"));
+  auto satellites = GpsSatelliteTruth::create(*constellation, s.gnss.broadcast_errors, RandomStream(s.seed, "gps.satellites"),
+                                              s.gnss.duration_s);
   if (!satellites.ok()) return core::Error{"gnss.broadcast_errors." + satellites.error().field, satellites.error().message};
   w.satellites.emplace(std::move(satellites).value());
   if (!s.forces.earth_frame.eop.empty()) {
@@ -164,7 +165,7 @@ core::Result<bool> write_broadcast_navigation(const CampaignScenario& s, const W
   broadcast.version = 3.05;
   broadcast.ionosphere = world.nav.ionosphere;
   broadcast.leap_seconds = s.t0.gps_minus_utc();
-  broadcast.records.assign(world.satellites->broadcast().begin(), world.satellites->broadcast().end());
+  broadcast.records.assign(world.satellites->broadcast_records().begin(), world.satellites->broadcast_records().end());
   return gnss::files::write_rinex3_navigation(out_dir / "brdc.rnx", broadcast, "visors gnss-sim");
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/rtn_frame.hpp"
+#include "gnss/constellation.hpp"
 #include "gnss/gps_constants.hpp"
 #include "nav/cdgps_filter.hpp"
 #include "nav/orbit_time_update.hpp"
@@ -271,6 +272,56 @@ TEST(CdgpsFilterRecovery, StartedAKilometreOffItFixesWithinTwoMinutes) {
   EXPECT_GE(r.first_fix, 0);
   EXPECT_LE(r.first_fix, 120);  // measured 10
 }
+
+// A new broadcast data set 100 s into the run (t_oe 200 s later: the nearest from then on), the
+// same orbits with each satellite's clock moved by +-1 m: the GRAPHIC biases take the jump.
+struct EphemerisSwitch {
+  int switches = 0;          // GRAPHIC biases widened at the switch epoch
+  int rejected = 0;          // GRAPHIC rejected at the switch epoch
+  double absolute_error_m = 0.0;  // DSC, at the end
+};
+
+EphemerisSwitch switch_ephemerides(double switch_sigma_m) {
+  Simulation sim;
+  std::vector<gnss::BroadcastEphemeris> records = sim.records;
+  for (const gnss::BroadcastEphemeris& e : sim.records) {
+    gnss::BroadcastEphemeris next = gnss::propagate_to_epoch(e, e.toe + 200.0);  // exact here: no IDOT, no a_f1
+    next.af0_s = e.af0_s + (e.prn % 2 == 0 ? 1.0 : -1.0) / gnss::kGpsSpeedOfLight;
+    next.fit_interval_h = 4.0;
+    records.push_back(next);
+  }
+  const gnss::EphemerisSet broadcast = gnss::EphemerisSet::screen(records);
+  CdgpsSettings settings;
+  settings.ephemeris_switch_sigma_m = switch_sigma_m;
+  auto filter = CdgpsFilter::create(settings, model(), model()).value();
+  core::GpsTime t = epoch();
+  filter.initialise(t, sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  EphemerisSwitch out;
+  for (int n = 0; n < 300; ++n) {
+    if (n > 0) {
+      sim.step(t);
+      t = t + 1.0;
+      filter.predict(t);
+    }
+    const GpsReceiverEpoch dsc = sim.observe(t, 0), osc = sim.observe(t, 1);
+    const CdgpsEpochReport r = filter.update({&dsc, &osc, {}, {}}, broadcast, sim.frame);
+    if (n == 100) {
+      out.switches = r.ephemeris_switches;
+      out.rejected = r.graphic_rejected;
+    }
+  }
+  out.absolute_error_m = (CdgpsFilter::centre_of_mass(filter.x(), Craft::kDsc).r - sim.rx[0].x.r).norm();
+  return out;
+}
+
+TEST(CdgpsFilterEphemeris, ASwitchWidensEveryGraphicBiasOnce) { EXPECT_GE(switch_ephemerides(0.5).switches, 8); }
+
+TEST(CdgpsFilterEphemeris, ASwitchLosesNoGraphic) { EXPECT_EQ(switch_ephemerides(0.5).rejected, 0); }
+
+// The control: with a bias that cannot move, the 1 m jumps fail the gate.
+TEST(CdgpsFilterEphemeris, WithoutTheWideningTheJumpFailsTheGate) { EXPECT_GT(switch_ephemerides(1e-6).rejected, 0); }
+
+TEST(CdgpsFilterEphemeris, TheAbsoluteSolutionStaysMetric) { EXPECT_LT(switch_ephemerides(0.5).absolute_error_m, 1.0); }
 
 // A filter started at the simulation's true states.
 CdgpsFilter initialised_filter(const Simulation& sim) {

@@ -502,5 +502,62 @@ TEST_F(GpsReceiverTest, BroadcastErrorsAreMetreLevelAndDoNotDrift) {
   EXPECT_NEAR(rms_last, rms_first, 0.3 * rms_first);
 }
 
+// Refreshed data sets (sim/gps_satellite_truth.hpp): without errors each set is the truth record
+// re-expressed at its own t_oe, so over its 4-h fit interval it gives the truth's position and
+// clock exactly (the re-expression carries every secular term by its rate; reference: the truth
+// record itself, evaluated by the same IS-GPS-200 algorithm).
+TEST_F(GpsReceiverTest, RefreshedSetsWithoutErrorsAreTheTruth) {
+  BroadcastErrorSettings none;
+  none.radial_m = none.along_m = none.cross_m = none.clock_m = none.clock_drift_sps = 0.0;
+  const auto sats = GpsSatelliteTruth::create(*constellation_, none, RandomStream(3, "x"), 86400.0).value();
+  const std::size_t n = sats.truth().size();
+  ASSERT_EQ(sats.broadcast_records().size(), 13 * n);  // t_oe at 0, 2, ..., 24 h
+  double worst_m = 0.0, worst_clock_s = 0.0;
+  for (std::size_t i = 0; i < sats.broadcast_records().size(); ++i) {
+    const gnss::BroadcastEphemeris& set = sats.broadcast_records()[i];
+    for (double dt = -7200.0; dt <= 7200.0; dt += 1800.0) {
+      const core::GpsTime at = set.toe + dt;
+      const gnss::GpsSatelliteState b = gnss::broadcast_state(set, at);
+      const gnss::GpsSatelliteState truth = sats.true_state(i % n, at);
+      worst_m = std::max(worst_m, (b.r_ecef_m - truth.r_ecef_m).norm());
+      worst_clock_s = std::max(worst_clock_s, std::abs(gnss::l1_clock_bias_s(set, b) - truth.clock_bias_s));
+    }
+  }
+  EXPECT_LT(worst_m, 1e-4);         // measured 1.1e-6 m (round-off of 26,000 km)
+  EXPECT_LT(worst_clock_s, 1e-15);  // measured 1e-19 s; a_f0 not re-centred: ~1e-7 s
+}
+
+// With the default errors, the broadcast position jumps at each switch (t_oe_k - 1 h, where the
+// nearest set changes) by ~sqrt(2 (1 - rho)) = 0.32 of the error's RMS (the autoregression of the
+// file comment), and the later sets' errors keep the first set's level (no drift, no growth).
+TEST_F(GpsReceiverTest, RefreshedErrorsJumpALittleAtEachSwitch) {
+  const auto sats = GpsSatelliteTruth::create(*constellation_, {}, RandomStream(5, "x"), 86400.0).value();
+  const std::size_t n = sats.truth().size();
+  const auto records = sats.broadcast_records();
+  double jump2 = 0.0, error2 = 0.0;
+  int jumps = 0, errors = 0;
+  for (std::size_t i = n; i < records.size(); ++i) {
+    const core::GpsTime at = records[i].toe - 3600.0;
+    const Eigen::Vector3d now = gnss::broadcast_state(records[i], at).r_ecef_m;
+    jump2 += (now - gnss::broadcast_state(records[i - n], at).r_ecef_m).squaredNorm();
+    error2 += (now - sats.true_state(i % n, at).r_ecef_m).squaredNorm();
+    ++jumps;
+    ++errors;
+  }
+  const double jump = std::sqrt(jump2 / jumps), error = std::sqrt(error2 / errors);
+  EXPECT_NEAR(jump / error, std::sqrt(2.0 * (1.0 - 0.95)), 0.1);  // measured 0.28 (13 sets x 31 satellites)
+  EXPECT_GT(error, 0.8);  // the first set's bounds (test above): ~1.3 m; measured 1.76
+  EXPECT_LT(error, 2.0);
+}
+
+TEST_F(GpsReceiverTest, BadRefreshIsNamed) {
+  BroadcastErrorSettings e;
+  e.refresh_s = 60.0;
+  EXPECT_EQ(GpsSatelliteTruth::create(*constellation_, e, RandomStream(1, "x")).error().field, "refresh_s");
+  e = {};
+  e.refresh_correlation = 1.5;
+  EXPECT_EQ(GpsSatelliteTruth::create(*constellation_, e, RandomStream(1, "x")).error().field, "refresh_correlation");
+}
+
 }  // namespace
 }  // namespace visors::sim
