@@ -52,40 +52,48 @@ core::Result<gnss::EphemerisSet> read_ephemerides(const std::filesystem::path& p
 }
 
 // The numbers of a row's fields [first, first + out.size()); false at the first that is not one.
-bool parse_fields(const core::files::CsvRow& row, std::size_t first, std::span<double> out) {
+bool parse_fields(std::span<const std::string_view> fields, std::size_t first, std::span<double> out) {
   for (std::size_t i = 0; i < out.size(); ++i) {
-    const auto value = core::files::parse_finite_number(row.fields[first + i]);
+    const auto value = core::files::parse_finite_number(fields[first + i]);
     if (!value) return false;
     out[i] = *value;
   }
   return true;
 }
 
-core::Result<nav::Craft> craft_named(const std::string& name, const std::filesystem::path& path, std::size_t line) {
+core::Result<nav::Craft> craft_named(std::string_view name, std::size_t line) {
   if (name == "dsc") return nav::Craft::kDsc;
   if (name == "osc") return nav::Craft::kOsc;
-  return Error{path.string() + ": line " + std::to_string(line), "spacecraft '" + name + "' is neither dsc nor osc"};
+  return Error{"line " + std::to_string(line), "spacecraft '" + std::string(name) + "' is neither dsc nor osc"};
 }
+
+// Each row of a CSV file of the run, row by row (core/files/csv_file.hpp); errors name the file.
+core::Result<bool> read_rows(const std::filesystem::path& path, std::span<const std::string_view> columns,
+                             const char* what, const core::files::CsvRowVisitor& visit) {
+  auto ok = core::files::for_each_csv_row(path, columns, what, visit);
+  if (!ok) return Error{path.string() + ": " + ok.error().field, ok.error().message};
+  return true;
+}
+
+Error not_a_number(std::size_t line) { return Error{"line " + std::to_string(line), "not a number"}; }
 
 core::Result<bool> read_truth(const std::filesystem::path& path, RunInputs& in) {
   constexpr std::array<std::string_view, 13> columns = {
       "t_s",         "spacecraft",  "x_gcrf_m",        "y_gcrf_m",        "z_gcrf_m",        "vx_gcrf_mps",      "vy_gcrf_mps",
       "vz_gcrf_mps", "qw_body_to_gcrf", "qx_body_to_gcrf", "qy_body_to_gcrf", "qz_body_to_gcrf", "receiver_clock_m"};
-  auto rows = core::files::read_csv_columns(path, columns, "truth file");
-  if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
-  for (const auto& row : rows.value()) {
+  return read_rows(path, columns, "truth file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
     std::array<double, 12> v{};
-    if (!parse_fields(row, 2, std::span(v).subspan(1)) || !parse_fields(row, 0, std::span(v).first(1))) {
-      return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
+    if (!parse_fields(fields, 2, std::span(v).subspan(1)) || !parse_fields(fields, 0, std::span(v).first(1))) {
+      return not_a_number(line);
     }
-    const auto craft = craft_named(row.fields[1], path, row.line);
+    const auto craft = craft_named(fields[1], line);
     if (!craft) return craft.error();
     const Eigen::Quaterniond q(v[7], v[8], v[9], v[10]);
-    if (std::abs(q.norm() - 1.0) > 1e-6) return Error{path.string() + ": line " + std::to_string(row.line), "attitude quaternion is not unit"};
+    if (std::abs(q.norm() - 1.0) > 1e-6) return Error{"line " + std::to_string(line), "attitude quaternion is not unit"};
     in.truth[key_ms(v[0])][static_cast<std::size_t>(*craft)] =
         CraftTruth{{Eigen::Vector3d(v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6])}, q.normalized(), v[11]};
-  }
-  return true;
+    return true;
+  });
 }
 
 // maneuvers.csv: the commanded columns only (the executed ones are the truth).
@@ -93,35 +101,31 @@ core::Result<bool> read_impulses(const std::filesystem::path& path, RunInputs& i
   if (!std::filesystem::exists(path)) return true;
   constexpr std::array<std::string_view, 5> columns = {"t_s", "spacecraft", "dv_cmd_x_gcrf_mps", "dv_cmd_y_gcrf_mps",
                                                        "dv_cmd_z_gcrf_mps"};
-  auto rows = core::files::read_csv_columns(path, columns, "maneuver file");
-  if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
-  for (const auto& row : rows.value()) {
+  return read_rows(path, columns, "maneuver file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
     std::array<double, 4> v{};
-    if (!parse_fields(row, 0, std::span(v).first(1)) || !parse_fields(row, 2, std::span(v).subspan(1))) {
-      return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
+    if (!parse_fields(fields, 0, std::span(v).first(1)) || !parse_fields(fields, 2, std::span(v).subspan(1))) {
+      return not_a_number(line);
     }
-    const auto craft = craft_named(row.fields[1], path, row.line);
+    const auto craft = craft_named(fields[1], line);
     if (!craft) return craft.error();
     if (!in.impulses.empty() && v[0] < in.impulses.back().t_s) {
-      return Error{path.string() + ": line " + std::to_string(row.line), "impulses out of time order"};
+      return Error{"line " + std::to_string(line), "impulses out of time order"};
     }
     in.impulses.push_back({v[0], *craft, Eigen::Vector3d(v[1], v[2], v[3])});
-  }
-  return true;
+    return true;
+  });
 }
 
 // lrf.csv: the measured ranges (true_range_m is the truth).
 core::Result<bool> read_laser_ranges(const std::filesystem::path& path, RunInputs& in) {
   if (!std::filesystem::exists(path)) return true;
   constexpr std::array<std::string_view, 2> columns = {"t_s", "range_m"};
-  auto rows = core::files::read_csv_columns(path, columns, "laser range file");
-  if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
-  for (const auto& row : rows.value()) {
+  return read_rows(path, columns, "laser range file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
     std::array<double, 2> v{};
-    if (!parse_fields(row, 0, v)) return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
+    if (!parse_fields(fields, 0, v)) return not_a_number(line);
     in.laser_ranges_m[key_ms(v[0])] = v[1];
-  }
-  return true;
+    return true;
+  });
 }
 
 // summary.json's "observations" (absent in runs without the campaign attitude).
@@ -144,18 +148,15 @@ core::Result<bool> read_observation_spans(const std::filesystem::path& path, Run
 core::Result<bool> read_phase_truth(const std::filesystem::path& path, RunInputs& in) {
   constexpr std::array<std::string_view, 5> columns = {"t_s", "spacecraft", "prn", "ambiguity_cycles",
                                                        "receiver_phase_cycles"};
-  auto rows = core::files::read_csv_columns(path, columns, "channel truth file");
-  if (!rows) return Error{path.string() + ": " + rows.error().field, rows.error().message};
-  for (const auto& row : rows.value()) {
-    const auto t = core::files::parse_finite_number(row.fields[0]);
-    const auto prn = core::files::parse_finite_number(row.fields[2]);
-    const auto n = core::files::parse_finite_number(row.fields[3]);
-    const auto offset = core::files::parse_finite_number(row.fields[4]);
-    if (!t || !prn || !n || !offset) return Error{path.string() + ": line " + std::to_string(row.line), "not a number"};
-    auto& entry = in.phase_truth[key_ms(*t)][static_cast<int>(*prn)];
-    (row.fields[1] == "dsc" ? entry.first : entry.second) = *n + *offset;
-  }
-  return true;
+  return read_rows(path, columns, "channel truth file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
+    std::array<double, 4> v{};  // t_s, then prn, ambiguity, receiver phase
+    if (!parse_fields(fields, 0, std::span(v).first(1)) || !parse_fields(fields, 2, std::span(v).subspan(1))) {
+      return not_a_number(line);
+    }
+    auto& entry = in.phase_truth[key_ms(v[0])][static_cast<int>(v[1])];
+    (fields[1] == "dsc" ? entry.first : entry.second) = v[2] + v[3];
+    return true;
+  });
 }
 
 }  // namespace

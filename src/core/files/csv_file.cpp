@@ -42,14 +42,13 @@ std::optional<double> parse_finite_number(std::string_view text) {
   return value;
 }
 
-Result<std::vector<CsvRow>> read_csv_columns(const std::filesystem::path& path,
-                                             std::span<const std::string_view> columns,
-                                             const std::string& what) {
+Result<bool> for_each_csv_row(const std::filesystem::path& path, std::span<const std::string_view> columns,
+                              const std::string& what, const CsvRowVisitor& visit) {
   std::ifstream in(path);
   if (!in) return Error{"", "cannot open " + what + " '" + path.string() + "'"};
   std::vector<std::size_t> index(columns.size());
+  std::vector<std::string_view> wanted(columns.size());
   std::size_t field_count = 0;
-  std::vector<CsvRow> rows;
   std::string line;
   std::size_t line_number = 0;
   bool header_seen = false;
@@ -73,12 +72,22 @@ Result<std::vector<CsvRow>> read_csv_columns(const std::filesystem::path& path,
       return line_error(line_number, "has " + std::to_string(fields.size()) + " fields, the header " +
                                          std::to_string(field_count));
     }
-    CsvRow row{line_number, {}};
-    row.fields.reserve(columns.size());
-    for (const std::size_t i : index) row.fields.emplace_back(fields[i]);
-    rows.push_back(std::move(row));
+    for (std::size_t c = 0; c < index.size(); ++c) wanted[c] = fields[index[c]];
+    if (auto ok = visit(line_number, wanted); !ok) return ok.error();
   }
   if (!header_seen) return Error{"", what + " '" + path.string() + "' is empty"};
+  return true;
+}
+
+Result<std::vector<CsvRow>> read_csv_columns(const std::filesystem::path& path,
+                                             std::span<const std::string_view> columns,
+                                             const std::string& what) {
+  std::vector<CsvRow> rows;
+  auto ok = for_each_csv_row(path, columns, what, [&rows](std::size_t line, std::span<const std::string_view> fields) {
+    rows.push_back(CsvRow{line, std::vector<std::string>(fields.begin(), fields.end())});
+    return Result<bool>(true);
+  });
+  if (!ok) return ok.error();
   return rows;
 }
 

@@ -1,11 +1,13 @@
 #pragma once
-// Reading small reference tables in CSV with a header line (Harris-Priester densities, CelesTrak
-// space weather): the wanted columns are found by header name, so column order and extra columns
-// do not matter; blank lines are skipped; fields are trimmed of blanks. Ground-side file I/O
-// (visors_core_files): models are built from the returned rows once, at start-up.
+// Reading tables in CSV with a header line (Harris-Priester densities, CelesTrak space weather,
+// the simulator's truth files): the wanted columns are found by header name, so column order and
+// extra columns do not matter; blank lines are skipped; fields are trimmed of blanks. Ground-side
+// file I/O (visors_core_files). Small tables are read whole (read_csv_columns); large ones (a
+// day's channels_truth.csv is 240 MB: held as strings, 380 MB more) row by row (for_each_csv_row).
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -28,6 +30,14 @@ struct CsvRow {
 Result<std::vector<CsvRow>> read_csv_columns(const std::filesystem::path& path,
                                              std::span<const std::string_view> columns,
                                              const std::string& what);
+
+/// Called with each data row's line number and its wanted fields (in the order asked for; the
+/// views live until the call returns); an error stops the reading and is returned.
+using CsvRowVisitor = std::function<Result<bool>(std::size_t line, std::span<const std::string_view> fields)>;
+
+/// The rows of `path` one at a time, as read_csv_columns, without holding the file.
+Result<bool> for_each_csv_row(const std::filesystem::path& path, std::span<const std::string_view> columns,
+                              const std::string& what, const CsvRowVisitor& visit);
 
 /// A finite decimal number filling the whole field; nullopt otherwise (empty, trailing text, inf).
 std::optional<double> parse_finite_number(std::string_view text);
