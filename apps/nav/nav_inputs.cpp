@@ -20,6 +20,7 @@ namespace visors::nav_app {
 namespace {
 
 using core::Error;
+using Fields = std::span<const std::string_view>;  // a CSV row's wanted fields (core/files/csv_file.hpp)
 
 core::Result<std::vector<nav::GpsReceiverEpoch>> read_observations(const std::filesystem::path& path) {
   auto file = gnss::files::read_rinex_observations(path);
@@ -52,7 +53,7 @@ core::Result<gnss::EphemerisSet> read_ephemerides(const std::filesystem::path& p
 }
 
 // The numbers of a row's fields [first, first + out.size()); false at the first that is not one.
-bool parse_fields(std::span<const std::string_view> fields, std::size_t first, std::span<double> out) {
+bool parse_fields(Fields fields, std::size_t first, std::span<double> out) {
   for (std::size_t i = 0; i < out.size(); ++i) {
     const auto value = core::files::parse_finite_number(fields[first + i]);
     if (!value) return false;
@@ -81,7 +82,7 @@ core::Result<bool> read_truth(const std::filesystem::path& path, RunInputs& in) 
   constexpr std::array<std::string_view, 13> columns = {
       "t_s",         "spacecraft",  "x_gcrf_m",        "y_gcrf_m",        "z_gcrf_m",        "vx_gcrf_mps",      "vy_gcrf_mps",
       "vz_gcrf_mps", "qw_body_to_gcrf", "qx_body_to_gcrf", "qy_body_to_gcrf", "qz_body_to_gcrf", "receiver_clock_m"};
-  return read_rows(path, columns, "truth file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
+  return read_rows(path, columns, "truth file", [&in](std::size_t line, Fields fields) -> core::Result<bool> {
     std::array<double, 12> v{};
     if (!parse_fields(fields, 2, std::span(v).subspan(1)) || !parse_fields(fields, 0, std::span(v).first(1))) {
       return not_a_number(line);
@@ -101,7 +102,7 @@ core::Result<bool> read_impulses(const std::filesystem::path& path, RunInputs& i
   if (!std::filesystem::exists(path)) return true;
   constexpr std::array<std::string_view, 5> columns = {"t_s", "spacecraft", "dv_cmd_x_gcrf_mps", "dv_cmd_y_gcrf_mps",
                                                        "dv_cmd_z_gcrf_mps"};
-  return read_rows(path, columns, "maneuver file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
+  return read_rows(path, columns, "maneuver file", [&in](std::size_t line, Fields fields) -> core::Result<bool> {
     std::array<double, 4> v{};
     if (!parse_fields(fields, 0, std::span(v).first(1)) || !parse_fields(fields, 2, std::span(v).subspan(1))) {
       return not_a_number(line);
@@ -120,7 +121,7 @@ core::Result<bool> read_impulses(const std::filesystem::path& path, RunInputs& i
 core::Result<bool> read_laser_ranges(const std::filesystem::path& path, RunInputs& in) {
   if (!std::filesystem::exists(path)) return true;
   constexpr std::array<std::string_view, 2> columns = {"t_s", "range_m"};
-  return read_rows(path, columns, "laser range file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
+  return read_rows(path, columns, "laser range file", [&in](std::size_t line, Fields fields) -> core::Result<bool> {
     std::array<double, 2> v{};
     if (!parse_fields(fields, 0, v)) return not_a_number(line);
     in.laser_ranges_m[key_ms(v[0])] = v[1];
@@ -148,7 +149,7 @@ core::Result<bool> read_observation_spans(const std::filesystem::path& path, Run
 core::Result<bool> read_phase_truth(const std::filesystem::path& path, RunInputs& in) {
   constexpr std::array<std::string_view, 5> columns = {"t_s", "spacecraft", "prn", "ambiguity_cycles",
                                                        "receiver_phase_cycles"};
-  return read_rows(path, columns, "channel truth file", [&in](std::size_t line, std::span<const std::string_view> fields) -> core::Result<bool> {
+  return read_rows(path, columns, "channel truth file", [&in](std::size_t line, Fields fields) -> core::Result<bool> {
     std::array<double, 4> v{};  // t_s, then prn, ambiguity, receiver phase
     if (!parse_fields(fields, 0, std::span(v).first(1)) || !parse_fields(fields, 2, std::span(v).subspan(1))) {
       return not_a_number(line);
