@@ -6,7 +6,8 @@
 //                                   analytic formation: start_science, one 1.6-orbit transfer
 //                                   leg, science mode, the MPC, least squares every 45 s, the
 //                                   last burn and the first observation (until the transfer back)
-// Each reports median_us, p999_us and max_us over the steps. The full campaign is timed with
+//   BM_Record*                      encode + decode of one binary record (gnc/channel_record.hpp)
+// Each step benchmark reports median_us, p999_us and max_us over the steps. The full campaign is timed with
 //   /usr/bin/time -v build/apps/visors run   (README "Performance").
 // Run: ninja -C build visors_bench_gnc && build/bench/visors_bench_gnc
 
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <vector>
 
+#include "gnc/channel_record.hpp"
 #include "gnc/flight_component.hpp"
 #include "gnc/formation_harness.hpp"
 
@@ -63,5 +65,31 @@ void BM_FlightComponentStep(benchmark::State& state) {
   report(state, us);
 }
 BENCHMARK(BM_FlightComponentStep)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// Encode and decode of one record (gnc/channel_record.hpp): the navigation record (288 bytes,
+// the largest) and the ground command (32 bytes), CRC-32C included.
+template <class Message>
+void codec_round_trip(benchmark::State& state, const Message& message) {
+  RecordBuffer buffer{};
+  Message out{};
+  RecordHeader header;
+  std::uint32_t sequence = 0;
+  for (auto _ : state) {
+    const std::size_t n = encode(message, ++sequence, buffer);
+    benchmark::DoNotOptimize(decode(std::span(buffer).first(n), out, header));
+    benchmark::DoNotOptimize(out);
+  }
+}
+
+void BM_RecordNavigation(benchmark::State& state) {
+  test::FormationHarness harness(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  codec_round_trip(state, *harness.inputs(1.0).navigation);
+}
+BENCHMARK(BM_RecordNavigation);
+
+void BM_RecordGroundCommand(benchmark::State& state) {
+  codec_round_trip(state, GroundCommand{kT0, GroundCommand::Kind::kStartScience, 10});
+}
+BENCHMARK(BM_RecordGroundCommand);
 
 }  // namespace

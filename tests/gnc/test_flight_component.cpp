@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "formation_harness.hpp"
+#include "gnc/channel_record.hpp"
 #include "gnc/flight_component.hpp"
 #include "support/allocation_counter.hpp"
 
@@ -167,6 +168,29 @@ TEST(FlightComponent, EscapeFiresAndEndsInManual) {
   // the escape must fire at least once; measured 2 maneuvers (2026-11)
   EXPECT_GT(maneuvers, 0);
   EXPECT_EQ(mode, Mode::kManual);
+}
+
+// The binary records of the inputs (gnc/channel_record.hpp), encoded, decoded, refused and
+// ordered, allocate nothing. (This file holds the executable's allocation counter.)
+TEST(FlightComponent, ChannelRecordsAllocateNothing) {
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  const GncInputs in = h.inputs(1.0);
+  ASSERT_TRUE(in.navigation.has_value());
+  RecordBuffer buffer{};
+  NavigationSolution out;
+  RecordHeader header;
+  SequenceGate gate;
+  RecordStatus accepted = RecordStatus::kBadSize, refused = RecordStatus::kAccepted;
+  const long allocations = visors::test::count_allocations([&] {
+    const std::size_t n = encode(*in.navigation, 1, buffer);
+    accepted = decode(std::span(buffer).first(n), out, header);
+    (void)gate.admit(header);
+    buffer[30] ^= 0x10;
+    refused = decode(std::span(buffer).first(n), out, header);
+  });
+  EXPECT_EQ(allocations, 0);
+  EXPECT_EQ(accepted, RecordStatus::kAccepted);
+  EXPECT_EQ(refused, RecordStatus::kBadChecksum);
 }
 
 // A routine step (standby inside the deadband, safety check included) allocates nothing.

@@ -1,0 +1,285 @@
+#include "gnc/channel_record.hpp"
+
+#include <bit>
+
+#include "gnc/crc32c.hpp"
+
+namespace visors::gnc {
+namespace {
+
+constexpr std::uint8_t kMagic0 = 'V', kMagic1 = 'G';
+constexpr int kModes = 6;          // gnc_mode.hpp, kManual .. kEscape
+constexpr int kCommandKinds = 7;   // messages.hpp, kToManual .. kMakePassive
+static_assert(static_cast<int>(Mode::kEscape) == kModes - 1, "a new mode needs its code here");
+static_assert(static_cast<int>(GroundCommand::Kind::kMakePassive) == kCommandKinds - 1, "a new command needs its code here");
+
+// Little-endian writes into a buffer the caller sized (write_record checks it once).
+class Writer {
+ public:
+  explicit Writer(std::span<std::uint8_t> out) : out_(out) {}
+  void u8(std::uint8_t v) { out_[pos_++] = v; }
+  void u16(std::uint16_t v) { unsigned_le(v, 2); }
+  void u32(std::uint32_t v) { unsigned_le(v, 4); }
+  void i32(std::int32_t v) { unsigned_le(static_cast<std::uint32_t>(v), 4); }
+  void i64(std::int64_t v) { unsigned_le(static_cast<std::uint64_t>(v), 8); }
+  void f64(double v) { unsigned_le(std::bit_cast<std::uint64_t>(v), 8); }
+  void time(core::GpsTime t) { i64(t.nanoseconds()); }
+  void vector3(const Eigen::Vector3d& v) {
+    for (int i = 0; i < 3; ++i) f64(v(i));
+  }
+  void zeros(std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) u8(0);
+  }
+  [[nodiscard]] std::size_t position() const { return pos_; }
+
+ private:
+  void unsigned_le(std::uint64_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i) u8(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+  std::span<std::uint8_t> out_;
+  std::size_t pos_ = 0;
+};
+
+// Little-endian reads from a record whose size was checked (read_frame).
+class Reader {
+ public:
+  explicit Reader(std::span<const std::uint8_t> in, std::size_t position) : in_(in), pos_(position) {}
+  std::uint8_t u8() { return in_[pos_++]; }
+  std::uint16_t u16() { return static_cast<std::uint16_t>(unsigned_le(2)); }
+  std::uint32_t u32() { return static_cast<std::uint32_t>(unsigned_le(4)); }
+  std::int32_t i32() { return static_cast<std::int32_t>(static_cast<std::uint32_t>(unsigned_le(4))); }
+  std::int64_t i64() { return static_cast<std::int64_t>(unsigned_le(8)); }
+  double f64() { return std::bit_cast<double>(unsigned_le(8)); }
+  core::GpsTime time() { return core::GpsTime::from_nanoseconds(i64()); }
+  Eigen::Vector3d vector3() {
+    Eigen::Vector3d v;
+    for (int i = 0; i < 3; ++i) v(i) = f64();
+    return v;
+  }
+  void skip(std::size_t n) { pos_ += n; }
+
+ private:
+  std::uint64_t unsigned_le(int bytes) {
+    std::uint64_t v = 0;
+    for (int i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(in_[pos_++]) << (8 * i);
+    return v;
+  }
+  std::span<const std::uint8_t> in_;
+  std::size_t pos_ = 0;
+};
+
+// Header, payload (written by `payload`), checksum; 0 when `out` is too small.
+template <class Payload>
+std::size_t write_record(Channel channel, core::GpsTime t, std::uint32_t sequence, std::span<std::uint8_t> out,
+                         Payload&& payload) {
+  const std::size_t size = record_size(channel);
+  if (out.size() < size) return 0;
+  Writer w(out);
+  w.u8(kMagic0);
+  w.u8(kMagic1);
+  w.u8(static_cast<std::uint8_t>(channel));
+  w.u8(kRecordVersion);
+  w.u16(static_cast<std::uint16_t>(size));
+  w.u16(0);
+  w.time(t);
+  w.u32(sequence);
+  payload(w);
+  const std::uint32_t crc = crc32c(out.first(size - kChecksumBytes));
+  w.u32(crc);
+  return w.position();
+}
+
+// The structural checks of the file comment, up to the payload.
+RecordStatus read_frame(std::span<const std::uint8_t> in, Channel expected, RecordHeader& header) {
+  if (in.size() < kHeaderBytes) return RecordStatus::kTruncated;
+  Reader r(in, 0);
+  if (r.u8() != kMagic0 || r.u8() != kMagic1) return RecordStatus::kBadMagic;
+  const std::uint8_t channel = r.u8();
+  const std::uint8_t version = r.u8();
+  const std::uint16_t size = r.u16();
+  if (size < kHeaderBytes + kChecksumBytes || size > kMaxRecordBytes) return RecordStatus::kBadSize;
+  if (in.size() < size) return RecordStatus::kTruncated;
+  if (crc32c(in.first(size - kChecksumBytes)) != Reader(in, size - kChecksumBytes).u32()) return RecordStatus::kBadChecksum;
+  if (channel < 1 || channel > kChannels) return RecordStatus::kUnknownChannel;
+  if (channel != static_cast<std::uint8_t>(expected)) return RecordStatus::kWrongChannel;
+  if (version != kRecordVersion) return RecordStatus::kBadVersion;
+  if (size != record_size(expected)) return RecordStatus::kBadSize;
+  r.skip(2);  // reserved
+  header.channel = expected;
+  header.version = version;
+  header.size = size;
+  header.t = r.time();
+  header.sequence = r.u32();
+  return RecordStatus::kAccepted;
+}
+
+bool flag(std::uint8_t byte, bool& out) {
+  if (byte > 1) return false;
+  out = byte == 1;
+  return true;
+}
+
+}  // namespace
+
+std::string_view to_string(RecordStatus status) {
+  switch (status) {
+    case RecordStatus::kAccepted: return "accepted";
+    case RecordStatus::kTruncated: return "truncated";
+    case RecordStatus::kBadMagic: return "bad_magic";
+    case RecordStatus::kUnknownChannel: return "unknown_channel";
+    case RecordStatus::kWrongChannel: return "wrong_channel";
+    case RecordStatus::kBadVersion: return "bad_version";
+    case RecordStatus::kBadSize: return "bad_size";
+    case RecordStatus::kBadChecksum: return "bad_checksum";
+    case RecordStatus::kBadEnumeration: return "bad_enumeration";
+    case RecordStatus::kOutOfOrder: return "out_of_order";
+  }
+  return "unknown";
+}
+
+std::size_t encode(const TimeAtTone& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kTimeAtTone, m.t, sequence, out, [&m](Writer& w) {
+    w.f64(m.q_body_to_gcrf.w());
+    w.f64(m.q_body_to_gcrf.x());
+    w.f64(m.q_body_to_gcrf.y());
+    w.f64(m.q_body_to_gcrf.z());
+  });
+}
+
+std::size_t encode(const NavigationSolution& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kNavigation, m.t, sequence, out, [&m](Writer& w) {
+    for (const core::StateVector* x : {&m.chief_gcrf, &m.deputy_gcrf}) {
+      w.vector3(x->r);
+      w.vector3(x->v);
+    }
+    for (int i = 0; i < 6; ++i) {
+      for (int j = i; j < 6; ++j) w.f64(m.relative_covariance_rtn(i, j));
+    }
+  });
+}
+
+std::size_t encode(const CrosslinkMessage& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kCrosslink, m.t, sequence, out, [&m](Writer& w) {
+    w.u8(static_cast<std::uint8_t>(m.sender));
+    w.u8(static_cast<std::uint8_t>(m.mode));
+    w.u8(m.sender_active ? 1 : 0);
+    w.u8(m.has_observation ? 1 : 0);
+    w.i32(m.observations_done);
+    w.i32(m.observations_planned);
+    w.i32(m.observation_index);
+    w.time(m.slew_start);
+    w.time(m.observation_start);
+    w.time(m.observation_end);
+  });
+}
+
+std::size_t encode(const GroundCommand& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kGroundCommand, m.t, sequence, out, [&m](Writer& w) {
+    w.u8(static_cast<std::uint8_t>(m.kind));
+    w.zeros(3);
+    w.i32(m.observations);
+  });
+}
+
+std::size_t encode(const PropulsionTelemetry& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kPropulsion, m.t, sequence, out, [&m](Writer& w) {
+    w.vector3(m.dv_body_mps);
+    w.f64(m.mass_kg);
+    w.u8(m.executed ? 1 : 0);
+    w.zeros(7);
+  });
+}
+
+namespace {
+
+// The frame's checks, then `parse(reader, message)` on the payload (false: an enumeration out of
+// range); the outputs are written only when the whole record is accepted.
+template <class Message, class Parse>
+RecordStatus decode_record(std::span<const std::uint8_t> in, Channel channel, Message& message, RecordHeader& header,
+                           Parse&& parse) {
+  RecordHeader h;
+  if (const RecordStatus s = read_frame(in, channel, h); s != RecordStatus::kAccepted) return s;
+  Reader r(in, kHeaderBytes);
+  Message m{};
+  m.t = h.t;
+  if (!parse(r, m)) return RecordStatus::kBadEnumeration;
+  message = m;
+  header = h;
+  return RecordStatus::kAccepted;
+}
+
+}  // namespace
+
+RecordStatus decode(std::span<const std::uint8_t> in, TimeAtTone& message, RecordHeader& header) {
+  return decode_record(in, Channel::kTimeAtTone, message, header, [](Reader& r, TimeAtTone& m) {
+    const double w = r.f64(), x = r.f64(), y = r.f64(), z = r.f64();
+    m.q_body_to_gcrf = Eigen::Quaterniond(w, x, y, z);
+    return true;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, NavigationSolution& message, RecordHeader& header) {
+  return decode_record(in, Channel::kNavigation, message, header, [](Reader& r, NavigationSolution& m) {
+    for (core::StateVector* x : {&m.chief_gcrf, &m.deputy_gcrf}) {
+      x->r = r.vector3();
+      x->v = r.vector3();
+    }
+    for (int i = 0; i < 6; ++i) {
+      for (int j = i; j < 6; ++j) m.relative_covariance_rtn(i, j) = m.relative_covariance_rtn(j, i) = r.f64();
+    }
+    return true;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, CrosslinkMessage& message, RecordHeader& header) {
+  return decode_record(in, Channel::kCrosslink, message, header, [](Reader& r, CrosslinkMessage& m) {
+    const std::uint8_t sender = r.u8(), mode = r.u8();
+    if (sender > 1 || mode >= kModes) return false;
+    m.sender = static_cast<Spacecraft>(sender);
+    m.mode = static_cast<Mode>(mode);
+    if (!flag(r.u8(), m.sender_active) || !flag(r.u8(), m.has_observation)) return false;
+    m.observations_done = r.i32();
+    m.observations_planned = r.i32();
+    m.observation_index = r.i32();
+    m.slew_start = r.time();
+    m.observation_start = r.time();
+    m.observation_end = r.time();
+    return true;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, GroundCommand& message, RecordHeader& header) {
+  return decode_record(in, Channel::kGroundCommand, message, header, [](Reader& r, GroundCommand& m) {
+    const std::uint8_t kind = r.u8();
+    if (kind >= kCommandKinds) return false;
+    m.kind = static_cast<GroundCommand::Kind>(kind);
+    r.skip(3);
+    m.observations = r.i32();
+    return true;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, PropulsionTelemetry& message, RecordHeader& header) {
+  return decode_record(in, Channel::kPropulsion, message, header, [](Reader& r, PropulsionTelemetry& m) {
+    m.dv_body_mps = r.vector3();
+    m.mass_kg = r.f64();
+    return flag(r.u8(), m.executed);
+  });
+}
+
+RecordStatus SequenceGate::admit(const RecordHeader& header) {
+  const auto c = static_cast<std::size_t>(header.channel);
+  // Serial-number comparison (RFC 1982): ahead when the u32 difference, read signed, is > 0.
+  if (seen_[c] && static_cast<std::int32_t>(header.sequence - last_[c]) <= 0) return RecordStatus::kOutOfOrder;
+  seen_[c] = true;
+  last_[c] = header.sequence;
+  return RecordStatus::kAccepted;
+}
+
+std::int64_t RecordCounters::refused() const {
+  std::int64_t n = 0;
+  for (std::size_t i = 1; i < by_status.size(); ++i) n += by_status[i];
+  return n;
+}
+
+}  // namespace visors::gnc

@@ -1,0 +1,125 @@
+#pragma once
+// The flight component's channels as fixed-size binary records (architecture.md "The flight
+// component's channels"): what a host application exchanges with it, and what the simulator
+// passes through so that the loop exercises the codec.
+//
+// Record = header (20 bytes) + payload (fixed per channel and version) + CRC-32C (4 bytes) of
+// header and payload (gnc/crc32c.hpp). Every number little-endian; doubles as their IEEE 754
+// bits; times as GPS nanoseconds (core::GpsTime). Header:
+//   0  magic      2 bytes 'V' 'G'
+//   2  channel    u8 (Channel)
+//   3  version    u8 (kRecordVersion)
+//   4  size       u16, the whole record [bytes]
+//   6  reserved   u16, 0
+//   8  time tag   i64 [GPS ns]: the message's own time (its `t`)
+//   16 sequence   u32, per channel and sender, +1 per record (wraps)
+// Payloads (offsets from the payload's start):
+//   time at tone   q_body_to_gcrf w, x, y, z (4 f64)                                       32
+//   navigation     chief r, v; deputy r, v (GCRF; 12 f64); relative covariance RTN, upper
+//                  triangle row by row (21 f64)                                            264
+//   crosslink      sender, mode, sender_active, has_observation (4 u8); observations_done,
+//                  observations_planned, observation_index (3 i32); slew_start,
+//                  observation_start, observation_end (3 i64 ns)                           40
+//   ground command kind (u8), 3 bytes 0, observations (i32)                               8
+//   propulsion     dv_body (3 f64), mass (f64), executed (u8), 7 bytes 0                  40
+//
+// Decoding checks the structure only, in this order, and names the first failure
+// (RecordStatus): header length, magic, declared size within bounds, length against it,
+// checksum, channel known, channel the one decoded, version, size the channel's, enumerations.
+// The checksum comes before the channel and version: a corrupted byte reads as a bad checksum, and
+// kWrongChannel means an intact record of another channel. The values
+// (finite, plausible, not stale) are the messages' own validation (gnc/messages.hpp validate);
+// the order of arrival is SequenceGate's. No allocation, no exception: flight code.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "core/gps_time.hpp"
+#include "gnc/messages.hpp"
+
+namespace visors::gnc {
+
+enum class Channel : std::uint8_t {
+  kTimeAtTone = 1,
+  kNavigation = 2,
+  kCrosslink = 3,
+  kGroundCommand = 4,
+  kPropulsion = 5,
+};
+inline constexpr int kChannels = 5;
+inline constexpr std::uint8_t kRecordVersion = 1;
+inline constexpr std::size_t kHeaderBytes = 20;
+inline constexpr std::size_t kChecksumBytes = 4;
+
+/// Why a record was refused (or kAccepted), for the telemetry's counters.
+enum class RecordStatus : std::uint8_t {
+  kAccepted,
+  kTruncated,       // shorter than its header, or than the size it declares
+  kBadMagic,
+  kUnknownChannel,
+  kWrongChannel,    // a valid record of another channel than the one decoded
+  kBadVersion,
+  kBadSize,         // the declared size is not the channel's
+  kBadChecksum,
+  kBadEnumeration,  // an enumerated field out of its range
+  kOutOfOrder,      // sequence not after the last accepted one (SequenceGate)
+};
+inline constexpr int kRecordStatuses = 10;
+std::string_view to_string(RecordStatus status);
+
+struct RecordHeader {
+  Channel channel = Channel::kTimeAtTone;
+  std::uint8_t version = 0;
+  std::uint16_t size = 0;
+  core::GpsTime t;
+  std::uint32_t sequence = 0;
+};
+
+/// The whole record's size of a channel [bytes].
+[[nodiscard]] constexpr std::size_t record_size(Channel channel) {
+  constexpr std::size_t kPayload[] = {0, 32, 264, 40, 8, 40};
+  return kHeaderBytes + kPayload[static_cast<std::size_t>(channel)] + kChecksumBytes;
+}
+inline constexpr std::size_t kMaxRecordBytes = record_size(Channel::kNavigation);
+using RecordBuffer = std::array<std::uint8_t, kMaxRecordBytes>;
+
+/// Writes the record of `message` with `sequence` into `out`; returns its size, or 0 when `out`
+/// is too small (nothing written then).
+std::size_t encode(const TimeAtTone& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const NavigationSolution& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const CrosslinkMessage& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const GroundCommand& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const PropulsionTelemetry& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+
+/// Reads a record of the message's channel from the start of `in` (extra bytes after it are
+/// ignored). On kAccepted `message` and `header` hold it; otherwise they are unchanged.
+RecordStatus decode(std::span<const std::uint8_t> in, TimeAtTone& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, NavigationSolution& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, CrosslinkMessage& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, GroundCommand& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, PropulsionTelemetry& message, RecordHeader& header);
+
+/// The order of arrival per channel: a record is admitted when its sequence number follows the
+/// last admitted one of its channel (serial-number arithmetic, RFC 1982: within 2^31 ahead, so
+/// the u32 may wrap); the first of each channel is always admitted. A repeated or older record
+/// is kOutOfOrder and changes nothing.
+class SequenceGate {
+ public:
+  RecordStatus admit(const RecordHeader& header);
+
+ private:
+  std::array<std::uint32_t, kChannels + 1> last_{};
+  std::array<bool, kChannels + 1> seen_{};
+};
+
+/// Records refused, by reason (telemetry).
+struct RecordCounters {
+  std::array<std::int64_t, kRecordStatuses> by_status{};
+  void count(RecordStatus status) { ++by_status[static_cast<std::size_t>(status)]; }
+  [[nodiscard]] std::int64_t refused() const;
+};
+
+}  // namespace visors::gnc
