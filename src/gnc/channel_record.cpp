@@ -56,7 +56,12 @@ class Reader {
     for (int i = 0; i < 3; ++i) v(i) = f64();
     return v;
   }
-  void skip(std::size_t n) { pos_ += n; }
+  /// The next n bytes are all 0.
+  bool zeros(std::size_t n) {
+    bool all = true;
+    for (std::size_t i = 0; i < n; ++i) all = all && u8() == 0;
+    return all;
+  }
 
  private:
   std::uint64_t unsigned_le(int bytes) {
@@ -104,7 +109,7 @@ RecordStatus read_frame(std::span<const std::uint8_t> in, Channel expected, Reco
   if (channel != static_cast<std::uint8_t>(expected)) return RecordStatus::kWrongChannel;
   if (version != kRecordVersion) return RecordStatus::kBadVersion;
   if (size != record_size(expected)) return RecordStatus::kBadSize;
-  r.skip(2);  // reserved
+  if (r.u16() != 0) return RecordStatus::kBadPadding;  // reserved
   header.channel = expected;
   header.version = version;
   header.size = size;
@@ -132,6 +137,7 @@ std::string_view to_string(RecordStatus status) {
     case RecordStatus::kBadSize: return "bad_size";
     case RecordStatus::kBadChecksum: return "bad_checksum";
     case RecordStatus::kBadEnumeration: return "bad_enumeration";
+    case RecordStatus::kBadPadding: return "bad_padding";
     case RecordStatus::kOutOfOrder: return "out_of_order";
   }
   return "unknown";
@@ -192,8 +198,8 @@ std::size_t encode(const PropulsionTelemetry& m, std::uint32_t sequence, std::sp
 
 namespace {
 
-// The frame's checks, then `parse(reader, message)` on the payload (false: an enumeration out of
-// range); the outputs are written only when the whole record is accepted.
+// The frame's checks, then `parse(reader, message)` on the payload (kAccepted, or the reason);
+// the outputs are written only when the whole record is accepted.
 template <class Message, class Parse>
 RecordStatus decode_record(std::span<const std::uint8_t> in, Channel channel, Message& message, RecordHeader& header,
                            Parse&& parse) {
@@ -202,7 +208,7 @@ RecordStatus decode_record(std::span<const std::uint8_t> in, Channel channel, Me
   Reader r(in, kHeaderBytes);
   Message m{};
   m.t = h.t;
-  if (!parse(r, m)) return RecordStatus::kBadEnumeration;
+  if (const RecordStatus s = parse(r, m); s != RecordStatus::kAccepted) return s;
   message = m;
   header = h;
   return RecordStatus::kAccepted;
@@ -214,7 +220,7 @@ RecordStatus decode(std::span<const std::uint8_t> in, TimeAtTone& message, Recor
   return decode_record(in, Channel::kTimeAtTone, message, header, [](Reader& r, TimeAtTone& m) {
     const double w = r.f64(), x = r.f64(), y = r.f64(), z = r.f64();
     m.q_body_to_gcrf = Eigen::Quaterniond(w, x, y, z);
-    return true;
+    return RecordStatus::kAccepted;
   });
 }
 
@@ -227,35 +233,35 @@ RecordStatus decode(std::span<const std::uint8_t> in, NavigationSolution& messag
     for (int i = 0; i < 6; ++i) {
       for (int j = i; j < 6; ++j) m.relative_covariance_rtn(i, j) = m.relative_covariance_rtn(j, i) = r.f64();
     }
-    return true;
+    return RecordStatus::kAccepted;
   });
 }
 
 RecordStatus decode(std::span<const std::uint8_t> in, CrosslinkMessage& message, RecordHeader& header) {
   return decode_record(in, Channel::kCrosslink, message, header, [](Reader& r, CrosslinkMessage& m) {
     const std::uint8_t sender = r.u8(), mode = r.u8();
-    if (sender > 1 || mode >= kModes) return false;
+    if (sender > 1 || mode >= kModes) return RecordStatus::kBadEnumeration;
     m.sender = static_cast<Spacecraft>(sender);
     m.mode = static_cast<Mode>(mode);
-    if (!flag(r.u8(), m.sender_active) || !flag(r.u8(), m.has_observation)) return false;
+    if (!flag(r.u8(), m.sender_active) || !flag(r.u8(), m.has_observation)) return RecordStatus::kBadEnumeration;
     m.observations_done = r.i32();
     m.observations_planned = r.i32();
     m.observation_index = r.i32();
     m.slew_start = r.time();
     m.observation_start = r.time();
     m.observation_end = r.time();
-    return true;
+    return RecordStatus::kAccepted;
   });
 }
 
 RecordStatus decode(std::span<const std::uint8_t> in, GroundCommand& message, RecordHeader& header) {
   return decode_record(in, Channel::kGroundCommand, message, header, [](Reader& r, GroundCommand& m) {
     const std::uint8_t kind = r.u8();
-    if (kind >= kCommandKinds) return false;
+    if (kind >= kCommandKinds) return RecordStatus::kBadEnumeration;
     m.kind = static_cast<GroundCommand::Kind>(kind);
-    r.skip(3);
+    if (!r.zeros(3)) return RecordStatus::kBadPadding;
     m.observations = r.i32();
-    return true;
+    return RecordStatus::kAccepted;
   });
 }
 
@@ -263,7 +269,8 @@ RecordStatus decode(std::span<const std::uint8_t> in, PropulsionTelemetry& messa
   return decode_record(in, Channel::kPropulsion, message, header, [](Reader& r, PropulsionTelemetry& m) {
     m.dv_body_mps = r.vector3();
     m.mass_kg = r.f64();
-    return flag(r.u8(), m.executed);
+    if (!flag(r.u8(), m.executed)) return RecordStatus::kBadEnumeration;
+    return r.zeros(7) ? RecordStatus::kAccepted : RecordStatus::kBadPadding;
   });
 }
 

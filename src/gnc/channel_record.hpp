@@ -25,7 +25,9 @@
 //
 // Decoding checks the structure only, in this order, and names the first failure
 // (RecordStatus): header length, magic, declared size within bounds, length against it,
-// checksum, channel known, channel the one decoded, version, size the channel's, enumerations.
+// checksum, channel known, channel the one decoded, version, size the channel's, reserved bytes,
+// enumerations and padding. An accepted record is canonical: encoding what it decodes to gives
+// back the same bytes (the fuzz target's property, fuzz/).
 // The checksum comes before the channel and version: a corrupted byte reads as a bad checksum, and
 // kWrongChannel means an intact record of another channel. The values
 // (finite, plausible, not stale) are the messages' own validation (gnc/messages.hpp validate);
@@ -65,9 +67,10 @@ enum class RecordStatus : std::uint8_t {
   kBadSize,         // the declared size is not the channel's
   kBadChecksum,
   kBadEnumeration,  // an enumerated field out of its range
+  kBadPadding,      // a reserved or padding byte not 0
   kOutOfOrder,      // sequence not after the last accepted one (SequenceGate)
 };
-inline constexpr int kRecordStatuses = 10;
+inline constexpr int kRecordStatuses = 11;
 std::string_view to_string(RecordStatus status);
 
 struct RecordHeader {

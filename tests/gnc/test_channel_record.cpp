@@ -217,6 +217,12 @@ TEST(ChannelRecord, ABooleanOtherThanZeroOrOneIsNamed) {
   EXPECT_EQ(resealed(propulsion(), kHeaderBytes + 32, 2), RecordStatus::kBadEnumeration);
 }
 
+TEST(ChannelRecord, ANonZeroReservedByteIsNamed) { EXPECT_EQ(resealed(tone(), 6, 1), RecordStatus::kBadPadding); }
+
+TEST(ChannelRecord, ANonZeroPaddingByteIsNamed) {
+  EXPECT_EQ(resealed(propulsion(), kHeaderBytes + 39, 1), RecordStatus::kBadPadding);
+}
+
 TEST(ChannelRecord, AnIntactRecordOfAnotherChannelIsNamed) {
   RecordBuffer buffer{};
   const std::size_t n = encode(tone(), 1, buffer);
