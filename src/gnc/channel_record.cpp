@@ -1,6 +1,7 @@
 #include "gnc/channel_record.hpp"
 
 #include <bit>
+#include <cassert>
 
 #include "gnc/crc32c.hpp"
 
@@ -89,6 +90,7 @@ std::size_t write_record(Channel channel, core::GpsTime t, std::uint32_t sequenc
   w.time(t);
   w.u32(sequence);
   payload(w);
+  assert(w.position() == size - kChecksumBytes);  // the payload writer matches record_size()
   const std::uint32_t crc = crc32c(out.first(size - kChecksumBytes));
   w.u32(crc);
   return w.position();

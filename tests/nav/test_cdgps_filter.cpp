@@ -314,6 +314,7 @@ EphemerisSwitch switch_ephemerides(double switch_sigma_m) {
   return out;
 }
 
+// Measured 9: the 9 GRAPHIC of the switch epoch, each once.
 TEST(CdgpsFilterEphemeris, ASwitchWidensEveryGraphicBiasOnce) { EXPECT_GE(switch_ephemerides(0.5).switches, 8); }
 
 TEST(CdgpsFilterEphemeris, ASwitchLosesNoGraphic) { EXPECT_EQ(switch_ephemerides(0.5).rejected, 0); }
