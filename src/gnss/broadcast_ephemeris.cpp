@@ -116,4 +116,11 @@ bool within_fit_interval(const BroadcastEphemeris& eph, core::GpsTime t) {
   return std::abs(t.seconds_since(eph.toe)) <= 0.5 * eph.fit_interval_h * 3600.0;
 }
 
+RecordDisagreement disagreement(const BroadcastEphemeris& a, const BroadcastEphemeris& b) {
+  const core::GpsTime middle = a.toe + 0.5 * b.toe.seconds_since(a.toe);
+  const GpsSatelliteState sa = broadcast_state(a, middle);
+  const GpsSatelliteState sb = broadcast_state(b, middle);
+  return {(sa.r_ecef_m - sb.r_ecef_m).norm(), kGpsSpeedOfLight * std::abs(sa.clock_bias_s - sb.clock_bias_s)};
+}
+
 }  // namespace visors::gnss

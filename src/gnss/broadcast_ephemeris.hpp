@@ -63,4 +63,15 @@ double l1_clock_bias_s(const BroadcastEphemeris& eph, const GpsSatelliteState& s
 /// |t - t_oe| <= fit_interval / 2.
 bool within_fit_interval(const BroadcastEphemeris& eph, core::GpsTime t);
 
+/// How far two records of one satellite are apart, at the midpoint of their t_oe: position and
+/// c x clock [m]. Consecutive uploads agree to a few metres; a record carrying another
+/// satellite's orbit differs by thousands of km.
+struct RecordDisagreement {
+  static constexpr double kAgreementM = 1000.0;  // records closer than this in both agree
+  double position_m = 0.0;
+  double clock_m = 0.0;
+  [[nodiscard]] bool agrees() const { return position_m < kAgreementM && clock_m < kAgreementM; }
+};
+RecordDisagreement disagreement(const BroadcastEphemeris& a, const BroadcastEphemeris& b);
+
 }  // namespace visors::gnss

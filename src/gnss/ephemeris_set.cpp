@@ -20,22 +20,7 @@ const char* to_string(RecordStatus status) {
 
 namespace {
 
-struct Disagreement {
-  double position_m = 0.0;
-  double clock_m = 0.0;
-  [[nodiscard]] bool agrees() const {
-    return position_m < EphemerisSet::kAgreementM && clock_m < EphemerisSet::kAgreementM;
-  }
-};
-
-Disagreement compare(const BroadcastEphemeris& a, const BroadcastEphemeris& b) {
-  const core::GpsTime middle = a.toe + 0.5 * b.toe.seconds_since(a.toe);
-  const GpsSatelliteState sa = broadcast_state(a, middle);
-  const GpsSatelliteState sb = broadcast_state(b, middle);
-  return {(sa.r_ecef_m - sb.r_ecef_m).norm(), kGpsSpeedOfLight * std::abs(sa.clock_bias_s - sb.clock_bias_s)};
-}
-
-std::string describe(const ScreenedEphemeris& other, const Disagreement& d) {
+std::string describe(const ScreenedEphemeris& other, const RecordDisagreement& d) {
   char text[160];
   std::snprintf(text, sizeof text, "%.0f km and %.0f m of clock from the record of t_oe %s (line %zu)",
                 d.position_m / 1000.0, d.clock_m, other.ephemeris.toe.format(core::TimeScale::kGps, 0).c_str(),
@@ -60,7 +45,7 @@ void mark_inconsistent(std::vector<ScreenedEphemeris>& records, std::size_t begi
     for (std::size_t j : plausible) {
       if (j == k || !near(j, k)) continue;
       neighbours.push_back(j);
-      const Disagreement d = compare(records[k].ephemeris, records[j].ephemeris);
+      const RecordDisagreement d = disagreement(records[k].ephemeris, records[j].ephemeris);
       if (d.agrees()) {
         agrees_with_one = true;
         break;
@@ -72,7 +57,7 @@ void mark_inconsistent(std::vector<ScreenedEphemeris>& records, std::size_t begi
     for (std::size_t a = 0; a < neighbours.size() && !neighbours_agree; ++a) {
       for (std::size_t b = a + 1; b < neighbours.size() && !neighbours_agree; ++b) {
         neighbours_agree = near(neighbours[a], neighbours[b]) &&
-                           compare(records[neighbours[a]].ephemeris, records[neighbours[b]].ephemeris).agrees();
+                           disagreement(records[neighbours[a]].ephemeris, records[neighbours[b]].ephemeris).agrees();
       }
     }
     if (neighbours_agree) reasons[k - begin] = std::move(reason);

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "gnss/broadcast_ephemeris.hpp"
+#include "gnss/ephemeris_source.hpp"
 
 namespace visors::gnss {
 
@@ -42,17 +43,17 @@ struct ScreenedEphemeris {
   std::size_t source_line = 0;  // where it came from (file line of its first row; 0 = unknown)
 };
 
-class EphemerisSet {
+class EphemerisSet final : public EphemerisSource {
  public:
   static constexpr double kNeighbourWindowS = 6.0 * 3600.0;
-  static constexpr double kAgreementM = 1000.0;
+  static constexpr double kAgreementM = RecordDisagreement::kAgreementM;
 
   /// Screens the records (file comment); `source_lines`, if not empty, gives each record's line.
   static EphemerisSet screen(std::span<const BroadcastEphemeris> records,
                              std::span<const std::size_t> source_lines = {});
 
   /// The record to use at t (file comment), or nullptr when none is usable there.
-  [[nodiscard]] const BroadcastEphemeris* select(int prn, core::GpsTime t) const;
+  [[nodiscard]] const BroadcastEphemeris* select(int prn, core::GpsTime t) const override;
   /// The usable record of `prn` with t_oe nearest t, whether or not t is in its fit interval
   /// (to build a constellation from a station file that tracked each satellite part of the day).
   [[nodiscard]] const BroadcastEphemeris* nearest(int prn, core::GpsTime t) const;
