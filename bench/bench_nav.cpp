@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "gnss/ephemeris_set.hpp"
 #include "nav/cdgps_filter.hpp"
 #include "nav/orbit_time_update.hpp"
 #include "support/synthetic_gps.hpp"

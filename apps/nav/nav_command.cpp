@@ -20,10 +20,10 @@
 #include "core/files/text_file.hpp"
 #include "dynamics/files/force_model_files.hpp"
 #include "nav/cdgps_filter.hpp"
+#include "nav/cold_start.hpp"
 #include "nav/nav_inputs.hpp"
 #include "nav/nav_replay.hpp"
 #include "nav/nav_score.hpp"
-#include "nav/point_positioning.hpp"
 
 namespace visors::nav_app {
 namespace {
@@ -31,7 +31,6 @@ namespace {
 using nav::Craft;
 using Json = nlohmann::json;
 constexpr int kExitBadInput = 2;
-constexpr double kColdStartGapS = 10.0;  // between the two point solutions of the cold start [s]
 
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -61,41 +60,17 @@ const std::array<CraftTruth, 2>* attitudes_at(const RunInputs& in, double t_s) {
   return it == in.truth.end() ? nullptr : &it->second;
 }
 
-// Cold start (as on board): a point solution of each receiver, another kColdStartGapS later; the
-// velocity is their chord plus half the two-body acceleration times the gap (the chord is the
-// mean velocity over the gap: 42 m/s off without it), the centre of mass the phase centre minus
-// the antenna's lever arm in the known attitude.
-struct ColdStart {
-  bool have_first = false;
-  core::GpsTime t_first;
-  nav::PointSolution first[2];
-};
-
-bool try_cold_start(nav::CdgpsFilter& filter, ColdStart& cold, const nav::GpsReceiverEpoch* epochs[2], const RunInputs& in,
+// Cold start (as on board, nav/cold_start.hpp) from the joint epoch; the antennas in the
+// attitudes known at t_s.
+bool try_cold_start(nav::CdgpsFilter& filter, nav::ColdStart& cold, const nav::GpsReceiverEpoch* epochs[2], const RunInputs& in,
                     core::OnboardEarthFrame& frame) {
-  nav::PointSolution now[2];
-  for (int k = 0; k < 2; ++k) {
-    if (epochs[k] == nullptr) return false;
-    now[k] = nav::solve_point_position(*epochs[k], in.ephemerides, frame, Eigen::Vector3d::Zero());
-    if (!now[k].ok) return false;
-  }
-  const core::GpsTime t = epochs[0]->t;
-  if (!cold.have_first || t.seconds_since(cold.t_first) > 3.0 * kColdStartGapS) {
-    cold = ColdStart{true, t, {now[0], now[1]}};
-    return false;
-  }
-  const double dt = t.seconds_since(cold.t_first);
-  const auto* attitudes = attitudes_at(in, t.seconds_since(in.scenario.t0));
-  if (dt < kColdStartGapS || attitudes == nullptr) return false;
-  core::StateVector x[2];
-  for (int k = 0; k < 2; ++k) {
-    const Eigen::Vector3d r = now[k].r_gcrf_m;
-    const Eigen::Vector3d gravity = -3.986004415e14 / std::pow(r.norm(), 3) * r;
-    x[k].v = (r - cold.first[k].r_gcrf_m) / dt + 0.5 * dt * gravity;
-    const nav::AntennaGeometry a = antenna_geometry((*attitudes)[static_cast<std::size_t>(k)].body_to_gcrf, in.scenario);
-    x[k].r = now[k].r_gcrf_m - a.body_to_gcrf * (a.arp_body_m + a.pco_body_m);
-  }
-  filter.initialise(t, x[0], x[1], now[0].clock_m, now[1].clock_m);
+  if (epochs[0] == nullptr || epochs[1] == nullptr) return false;
+  const auto* attitudes = attitudes_at(in, epochs[0]->t.seconds_since(in.scenario.t0));
+  if (attitudes == nullptr) return false;
+  const auto solution = cold.add(*epochs[0], *epochs[1], antenna_geometry((*attitudes)[0].body_to_gcrf, in.scenario),
+                                 antenna_geometry((*attitudes)[1].body_to_gcrf, in.scenario), in.ephemerides, frame);
+  if (!solution) return false;
+  filter.initialise(solution->t, solution->dsc_gcrf, solution->osc_gcrf, solution->dsc_clock_m, solution->osc_clock_m);
   return true;
 }
 
@@ -234,7 +209,7 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
   out.latency_s = r.latency_s;
   nav::CdgpsFilter f = make_filter(in, local, r);
   core::OnboardEarthFrame frame(uplinked_earth_orientation(in.scenario));
-  ColdStart cold;
+  nav::ColdStart cold;
   std::mt19937_64 rng(in.scenario.seed + 7 + static_cast<std::uint64_t>(local));  // the drops
   std::bernoulli_distribution drop(r.faults.crosslink_drop);
   bool back_from_outage = false;

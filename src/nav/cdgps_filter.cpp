@@ -91,7 +91,7 @@ struct CdgpsFilter::Impl {
     const auto i = static_cast<std::size_t>(33 * static_cast<int>(c) + prn);
     return ranged[i] ? &ranges[i] : nullptr;
   }
-  void compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph, core::OnboardEarthFrame& frame,
+  void compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSource& eph, core::OnboardEarthFrame& frame,
                       double sin_floor, CdgpsEpochReport& report);
   void select(const CdgpsEpochInput& in, Craft local, CdgpsEpochReport& report);
   void assign_slots(AmbiguitySlotBank& bank, std::array<core::GpsTime, kGpsSlots>& last_measured,
@@ -307,7 +307,7 @@ bool CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps)
 
 
 // Ranges of every satellite each receiver observed and whose ephemeris is usable, at the prior.
-void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSet& eph,
+void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSource& eph,
                                        core::OnboardEarthFrame& frame, double sin_floor, CdgpsEpochReport& report) {
   ranged.fill(false);
   const GpsReceiverEpoch* epochs[2] = {in.dsc, in.osc};
@@ -638,7 +638,7 @@ Eigen::Index CdgpsFilter::Impl::rows_to_hold(Eigen::Index k, double hold_varianc
   return kept;
 }
 
-CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
+CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::EphemerisSource& ephemerides,
                                      core::OnboardEarthFrame& frame) {
   Impl& m = *impl_;
   CdgpsEpochReport report;

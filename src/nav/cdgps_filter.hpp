@@ -50,7 +50,7 @@
 #include "core/state_vector.hpp"
 #include "core/status.hpp"
 #include "dynamics/force_model.hpp"
-#include "gnss/ephemeris_set.hpp"
+#include "gnss/ephemeris_source.hpp"
 #include "nav/ambiguity_acceptance.hpp"
 #include "nav/cdgps_settings.hpp"
 #include "nav/gps_observations.hpp"
@@ -114,7 +114,7 @@ class CdgpsFilter {
   /// False (nothing changed) for a non-finite dv or before initialise().
   bool apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps);
   /// Measurement update at the current epoch (the observations' time tag).
-  CdgpsEpochReport update(const CdgpsEpochInput& input, const gnss::EphemerisSet& ephemerides,
+  CdgpsEpochReport update(const CdgpsEpochInput& input, const gnss::EphemerisSource& ephemerides,
                           core::OnboardEarthFrame& frame);
 
   /// One laser-rangefinder range z [m] at the current epoch (nav/laser_range_model.hpp), noise

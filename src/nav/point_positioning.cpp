@@ -19,7 +19,7 @@ struct Design {
   int rows = 0;
 };
 
-Design linearise(const GpsReceiverEpoch& epoch, const gnss::EphemerisSet& ephemerides, core::OnboardEarthFrame& frame,
+Design linearise(const GpsReceiverEpoch& epoch, const gnss::EphemerisSource& ephemerides, core::OnboardEarthFrame& frame,
                  const ReceiverEstimate& at) {
   Design d;
   const AntennaGeometry antenna;  // the solution is the phase centre itself
@@ -37,7 +37,7 @@ Design linearise(const GpsReceiverEpoch& epoch, const gnss::EphemerisSet& epheme
 
 }  // namespace
 
-PointSolution solve_point_position(const GpsReceiverEpoch& epoch, const gnss::EphemerisSet& ephemerides,
+PointSolution solve_point_position(const GpsReceiverEpoch& epoch, const gnss::EphemerisSource& ephemerides,
                                    core::OnboardEarthFrame& frame, const Eigen::Vector3d& guess_gcrf_m, double max_rms_m) {
   PointSolution out;
   ReceiverEstimate at;

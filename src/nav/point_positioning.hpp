@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 
 #include "core/earth_frames.hpp"
-#include "gnss/ephemeris_set.hpp"
+#include "gnss/ephemeris_source.hpp"
 #include "nav/gps_observations.hpp"
 
 namespace visors::nav {
@@ -26,7 +26,7 @@ struct PointSolution {
 };
 
 /// From `guess` (GCRF [m]; the Earth's centre works: GPS geometry converges from there).
-PointSolution solve_point_position(const GpsReceiverEpoch& epoch, const gnss::EphemerisSet& ephemerides,
+PointSolution solve_point_position(const GpsReceiverEpoch& epoch, const gnss::EphemerisSource& ephemerides,
                                    core::OnboardEarthFrame& frame, const Eigen::Vector3d& guess_gcrf_m,
                                    double max_rms_m = 30.0);
 

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "gnss/ephemeris_set.hpp"
 #include "core/rtn_frame.hpp"
 #include "gnss/constellation.hpp"
 #include "gnss/gps_constants.hpp"

@@ -14,6 +14,7 @@
 #include <random>
 #include <vector>
 
+#include "gnss/ephemeris_set.hpp"
 #include "nav/ambiguity_acceptance.hpp"
 #include "nav/ambiguity_slots.hpp"
 #include "nav/cdgps_filter.hpp"

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "gnss/ephemeris_set.hpp"
 #include "nav/point_positioning.hpp"
 #include "support/synthetic_gps.hpp"
 
