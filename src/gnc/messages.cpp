@@ -14,6 +14,9 @@ constexpr double kMaxAgeNavigation = 5.0;
 constexpr double kMaxAgeCrosslink = 10.0;
 constexpr double kMaxAgeCommand = 60.0;
 constexpr double kMaxAgePropulsion = 120.0;
+constexpr double kMaxAgeGps = 2.0;
+constexpr double kMaxAgeLaser = 5.0;
+constexpr double kMaxLaserRange = 1.0e4;  // [m], far beyond the 40 m formation
 // Plausibility bounds of a spacecraft state in low Earth orbit.
 constexpr double kMinRadius = 6.0e6;   // [m], below the Earth's surface
 constexpr double kMaxRadius = 1.0e8;   // [m]
@@ -36,6 +39,41 @@ core::Result<bool> check_state(const core::StateVector& x, const char* field) {
   return true;
 }
 
+core::Result<bool> check_unit(const Eigen::Quaterniond& q, const char* field) {
+  if (!q.coeffs().allFinite()) return core::Error{field, "must be finite"};
+  if (std::abs(q.norm() - 1.0) > 1e-6) return core::Error{field, "must be a unit quaternion"};
+  return true;
+}
+
+// A receiver epoch's structure (nav::check) and the receiver's channel count.
+core::Result<bool> check_epoch(const nav::GpsReceiverEpoch& epoch, const char* field) {
+  if (epoch.count > gnss::kMaxGpsChannels) return core::Error{field, "more observations than receiver channels (12)"};
+  if (auto error = nav::check(epoch)) return core::Error{std::string(field) + "." + error->field, error->message};
+  return true;
+}
+
+core::Result<bool> check_range(double range_m, const char* field) {
+  if (!std::isfinite(range_m) || range_m <= 0.0 || range_m > kMaxLaserRange) return core::Error{field, "must be in (0, 1e4] m"};
+  return true;
+}
+
+core::Result<bool> check_navigation(const CrosslinkNavigation& n, core::GpsTime sent) {
+  if (n.has_epoch) {
+    if (auto ok = check_epoch(n.epoch, "crosslink.navigation.epoch"); !ok) return ok.error();
+    if (n.epoch.t > sent) return core::Error{"crosslink.navigation.epoch.t", "after the message's time tag"};
+    if (auto ok = check_unit(n.q_body_to_gcrf, "crosslink.navigation.q_body_to_gcrf"); !ok) return ok.error();
+  }
+  if (n.impulse_count < 0 || n.impulse_count > kCrosslinkImpulses) return core::Error{"crosslink.navigation.impulse_count", "must be in 0..2"};
+  for (int k = 0; k < n.impulse_count; ++k) {
+    const ExecutedImpulse& i = n.impulses[static_cast<std::size_t>(k)];
+    if (!i.dv_gcrf_mps.allFinite() || i.dv_gcrf_mps.norm() > kMaxImpulseDv || i.t > sent) {
+      return core::Error{"crosslink.navigation.impulses", "must be finite, below 1 m/s and not after the message"};
+    }
+  }
+  if (n.has_range) return check_range(n.range.range_m, "crosslink.navigation.range.range_m");
+  return true;
+}
+
 }  // namespace
 
 std::string_view to_string(Spacecraft spacecraft) { return spacecraft == Spacecraft::kDsc ? "dsc" : "osc"; }
@@ -55,11 +93,7 @@ std::string_view to_string(GroundCommand::Kind kind) {
 
 core::Result<bool> validate(const TimeAtTone& message, core::GpsTime now) {
   if (auto ok = check_age(message.t, now, kMaxAgeTone, "time_at_tone.t"); !ok) return ok.error();
-  if (!message.q_body_to_gcrf.coeffs().allFinite()) return core::Error{"time_at_tone.q_body_to_gcrf", "must be finite"};
-  if (std::abs(message.q_body_to_gcrf.norm() - 1.0) > 1e-6) {
-    return core::Error{"time_at_tone.q_body_to_gcrf", "must be a unit quaternion"};
-  }
-  return true;
+  return check_unit(message.q_body_to_gcrf, "time_at_tone.q_body_to_gcrf");
 }
 
 core::Result<bool> validate(const NavigationSolution& message, core::GpsTime now) {
@@ -91,7 +125,7 @@ core::Result<bool> validate(const CrosslinkMessage& message, core::GpsTime now) 
       !(message.slew_start <= message.observation_start && message.observation_start <= message.observation_end)) {
     return core::Error{"crosslink.observation_start", "window must satisfy slew_start <= start <= end"};
   }
-  return true;
+  return check_navigation(message.navigation, message.t);
 }
 
 core::Result<bool> validate(const GroundCommand& message, core::GpsTime now) {
@@ -113,6 +147,17 @@ core::Result<bool> validate(const PropulsionTelemetry& message, core::GpsTime no
   }
   if (!(message.mass_kg > 0.0) || !std::isfinite(message.mass_kg)) return core::Error{"propulsion.mass_kg", "must be > 0"};
   return true;
+}
+
+core::Result<bool> validate(const GpsMessage& message, core::GpsTime now) {
+  if (auto ok = check_age(message.t, now, kMaxAgeGps, "gps.t"); !ok) return ok.error();
+  if (message.epoch.t != message.t) return core::Error{"gps.epoch.t", "differs from the message's time tag"};
+  return check_epoch(message.epoch, "gps.epoch");
+}
+
+core::Result<bool> validate(const LaserRange& message, core::GpsTime now) {
+  if (auto ok = check_age(message.t, now, kMaxAgeLaser, "laser_range.t"); !ok) return ok.error();
+  return check_range(message.range_m, "laser_range.range_m");
 }
 
 }  // namespace visors::gnc

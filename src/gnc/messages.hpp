@@ -18,6 +18,8 @@
 #include "core/state_vector.hpp"
 #include "core/status.hpp"
 #include "gnc/gnc_mode.hpp"
+#include "gnss/broadcast_ephemeris.hpp"
+#include "nav/gps_observations.hpp"
 
 namespace visors::gnc {
 
@@ -32,8 +34,26 @@ struct TimeAtTone {
   Eigen::Quaterniond q_body_to_gcrf = Eigen::Quaterniond::Identity();  // scalar first, Hamilton
 };
 
-/// Navigation solution (1 Hz): absolute states of both spacecraft and the covariance of the
-/// relative state (until the GPS filter exists, the simulator's ideal navigation provides it).
+/// GPS message (1 Hz): the own receiver's epoch (L1 C/A code and carrier phase per tracked
+/// satellite, at most gnss::kMaxGpsChannels) and at most one broadcast record it decoded since the
+/// previous message (a receiver decodes a satellite's subframes in 30 s; a whole data set
+/// arrives over a few dozen messages).
+struct GpsMessage {
+  core::GpsTime t;              // the receiver's time tag (= epoch.t)
+  nav::GpsReceiverEpoch epoch;
+  bool has_ephemeris = false;
+  gnss::BroadcastEphemeris ephemeris;
+};
+
+/// Laser rangefinder measurement (OSC, every 2 s during observations).
+struct LaserRange {
+  core::GpsTime t;
+  double range_m = 0.0;  // from the OSC's rangefinder to the DSC's target point [m]
+};
+
+/// Navigation solution (1 Hz) from outside the component: absolute states of both spacecraft and
+/// the covariance of the relative state (the simulator's ideal navigation, `[navigation] mode =
+/// "ideal"`; with on-board GPS navigation the component makes its own, gnc/onboard_navigation.hpp).
 struct NavigationSolution {
   core::GpsTime t;
   core::StateVector chief_gcrf;   // DSC [m, m/s]
@@ -67,6 +87,27 @@ struct PropulsionTelemetry {
   bool executed = false;                                  // false: the command was refused
 };
 
+/// An impulse a spacecraft executed, as its component knows it: the commanded (quantised) dv of its
+/// propulsion telemetry, in GCRF through the attitude at that time.
+struct ExecutedImpulse {
+  core::GpsTime t;
+  Eigen::Vector3d dv_gcrf_mps = Eigen::Vector3d::Zero();  // [m/s]
+};
+inline constexpr int kCrosslinkImpulses = 2;
+
+/// The navigation part of the crosslink: what the other spacecraft's filter needs of the sender.
+struct CrosslinkNavigation {
+  bool has_epoch = false;
+  nav::GpsReceiverEpoch epoch;  // the sender's receiver epoch of its step (at most kMaxGpsChannels)
+  Eigen::Quaterniond q_body_to_gcrf = Eigen::Quaterniond::Identity();  // the sender's attitude at epoch.t
+  /// The sender's last executed impulses, newest first, repeated in every message, so that one
+  /// lost message loses none (impulses are at least 46.5 s apart).
+  int impulse_count = 0;
+  std::array<ExecutedImpulse, kCrosslinkImpulses> impulses{};
+  bool has_range = false;  // the OSC's newest rangefinder measurement
+  LaserRange range;
+};
+
 /// Crosslink (1 Hz, delayed): what the other spacecraft's component tells this one.
 struct CrosslinkMessage {
   core::GpsTime t;  // when it was sent
@@ -78,12 +119,15 @@ struct CrosslinkMessage {
   bool has_observation = false;  // the next observation below is scheduled
   int observation_index = 0;
   core::GpsTime slew_start, observation_start, observation_end;
+  CrosslinkNavigation navigation;
 };
 
 /// Everything that arrived for one step; absent channels are empty.
 struct GncInputs {
   core::GpsTime t;
   std::optional<TimeAtTone> time_at_tone;
+  std::optional<GpsMessage> gps;
+  std::optional<LaserRange> laser_range;
   std::optional<NavigationSolution> navigation;
   std::optional<CrosslinkMessage> crosslink;
   std::optional<GroundCommand> command;
@@ -105,8 +149,10 @@ struct ObservationCommand {
 
 /// Rejected-input counters by channel (telemetry).
 struct RejectionCounters {
-  std::int64_t time_at_tone = 0, navigation = 0, crosslink = 0, command = 0, propulsion = 0;
-  [[nodiscard]] std::int64_t total() const { return time_at_tone + navigation + crosslink + command + propulsion; }
+  std::int64_t time_at_tone = 0, navigation = 0, crosslink = 0, command = 0, propulsion = 0, gps = 0, laser_range = 0;
+  [[nodiscard]] std::int64_t total() const {
+    return time_at_tone + navigation + crosslink + command + propulsion + gps + laser_range;
+  }
 };
 
 struct Telemetry {
@@ -145,5 +191,7 @@ core::Result<bool> validate(const NavigationSolution& message, core::GpsTime now
 core::Result<bool> validate(const CrosslinkMessage& message, core::GpsTime now);
 core::Result<bool> validate(const GroundCommand& message, core::GpsTime now);
 core::Result<bool> validate(const PropulsionTelemetry& message, core::GpsTime now);
+core::Result<bool> validate(const GpsMessage& message, core::GpsTime now);
+core::Result<bool> validate(const LaserRange& message, core::GpsTime now);
 
 }  // namespace visors::gnc

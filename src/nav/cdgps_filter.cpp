@@ -289,22 +289,29 @@ ScalarUpdateStatus CdgpsFilter::update_laser_range(double z_m, double sigma_m, c
   return status;
 }
 
-bool CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps) {
+bool CdgpsFilter::apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps, double elapsed_s) {
   Impl& m = *impl_;
-  if (!m.initialised || !dv_gcrf_mps.allFinite()) return false;
+  if (!m.initialised || !dv_gcrf_mps.allFinite() || !(elapsed_s >= 0.0) || !std::isfinite(elapsed_s)) return false;
+  const int r = state::position(craft);
   const int v = state::velocity(craft);
   const double magnitude = dv_gcrf_mps.norm();
   m.x.segment<3>(v) += dv_gcrf_mps / state::kVelocityUnit;
+  m.x.segment<3>(r) += dv_gcrf_mps * elapsed_s;
   if (magnitude == 0.0) return true;
   const Eigen::Vector3d u = dv_gcrf_mps / magnitude;
   const double along = settings_.impulse_magnitude_sigma * magnitude;
   const double across = settings_.impulse_direction_sigma_deg * core::kDegToRad * magnitude;
   const Eigen::Matrix3d covariance =
       along * along * u * u.transpose() + across * across * (Eigen::Matrix3d::Identity() - u * u.transpose());
+  // The execution error e enters as dr = elapsed e, dv = e (state units: v in kVelocityUnit).
   m.P.block<3, 3>(v, v) += covariance / (state::kVelocityUnit * state::kVelocityUnit);
+  if (elapsed_s > 0.0) {
+    m.P.block<3, 3>(r, r) += elapsed_s * elapsed_s * covariance;
+    m.P.block<3, 3>(r, v) += elapsed_s * covariance / state::kVelocityUnit;
+    m.P.block<3, 3>(v, r) += elapsed_s * covariance / state::kVelocityUnit;
+  }
   return true;
 }
-
 
 // Ranges of every satellite each receiver observed and whose ephemeris is usable, at the prior.
 void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::EphemerisSource& eph,

@@ -111,8 +111,12 @@ class CdgpsFilter {
   /// A commanded impulse dv (GCRF) [m/s] of `craft`, executed at the current epoch: added to the
   /// velocity, and its execution covariance (settings' impulse_*_sigma) to P:
   ///   sigma_m^2 dv dv' + (sigma_d |dv|)^2 (I - u u'),  u = dv / |dv|.
-  /// False (nothing changed) for a non-finite dv or before initialise().
-  bool apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps);
+  /// An impulse reported late, executed elapsed_s >= 0 before the current epoch, also moves the
+  /// position by dv elapsed_s (with the execution covariance mapped there); the epoch's gravity
+  /// acting on the change over elapsed_s (~1e-5 m at 2 s) is neglected.
+  /// False (nothing changed) for a non-finite dv or elapsed_s, a negative elapsed_s, or before
+  /// initialise().
+  bool apply_impulse(Craft craft, const Eigen::Vector3d& dv_gcrf_mps, double elapsed_s = 0.0);
   /// Measurement update at the current epoch (the observations' time tag).
   CdgpsEpochReport update(const CdgpsEpochInput& input, const gnss::EphemerisSource& ephemerides,
                           core::OnboardEarthFrame& frame);

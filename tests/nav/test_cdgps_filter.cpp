@@ -497,6 +497,30 @@ TEST(CdgpsFilterManeuver, ImpulseMovesOnlyTheVelocityOfItsCraft) {
   EXPECT_LT((filter.x() - expected).norm(), 1e-12);
 }
 
+// An impulse reported 2 s late, applied with elapsed_s = 2, against the same impulse applied on
+// time and carried 2 s by the filter's own time update (the independent reference: the RK4 mean
+// and the transition of P): the same state to the gravity acting on the change over 2 s
+// (|dv| g/r 2^2/2 ~ 1e-8 m at 2.4 mm/s) and the same added covariance to the transition's
+// off-identity terms (n^2 dt^2 ~ 1e-5).
+TEST(CdgpsFilterManeuver, LateImpulseMatchesTheImpulseAppliedOnTime) {
+  Simulation sim;
+  CdgpsFilter on_time = initialised_filter(sim);
+  CdgpsFilter late = initialised_filter(sim);
+  const Eigen::Vector3d dv(0.0, 0.002, 0.0015);
+  ASSERT_TRUE(on_time.apply_impulse(Craft::kOsc, dv));
+  on_time.predict(on_time.epoch() + 2.0);
+  late.predict(late.epoch() + 2.0);
+  const NavMatrix predicted_without = late.P();
+  ASSERT_TRUE(late.apply_impulse(Craft::kOsc, dv, 2.0));
+  const int r = state::position(Craft::kOsc);
+  const int v = state::velocity(Craft::kOsc);
+  EXPECT_LT((late.x().segment<3>(r) - on_time.x().segment<3>(r)).norm(), 1e-6);
+  EXPECT_LT((late.x().segment<3>(v) - on_time.x().segment<3>(v)).norm() * state::kVelocityUnit, 1e-8);
+  const Eigen::Matrix<double, 6, 6> added_late = (late.P() - predicted_without).block<6, 6>(r, r);
+  const Eigen::Matrix<double, 6, 6> added_on_time = (on_time.P() - predicted_without).block<6, 6>(r, r);
+  EXPECT_LT((added_late - added_on_time).norm(), 1e-3 * added_on_time.norm());
+}
+
 TEST(CdgpsFilterManeuver, NonFiniteImpulseIsRefusedAndChangesNothing) {
   Simulation sim;
   CdgpsFilter filter = initialised_filter(sim);
