@@ -16,20 +16,21 @@
 
 namespace visors::gnc {
 
-core::Result<FlightComponent> FlightComponent::create(const GncConfig& config) {
+core::Result<FlightComponent> FlightComponent::create(const GncConfig& config, std::optional<OnboardNavigation> navigation) {
   const auto valid = validate(config);
   if (!valid.ok()) return valid.error();
   auto mpc = control::StochasticMpc::create(config.science.mpc);
   if (!mpc.ok()) return core::Error{"science.mpc." + mpc.error().field, mpc.error().message};
-  return FlightComponent(config, std::move(mpc).value());
+  return FlightComponent(config, std::move(mpc).value(), std::move(navigation));
 }
 
-FlightComponent::FlightComponent(const GncConfig& config, control::StochasticMpc mpc)
+FlightComponent::FlightComponent(const GncConfig& config, control::StochasticMpc mpc, std::optional<OnboardNavigation> navigation)
     : config_(config),
       mpc_(std::move(mpc)),
       queue_(config.maneuver_queue_capacity),
       active_(config.active),
       mass_kg_(config.mass_kg),
+      navigation_(std::move(navigation)),
       geometry_(config.science.geometry) {
   waypoints_.reserve(static_cast<std::size_t>(config.transfer.max_waypoints));
   plan_.impulses.reserve(control::kMaxClosedFormImpulses);
@@ -77,41 +78,74 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
 void FlightComponent::accept_inputs(const GncInputs& inputs, GncOutputs& out) {
   auto& rejected = telemetry_.rejected;
   if (inputs.time_at_tone) {
-    if (validate(*inputs.time_at_tone, now_).ok()) {
-      q_body_to_gcrf_ = inputs.time_at_tone->q_body_to_gcrf;
-      has_attitude_ = true;
-    } else {
-      ++rejected.time_at_tone;
-    }
+    if (validate(*inputs.time_at_tone, now_).ok()) accept_attitude(*inputs.time_at_tone);
+    else ++rejected.time_at_tone;
   }
   if (inputs.propulsion) {
     if (validate(*inputs.propulsion, now_).ok()) mass_kg_ = inputs.propulsion->mass_kg;
     else ++rejected.propulsion;
   }
-  if (inputs.navigation) {
-    const bool valid = validate(*inputs.navigation, now_).ok();
-    auto estimate = valid ? estimate_from_navigation(*inputs.navigation, config_.gravity)
-                          : core::Result<RelativeEstimate>(core::Error{"navigation", "invalid"});
-    if (estimate.ok()) {
-      estimate_ = std::move(estimate).value();
-      last_navigation_ = inputs.navigation->t;
-      const double n = 2.0 * core::kPi / chief_period_s();
-      drag_.observe(estimate_->t, estimate_->chief_mean.a * estimate_->roe_mean(astro::roe::kDa), n);
-    } else {
-      ++rejected.navigation;
-    }
-  }
   if (inputs.command) {
     if (validate(*inputs.command, now_).ok()) apply_command(*inputs.command);
     else ++rejected.command;
   }
+  bool crosslink_valid = false;
   if (inputs.crosslink) {
-    if (validate(*inputs.crosslink, now_).ok()) {
-      if (!active_) follow_peer(*inputs.crosslink, out);
-    } else {
-      ++rejected.crosslink;
+    crosslink_valid = validate(*inputs.crosslink, now_).ok();
+    if (!crosslink_valid) ++rejected.crosslink;
+    else if (!active_) follow_peer(*inputs.crosslink, out);
+  }
+  if (navigation_) {
+    feed_navigation(inputs);
+    if (crosslink_valid) navigation_->add_peer(inputs.crosslink->navigation);
+    if (const auto solution = navigation_->solve(now_)) (void)accept_solution(*solution, navigation_->last_update());
+  } else if (inputs.navigation) {
+    if (!validate(*inputs.navigation, now_).ok() || !accept_solution(*inputs.navigation, inputs.navigation->t)) {
+      ++rejected.navigation;
     }
   }
+}
+
+void FlightComponent::accept_attitude(const TimeAtTone& tone) {
+  if (has_attitude_ && tone.t > attitude_t_) {
+    q_previous_ = q_body_to_gcrf_;
+    previous_attitude_t_ = attitude_t_;
+  }
+  q_body_to_gcrf_ = tone.q_body_to_gcrf;
+  attitude_t_ = tone.t;
+  has_attitude_ = true;
+}
+
+void FlightComponent::feed_navigation(const GncInputs& inputs) {
+  auto& rejected = telemetry_.rejected;
+  if (inputs.gps) {
+    if (validate(*inputs.gps, now_).ok() && has_attitude_) {
+      if (inputs.gps->has_ephemeris) navigation_->add_ephemeris(inputs.gps->ephemeris);
+      navigation_->add_own_epoch(nav::receiver_epoch(inputs.gps->epoch), q_body_to_gcrf_);
+    } else {
+      ++rejected.gps;
+    }
+  }
+  if (inputs.laser_range) {
+    if (validate(*inputs.laser_range, now_).ok()) navigation_->add_laser_range(*inputs.laser_range);
+    else ++rejected.laser_range;
+  }
+  const auto& p = inputs.propulsion;
+  if (p && p->executed && validate(*p, now_).ok() && has_attitude_) {
+    // The body frame of the impulse is the attitude of its time (the step it fired).
+    const Eigen::Quaterniond& q = p->t == previous_attitude_t_ ? q_previous_ : q_body_to_gcrf_;
+    navigation_->add_own_impulse(ExecutedImpulse{p->t, q * p->dv_body_mps});
+  }
+}
+
+bool FlightComponent::accept_solution(const NavigationSolution& solution, core::GpsTime measured) {
+  auto estimate = estimate_from_navigation(solution, config_.gravity);
+  if (!estimate.ok()) return false;
+  estimate_ = std::move(estimate).value();
+  last_navigation_ = measured;
+  const double n = 2.0 * core::kPi / chief_period_s();
+  drag_.observe(estimate_->t, estimate_->chief_mean.a * estimate_->roe_mean(astro::roe::kDa), n);
+  return true;
 }
 
 void FlightComponent::apply_command(const GroundCommand& command) {
@@ -471,6 +505,7 @@ void FlightComponent::fill_crosslink(GncOutputs& out) const {
     message.observation_start = observation_->start;
     message.observation_end = observation_->end;
   }
+  if (navigation_) message.navigation = navigation_->crosslink();
   out.crosslink = message;
 }
 

@@ -46,13 +46,18 @@
 #include "gnc/maneuver_queue.hpp"
 #include "gnc/messages.hpp"
 #include "gnc/observation_schedule.hpp"
+#include "gnc/onboard_navigation.hpp"
 #include "gnc/relative_estimate.hpp"
 
 namespace visors::gnc {
 
 class FlightComponent {
  public:
-  static core::Result<FlightComponent> create(const GncConfig& config);
+  /// With `navigation`, the component navigates itself from its GPS, crosslink, propulsion and
+  /// rangefinder channels (gnc/onboard_navigation.hpp) and the navigation channel is not used;
+  /// without, it takes the navigation channel's solutions (ideal navigation).
+  static core::Result<FlightComponent> create(const GncConfig& config,
+                                              std::optional<OnboardNavigation> navigation = std::nullopt);
 
   /// One step at inputs.t (non-decreasing between calls; an earlier time is rejected as a whole
   /// and counted as a navigation rejection).
@@ -62,11 +67,19 @@ class FlightComponent {
   [[nodiscard]] bool active() const { return active_; }
   [[nodiscard]] const GncConfig& config() const { return config_; }
   [[nodiscard]] const std::optional<RelativeEstimate>& estimate() const { return estimate_; }
+  /// The on-board navigation, when the component has one.
+  [[nodiscard]] const std::optional<OnboardNavigation>& navigation() const { return navigation_; }
 
  private:
-  explicit FlightComponent(const GncConfig& config, control::StochasticMpc mpc);
+  FlightComponent(const GncConfig& config, control::StochasticMpc mpc, std::optional<OnboardNavigation> navigation);
 
   void accept_inputs(const GncInputs& inputs, GncOutputs& out);
+  void accept_attitude(const TimeAtTone& tone);
+  /// The own GPS, rangefinder and propulsion inputs into the on-board navigation.
+  void feed_navigation(const GncInputs& inputs);
+  /// A navigation solution (the channel's, or the on-board navigation's) as the estimate;
+  /// `measured` is the time of the measurements behind it.
+  bool accept_solution(const NavigationSolution& solution, core::GpsTime measured);
   void apply_command(const GroundCommand& command);
   void follow_peer(const CrosslinkMessage& peer, GncOutputs& out);
   void enter(Mode mode);
@@ -109,6 +122,11 @@ class FlightComponent {
   bool started_ = false;
   Eigen::Quaterniond q_body_to_gcrf_ = Eigen::Quaterniond::Identity();
   bool has_attitude_ = false;
+  core::GpsTime attitude_t_;
+  // The attitude of the step before (an impulse's telemetry arrives the step after it).
+  Eigen::Quaterniond q_previous_ = Eigen::Quaterniond::Identity();
+  core::GpsTime previous_attitude_t_;
+  std::optional<OnboardNavigation> navigation_;
   std::optional<RelativeEstimate> estimate_;
   core::GpsTime last_navigation_;
   // Safety.

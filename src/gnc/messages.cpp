@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "gnss/gps_measurement.hpp"
+
 namespace visors::gnc {
 
 namespace {
@@ -152,7 +154,8 @@ core::Result<bool> validate(const PropulsionTelemetry& message, core::GpsTime no
 core::Result<bool> validate(const GpsMessage& message, core::GpsTime now) {
   if (auto ok = check_age(message.t, now, kMaxAgeGps, "gps.t"); !ok) return ok.error();
   if (message.epoch.t != message.t) return core::Error{"gps.epoch.t", "differs from the message's time tag"};
-  return check_epoch(message.epoch, "gps.epoch");
+  if (auto ok = gnss::validate(message.epoch); !ok) return core::Error{"gps.epoch." + ok.error().field, ok.error().message};
+  return true;
 }
 
 core::Result<bool> validate(const LaserRange& message, core::GpsTime now) {

@@ -19,6 +19,7 @@
 #include "core/status.hpp"
 #include "gnc/gnc_mode.hpp"
 #include "gnss/broadcast_ephemeris.hpp"
+#include "gnss/gps_measurement.hpp"
 #include "nav/gps_observations.hpp"
 
 namespace visors::gnc {
@@ -39,8 +40,8 @@ struct TimeAtTone {
 /// previous message (a receiver decodes a satellite's subframes in 30 s; a whole data set
 /// arrives over a few dozen messages).
 struct GpsMessage {
-  core::GpsTime t;              // the receiver's time tag (= epoch.t)
-  nav::GpsReceiverEpoch epoch;
+  core::GpsTime t;                   // the receiver's time tag (= epoch.t)
+  gnss::GpsMeasurementEpoch epoch;
   bool has_ephemeris = false;
   gnss::BroadcastEphemeris ephemeris;
 };

@@ -8,6 +8,7 @@
 
 #include "core/gps_time.hpp"
 #include "core/status.hpp"
+#include "gnss/gps_measurement.hpp"
 #include "nav/navigation_state.hpp"
 
 namespace visors::nav {
@@ -28,6 +29,10 @@ struct GpsReceiverEpoch {
   /// The observation of `prn`, or nullptr.
   [[nodiscard]] const GpsObservation* find(int prn) const;
 };
+
+/// The filter's view of a receiver's epoch (gnss/gps_measurement.hpp, the flight component's GPS
+/// message): code, phase and the two loss-of-lock bits per channel, in channel order.
+GpsReceiverEpoch receiver_epoch(const gnss::GpsMeasurementEpoch& measurement);
 
 /// Input validation of an epoch's structure at the filter's boundary: count in range, PRNs in
 /// 1..32 and distinct. The error names the field ("observations[3].prn"); such an epoch is refused.

@@ -1,0 +1,295 @@
+#include "gnc/onboard_navigation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "core/rtn_frame.hpp"
+
+namespace visors::gnc {
+
+namespace {
+
+nav::Craft craft_of(Spacecraft s) { return s == Spacecraft::kDsc ? nav::Craft::kDsc : nav::Craft::kOsc; }
+
+// The covariance of [r_osc - r_dsc; v_osc - v_dsc] from P (state units: velocity in
+// kVelocityUnit), in the chief's RTN axes [m^2, m^2/s^2].
+Eigen::Matrix<double, 6, 6> relative_covariance_rtn(const nav::NavMatrix& P, const core::StateVector& chief) {
+  using nav::Craft;
+  namespace st = nav::state;
+  Eigen::Matrix<double, 6, nav::kNavStates> J = Eigen::Matrix<double, 6, nav::kNavStates>::Zero();
+  const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(chief);
+  J.block<3, 3>(0, st::position(Craft::kOsc)) = R;
+  J.block<3, 3>(0, st::position(Craft::kDsc)) = -R;
+  J.block<3, 3>(3, st::velocity(Craft::kOsc)) = st::kVelocityUnit * R;
+  J.block<3, 3>(3, st::velocity(Craft::kDsc)) = -st::kVelocityUnit * R;
+  Eigen::Matrix<double, 6, 6> C = J * P * J.transpose();
+  return 0.5 * (C + C.transpose());
+}
+
+}  // namespace
+
+core::Result<bool> OnboardNavigationSettings::validate() const {
+  if (auto error = nav::check(filter)) return core::Error{"filter." + error->field, error->message};
+  if (!antenna_arp_body_m.allFinite()) return core::Error{"antenna_arp_body_m", "must be finite"};
+  if (!std::isfinite(antenna_pco_m)) return core::Error{"antenna_pco_m", "must be finite"};
+  if (!lrf_lever_body_m.allFinite()) return core::Error{"lrf_lever_body_m", "must be finite"};
+  if (!(lrf_sigma_m > 0.0) || !std::isfinite(lrf_sigma_m)) return core::Error{"lrf_sigma_m", "must be finite and > 0"};
+  if (!std::isfinite(lrf_bias_m)) return core::Error{"lrf_bias_m", "must be finite"};
+  if (!(peer_wait_s >= 0.0 && peer_wait_s <= 10.0)) return core::Error{"peer_wait_s", "must be in [0, 10] s"};
+  if (!(coast_after_s >= 1.0 && coast_after_s <= 60.0)) return core::Error{"coast_after_s", "must be in [1, 60] s"};
+  return true;
+}
+
+core::Result<OnboardNavigation> OnboardNavigation::create(const OnboardNavigationSettings& settings, Spacecraft self,
+                                                          dynamics::ForceModel dsc_model, dynamics::ForceModel osc_model) {
+  if (auto ok = settings.validate(); !ok) return ok.error();
+  nav::CdgpsSettings filter_settings = settings.filter;
+  filter_settings.local = craft_of(self);
+  auto filter = nav::CdgpsFilter::create(filter_settings, std::move(dsc_model), std::move(osc_model));
+  if (!filter.ok()) return core::Error{"filter." + filter.error().field, filter.error().message};
+  return OnboardNavigation(settings, self, std::move(filter).value());
+}
+
+OnboardNavigation::OnboardNavigation(const OnboardNavigationSettings& settings, Spacecraft self, nav::CdgpsFilter filter)
+    : settings_(settings),
+      self_(self),
+      local_(craft_of(self)),
+      remote_(self == Spacecraft::kDsc ? nav::Craft::kOsc : nav::Craft::kDsc),
+      filter_(std::move(filter)),
+      frame_(settings.earth_orientation) {}
+
+void OnboardNavigation::add_ephemeris(const gnss::BroadcastEphemeris& record) {
+  ++counters_.ephemerides[static_cast<std::size_t>(ephemerides_.accept(record))];
+}
+
+void OnboardNavigation::store(std::array<BufferedEpoch, kEpochs>& buffer, const nav::GpsReceiverEpoch& epoch,
+                              const Eigen::Matrix3d& body_to_gcrf) {
+  BufferedEpoch* slot = &buffer[0];
+  for (BufferedEpoch& b : buffer) {
+    if (b.filled && b.epoch.t == epoch.t) return;  // a repeat
+    if (!b.filled) {
+      slot = &b;
+      break;
+    }
+    if (b.epoch.t < slot->epoch.t) slot = &b;  // the oldest is replaced
+  }
+  slot->filled = true;
+  slot->processed = false;
+  slot->epoch = epoch;
+  slot->body_to_gcrf = body_to_gcrf;
+}
+
+void OnboardNavigation::add_own_epoch(const nav::GpsReceiverEpoch& epoch, const Eigen::Quaterniond& q_body_to_gcrf) {
+  if (processed_any_ && epoch.t <= last_processed_) return;  // older than what the filter has
+  const Eigen::Matrix3d body_to_gcrf = q_body_to_gcrf.toRotationMatrix();
+  store(own_, epoch, body_to_gcrf);
+  last_own_epoch_ = epoch.t;
+  outgoing_.has_epoch = true;
+  outgoing_.epoch = epoch;
+  outgoing_.q_body_to_gcrf = q_body_to_gcrf;
+}
+
+void OnboardNavigation::queue_impulse(core::GpsTime t, nav::Craft craft, const Eigen::Vector3d& dv_gcrf_mps) {
+  if (impulse_count_ == kImpulses) {  // full (cannot happen at 46.5 s spacing): the oldest goes now
+    apply_impulses_before(impulses_[1].t);
+  }
+  int k = impulse_count_++;
+  for (; k > 0 && impulses_[static_cast<std::size_t>(k - 1)].t > t; --k) {
+    impulses_[static_cast<std::size_t>(k)] = impulses_[static_cast<std::size_t>(k - 1)];
+  }
+  impulses_[static_cast<std::size_t>(k)] = PendingImpulse{t, craft, dv_gcrf_mps};
+}
+
+void OnboardNavigation::add_own_impulse(const ExecutedImpulse& impulse) {
+  queue_impulse(impulse.t, local_, impulse.dv_gcrf_mps);
+  auto& sent = outgoing_.impulses;
+  for (int k = kCrosslinkImpulses - 1; k > 0; --k) sent[static_cast<std::size_t>(k)] = sent[static_cast<std::size_t>(k - 1)];
+  sent[0] = impulse;
+  outgoing_.impulse_count = std::min(outgoing_.impulse_count + 1, kCrosslinkImpulses);
+}
+
+void OnboardNavigation::queue_range(const LaserRange& range) {
+  if (range_count_ == kRanges) {
+    for (int k = 1; k < kRanges; ++k) ranges_[static_cast<std::size_t>(k - 1)] = ranges_[static_cast<std::size_t>(k)];
+    --range_count_;
+  }
+  ranges_[static_cast<std::size_t>(range_count_++)] = range;
+}
+
+void OnboardNavigation::add_laser_range(const LaserRange& range) {
+  queue_range(range);
+  outgoing_.has_range = true;
+  outgoing_.range = range;
+}
+
+void OnboardNavigation::add_peer(const CrosslinkNavigation& peer) {
+  if (peer.has_epoch && !(processed_any_ && peer.epoch.t <= last_processed_)) {
+    store(peer_, peer.epoch, peer.q_body_to_gcrf.toRotationMatrix());
+  }
+  // Oldest first, each once (they are repeated in every message).
+  for (int k = peer.impulse_count - 1; k >= 0; --k) {
+    const ExecutedImpulse& i = peer.impulses[static_cast<std::size_t>(k)];
+    if (have_peer_impulse_ && i.t <= last_peer_impulse_) continue;
+    queue_impulse(i.t, remote_, i.dv_gcrf_mps);
+    have_peer_impulse_ = true;
+    last_peer_impulse_ = i.t;
+  }
+  if (peer.has_range && !(have_range_ && peer.range.t <= last_peer_range_)) {
+    queue_range(peer.range);
+    have_range_ = true;
+    last_peer_range_ = peer.range.t;
+  }
+}
+
+OnboardNavigation::BufferedEpoch* OnboardNavigation::next_own_epoch() {
+  BufferedEpoch* next = nullptr;
+  for (BufferedEpoch& b : own_) {
+    if (b.filled && !b.processed && (next == nullptr || b.epoch.t < next->epoch.t)) next = &b;
+  }
+  return next;
+}
+
+OnboardNavigation::BufferedEpoch* OnboardNavigation::peer_epoch(core::GpsTime t) {
+  for (BufferedEpoch& b : peer_) {
+    if (b.filled && b.epoch.t == t) return &b;
+  }
+  return nullptr;
+}
+
+nav::AntennaGeometry OnboardNavigation::antenna(const Eigen::Matrix3d& body_to_gcrf) const {
+  nav::AntennaGeometry a;
+  a.body_to_gcrf = body_to_gcrf;
+  a.arp_body_m = settings_.antenna_arp_body_m;
+  a.pco_body_m = settings_.antenna_pco_m * Eigen::Vector3d::UnitZ();
+  a.boresight_body = Eigen::Vector3d::UnitZ();
+  return a;
+}
+
+void OnboardNavigation::cold_start(const BufferedEpoch& own, const BufferedEpoch& peer) {
+  const bool dsc_local = local_ == nav::Craft::kDsc;
+  const BufferedEpoch& dsc = dsc_local ? own : peer;
+  const BufferedEpoch& osc = dsc_local ? peer : own;
+  const auto start =
+      cold_.add(dsc.epoch, osc.epoch, antenna(dsc.body_to_gcrf), antenna(osc.body_to_gcrf), ephemerides_, frame_);
+  if (!start) return;
+  filter_.initialise(start->t, start->dsc_gcrf, start->osc_gcrf, start->dsc_clock_m, start->osc_clock_m);
+  last_update_ = start->t;
+  // Impulses before the start are in the measured states already.
+  int kept = 0;
+  for (int k = 0; k < impulse_count_; ++k) {
+    if (impulses_[static_cast<std::size_t>(k)].t >= start->t) impulses_[static_cast<std::size_t>(kept++)] = impulses_[static_cast<std::size_t>(k)];
+  }
+  impulse_count_ = kept;
+}
+
+void OnboardNavigation::apply_impulses_before(core::GpsTime t) {
+  int done = 0;
+  for (; done < impulse_count_ && impulses_[static_cast<std::size_t>(done)].t < t; ++done) {
+    const PendingImpulse& i = impulses_[static_cast<std::size_t>(done)];
+    if (!filter_.initialised()) continue;
+    const double late_s = filter_.epoch().seconds_since(i.t);
+    if (late_s > 0.0) {
+      ++counters_.impulses_late;
+    } else {
+      filter_.predict(i.t);
+    }
+    if (filter_.apply_impulse(i.craft, i.dv_gcrf_mps, std::max(0.0, late_s))) ++counters_.impulses_applied;
+  }
+  for (int k = done; k < impulse_count_; ++k) impulses_[static_cast<std::size_t>(k - done)] = impulses_[static_cast<std::size_t>(k)];
+  impulse_count_ -= done;
+}
+
+void OnboardNavigation::fuse_range(core::GpsTime t, const Eigen::Matrix3d& dsc_body_to_gcrf, const Eigen::Matrix3d& osc_body_to_gcrf) {
+  for (int k = 0; k < range_count_; ++k) {
+    const LaserRange& r = ranges_[static_cast<std::size_t>(k)];
+    if (r.t != t) continue;
+    nav::LaserRangeGeometry g;
+    g.dsc_body_to_gcrf = dsc_body_to_gcrf;
+    g.osc_body_to_gcrf = osc_body_to_gcrf;
+    g.dsc_lever_body_m = settings_.lrf_lever_body_m;
+    g.osc_lever_body_m = settings_.lrf_lever_body_m;
+    g.bias_m = settings_.lrf_bias_m;
+    const auto status = filter_.update_laser_range(r.range_m, settings_.lrf_sigma_m, g);
+    ++(status == nav::ScalarUpdateStatus::kAccepted ? counters_.laser_used : counters_.laser_rejected);
+  }
+  // Ranges of this epoch and before are done with.
+  int kept = 0;
+  for (int k = 0; k < range_count_; ++k) {
+    if (ranges_[static_cast<std::size_t>(k)].t > t) ranges_[static_cast<std::size_t>(kept++)] = ranges_[static_cast<std::size_t>(k)];
+  }
+  range_count_ = kept;
+}
+
+void OnboardNavigation::process(const BufferedEpoch& own, const BufferedEpoch* peer) {
+  const core::GpsTime t = own.epoch.t;
+  if (!filter_.initialised()) {
+    if (peer != nullptr) cold_start(own, *peer);
+    return;
+  }
+  if (t < filter_.epoch()) return;  // the filter coasted past it
+  apply_impulses_before(t);
+  filter_.predict(t);
+  const bool dsc_local = local_ == nav::Craft::kDsc;
+  const Eigen::Matrix3d& own_attitude = own.body_to_gcrf;
+  const Eigen::Matrix3d& peer_attitude = peer != nullptr ? peer->body_to_gcrf : own.body_to_gcrf;
+  nav::CdgpsEpochInput input;
+  input.dsc = dsc_local ? &own.epoch : (peer != nullptr ? &peer->epoch : nullptr);
+  input.osc = dsc_local ? (peer != nullptr ? &peer->epoch : nullptr) : &own.epoch;
+  input.dsc_antenna = antenna(dsc_local ? own_attitude : peer_attitude);
+  input.osc_antenna = antenna(dsc_local ? peer_attitude : own_attitude);
+  last_report_ = filter_.update(input, ephemerides_, frame_);
+  fixed_current_ = true;
+  if (!last_report_.accepted) {
+    ++counters_.epochs_refused;
+    return;
+  }
+  last_update_ = t;
+  ++(peer != nullptr ? counters_.epochs_joint : counters_.epochs_alone);
+  if (last_report_.fix_applied) ++counters_.epochs_fixed;
+  if (last_report_.wrong_fix_refused) ++counters_.wrong_fixes_refused;
+  if (settings_.fuse_laser && peer != nullptr) {
+    fuse_range(t, dsc_local ? own_attitude : peer_attitude, dsc_local ? peer_attitude : own_attitude);
+  }
+}
+
+std::optional<NavigationSolution> OnboardNavigation::solve(core::GpsTime now) {
+  for (BufferedEpoch* own = next_own_epoch(); own != nullptr; own = next_own_epoch()) {
+    BufferedEpoch* peer = peer_epoch(own->epoch.t);
+    if (peer == nullptr && now.seconds_since(own->epoch.t) < settings_.peer_wait_s) break;
+    process(*own, peer);
+    own->processed = true;
+    processed_any_ = true;
+    last_processed_ = own->epoch.t;
+    for (BufferedEpoch& b : peer_) {
+      if (b.filled && b.epoch.t <= last_processed_) b.filled = false;
+    }
+  }
+  if (!filter_.initialised()) return std::nullopt;
+  if (next_own_epoch() == nullptr && now.seconds_since(last_update_) >= settings_.coast_after_s) {
+    apply_impulses_before(now);
+    filter_.predict(now);  // a GPS outage: the covariance grows with the dynamics
+    fixed_current_ = false;
+  }
+  return solution(now);
+}
+
+NavigationSolution OnboardNavigation::solution(core::GpsTime now) {
+  const bool use_fixed = last_report_.fix_applied && fixed_current_;
+  nav::NavVector x = filter_.forecast(use_fixed ? filter_.x_fixed() : filter_.x(), now);
+  const core::GpsTime epoch = filter_.epoch();
+  for (int k = 0; k < impulse_count_; ++k) {  // executed since the epoch, not yet in the filter
+    const PendingImpulse& i = impulses_[static_cast<std::size_t>(k)];
+    if (i.t < epoch || i.t >= now) continue;
+    x.segment<3>(nav::state::velocity(i.craft)) += i.dv_gcrf_mps / nav::state::kVelocityUnit;
+    x.segment<3>(nav::state::position(i.craft)) += i.dv_gcrf_mps * now.seconds_since(i.t);
+  }
+  NavigationSolution s;
+  s.t = now;
+  s.chief_gcrf = nav::CdgpsFilter::centre_of_mass(x, nav::Craft::kDsc);
+  s.deputy_gcrf = nav::CdgpsFilter::centre_of_mass(x, nav::Craft::kOsc);
+  s.relative_covariance_rtn = relative_covariance_rtn(use_fixed ? filter_.P_fixed() : filter_.P(), s.chief_gcrf);
+  return s;
+}
+
+}  // namespace visors::gnc
