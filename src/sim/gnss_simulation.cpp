@@ -29,6 +29,7 @@
 #include "sim/gnss_operations.hpp"
 #include "sim/gps_receiver.hpp"
 #include "sim/gps_satellite_truth.hpp"
+#include "sim/gps_world.hpp"
 #include "sim/propulsion.hpp"
 #include "sim/spacecraft_geometry.hpp"
 #include "sim/truth_dynamics.hpp"
@@ -57,41 +58,6 @@ struct Craft {
   std::int64_t acquisitions = 0;
   std::int64_t maneuvers = 0;  // executed pieces
 };
-
-struct World {
-  gnss::files::NavigationFile nav;
-  std::optional<GpsSatelliteTruth> satellites;
-  std::optional<core::EopTable> eop;
-};
-
-core::Result<World> load_world(const CampaignScenario& s) {
-  World w;
-  const auto path = core::files::find_data_file(s.gnss.nav_file);
-  if (!path) return core::Error{"gnss.nav_file", "'" + s.gnss.nav_file + "' not found (nor in the data search path)"};
-  auto nav = gnss::files::read_rinex_navigation(*path);
-  if (!nav.ok()) return core::Error{"gnss.nav_file", nav.error().describe()};
-  w.nav = std::move(nav).value();
-  if (s.gnss.receiver.ionosphere && !w.nav.ionosphere) {
-    return core::Error{"gnss.nav_file", "has no GPS ionosphere coefficients (needed by gnss.receiver.ionosphere = true)"};
-  }
-  const auto set = gnss::EphemerisSet::screen(w.nav.records, w.nav.record_lines);
-  const auto source = core::GpsTime::parse(s.gnss.source_time_gps, core::TimeScale::kGps);
-  if (!source.ok()) return core::Error{"gnss.source_time_gps", source.error().describe()};
-  auto constellation = gnss::GpsConstellation::from_broadcast(set, *source, s.t0);
-  if (!constellation.ok()) return core::Error{"gnss.nav_file", constellation.error().describe()};
-  auto satellites = GpsSatelliteTruth::create(*constellation, s.gnss.broadcast_errors, RandomStream(s.seed, "gps.satellites"),
-                                              s.gnss.duration_s);
-  if (!satellites.ok()) return core::Error{"gnss.broadcast_errors." + satellites.error().field, satellites.error().message};
-  w.satellites.emplace(std::move(satellites).value());
-  if (!s.forces.earth_frame.eop.empty()) {
-    if (const auto eop_path = core::files::find_data_file(s.forces.earth_frame.eop)) {
-      auto table = core::files::read_eop_file(*eop_path);
-      if (!table.ok()) return core::Error{"forces.earth_frame.eop", table.error().describe()};
-      w.eop.emplace(std::move(table).value());
-    }
-  }
-  return w;
-}
 
 core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftSettings& sc, const core::StateVector& x0,
                           const gnss::KlobucharCoefficients& ionosphere) {
@@ -159,7 +125,7 @@ core::Result<bool> write_resolved_scenario(const CampaignScenario& s, const std:
 }
 
 // brdc.rnx: the broadcast ephemerides the receivers decode (with the broadcast errors).
-core::Result<bool> write_broadcast_navigation(const CampaignScenario& s, const World& world,
+core::Result<bool> write_broadcast_navigation(const CampaignScenario& s, const GpsWorld& world,
                                               const std::filesystem::path& out_dir) {
   gnss::files::NavigationFile broadcast;
   broadcast.version = 3.05;
@@ -232,7 +198,7 @@ struct KeepingBurst {
 // The two spacecraft set up with their receivers, and the output files opened: the set-up of the
 // run, in the order its errors are reported.
 struct GnssRun {
-  World world;
+  GpsWorld world;
   std::array<Craft, 2> crafts;
   std::optional<TruthFiles> files;
   std::optional<AttitudeProfile> profile;  // the observation windows (attitude = "campaign")
@@ -242,7 +208,7 @@ struct GnssRun {
 
 core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std::filesystem::path& out_dir,
                               double last_epoch_s) {
-  auto world = load_world(s);
+  auto world = load_gps_world(s, s.gnss.duration_s);
   if (!world.ok()) return world.error();
   run.world = std::move(world).value();
   const auto initial = initial_formation_state(s);
@@ -277,22 +243,6 @@ core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std
   return true;
 }
 
-// The Earth's orientation and the Sun at one epoch, common to both spacecraft.
-struct EpochFrame {
-  Eigen::Matrix3d gcrf_to_itrf;
-  Eigen::Vector3d omega;  // Earth rotation in ITRF [rad/s]
-  Eigen::Vector3d sun_gcrf;
-};
-
-EpochFrame epoch_frame(const World& world, core::GpsTime t) {
-  core::EarthOrientation eop;
-  if (world.eop) {
-    if (auto at = world.eop->at(t); at.ok()) eop = *at;
-  }
-  return EpochFrame{core::gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop)),
-                    astro::sun_position_gcrf(t)};
-}
-
 // The truth attitude of [gnss] attitude: a fixed target ("nominal", "observation") or the
 // attitude profile with the observation windows ("campaign").
 struct AttitudeModel {
@@ -314,18 +264,12 @@ struct AttitudeModel {
     return AttitudeProfile::nominal_body_to_gcrf(r, v, sun_unit);
   }
 
-  // The body's angular velocity (GCRF axes) [rad/s]: the rotation between the attitudes at
-  // t_s -/+ 0.5 s, the states there from the two-body motion, divided by 1 s (the Sun held fixed:
-  // it moves 2e-7 rad/s; truncation ~ (w h)^2 of ~1e-3 rad/s in the tracking, exact for the
-  // constant-rate eigen-axis slew except within 0.5 s of its start and arrival).
+  // The body's angular velocity (GCRF axes) [rad/s] (sim/gps_world.hpp attitude_rate_gcrf; the
+  // Sun held fixed: it moves 2e-7 rad/s).
   [[nodiscard]] Eigen::Vector3d angular_velocity_gcrf(double t_s, const core::StateVector& x,
                                                       const Eigen::Vector3d& sun_gcrf) const {
-    constexpr double h = 0.5;
-    const Eigen::Vector3d a = -core::EarthGravityConstants{}.mu / std::pow(x.r.norm(), 3) * x.r;
-    const Eigen::Quaterniond before = at(t_s - h, x.r - h * x.v + 0.5 * h * h * a, x.v - h * a, sun_gcrf);
-    const Eigen::Quaterniond after = at(t_s + h, x.r + h * x.v + 0.5 * h * h * a, x.v + h * a, sun_gcrf);
-    const Eigen::AngleAxisd turn(after * before.conjugate());  // about GCRF axes
-    return turn.angle() / (2.0 * h) * turn.axis();
+    return attitude_rate_gcrf([&](double t, const Eigen::Vector3d& r, const Eigen::Vector3d& v) { return at(t, r, v, sun_gcrf); },
+                              t_s, x);
   }
 };
 
@@ -336,14 +280,8 @@ ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, d
   const Eigen::Quaterniond q = attitude.at(t_s, c.x_gcrf.r, c.x_gcrf.v, frame.sun_gcrf);
   c.attitude = q;
   c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
-  ReceiverPose pose;
-  pose.t = t;
-  pose.com_itrf.r = frame.gcrf_to_itrf * c.x_gcrf.r;
-  pose.com_itrf.v = frame.gcrf_to_itrf * c.x_gcrf.v - frame.omega.cross(pose.com_itrf.r);
-  pose.body_to_itrf = frame.gcrf_to_itrf * q.toRotationMatrix();
-  pose.com_body_m = c.geometry->com_body_m();
-  pose.angular_velocity_itrf = frame.gcrf_to_itrf * attitude.angular_velocity_gcrf(t_s, c.x_gcrf, frame.sun_gcrf) - frame.omega;
-  return pose;
+  return sim::receiver_pose(frame, t, c.x_gcrf, q, attitude.angular_velocity_gcrf(t_s, c.x_gcrf, frame.sun_gcrf),
+                            c.geometry->com_body_m());
 }
 
 // The craft's epoch counted into its statistics and written to the RINEX and truth files.
