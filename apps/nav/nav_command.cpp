@@ -14,16 +14,14 @@
 
 #include "config/cdgps_settings_toml.hpp"
 #include "config/toml_fields.hpp"
-#include "core/files/data_path.hpp"
-#include "core/files/eop_file.hpp"
 #include "core/files/output_file.hpp"
 #include "core/files/text_file.hpp"
-#include "dynamics/files/force_model_files.hpp"
 #include "nav/cdgps_filter.hpp"
 #include "nav/cold_start.hpp"
 #include "nav/nav_inputs.hpp"
 #include "nav/nav_replay.hpp"
 #include "nav/nav_score.hpp"
+#include "sim/navigation_setup.hpp"
 
 namespace visors::nav_app {
 namespace {
@@ -36,15 +34,11 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-dynamics::ForceModel onboard_model(const sim::SpacecraftSettings& sc, const char* name) {
-  dynamics::SpacecraftProperties p;
-  p.mass = sc.mass_kg;
-  p.cd = sc.cd;
-  p.cr = sc.cr;
-  p.srp_area = sc.srp_area_m2;
-  auto model = dynamics::files::load_force_model(dynamics::ForceModelConfig::onboard(), p);
-  if (!model) throw InputError(std::string(name) + " on-board force model: " + model.error().describe());
-  return std::move(model).value();
+// The error of a set-up step as the command's input error.
+template <class T>
+T or_input_error(core::Result<T> result) {
+  if (!result.ok()) throw InputError(result.error().describe());
+  return std::move(result).value();
 }
 
 const nav::GpsReceiverEpoch* at(const std::vector<nav::GpsReceiverEpoch>& epochs, std::size_t hint, core::GpsTime t) {
@@ -72,19 +66,6 @@ bool try_cold_start(nav::CdgpsFilter& filter, nav::ColdStart& cold, const nav::G
   if (!solution) return false;
   filter.initialise(solution->t, solution->dsc_gcrf, solution->osc_gcrf, solution->dsc_clock_m, solution->osc_clock_m);
   return true;
-}
-
-// The Earth orientation uplinked to the spacecraft: the IERS values at the run's start from the
-// scenario's EOP file (zero when it has none). Without them the GCRF of the filter turns against
-// the truth's by UT1-UTC and polar motion: ~35 m at 500 km in October 2024.
-core::EarthOrientation uplinked_earth_orientation(const sim::CampaignScenario& s) {
-  if (s.forces.earth_frame.eop.empty()) return {};
-  const auto path = core::files::find_data_file(s.forces.earth_frame.eop);
-  if (!path) return {};
-  auto table = core::files::read_eop_file(*path);
-  if (!table) throw InputError("forces.earth_frame.eop: " + table.error().describe());
-  auto at = table.value().at(s.t0);
-  return at.ok() ? at.value() : core::EarthOrientation{};
 }
 
 // Faults injected by the replay (the data stay those of the run): crosslink drops of the other
@@ -117,19 +98,12 @@ struct ReplaySettings {
   const toml::table* settings_file = nullptr;  // the --settings file's tables, if any
 };
 
-// The filter's settings: the defaults, the receiver's specification, the --settings file, the
-// command line's switches, in that order of precedence (the last wins).
+// The filter's settings: those of the run (sim::cdgps_settings: the defaults, the receiver's
+// specification, the scenario's [nav]), the --settings file, the command line's switches, in
+// that order of precedence (the last wins).
 nav::CdgpsFilter make_filter(const RunInputs& in, Craft local, const ReplaySettings& r) {
-  nav::CdgpsSettings settings;
+  nav::CdgpsSettings settings = or_input_error(sim::cdgps_settings(in.scenario));
   settings.local = local;
-  // The receiver's noise and multipath are its specification, known on board (characterised on
-  // the ground): a single difference has sqrt(2) of each receiver's; GRAPHIC half the code's
-  // multipath on top of the default's broadcast-error allowance. (Multipath is correlated over
-  // multipath_tau_s: a white sigma of the same size is the filter's approximation.)
-  const auto& rx = in.scenario.gnss.receiver;
-  settings.sdcp_sigma_m = std::sqrt(2.0) * std::hypot(rx.phase_sigma_m, rx.phase_multipath_m);
-  settings.sd_code_sigma_m = std::max(settings.sd_code_sigma_m, std::sqrt(2.0) * std::hypot(rx.code_sigma_m, rx.code_multipath_m));
-  settings.graphic_sigma_m = std::hypot(settings.graphic_sigma_m, 0.5 * rx.code_multipath_m);
   if (r.settings_file != nullptr) {
     if (auto ok = config::read_cdgps_settings(*r.settings_file, settings); !ok) {
       throw InputError("--settings: " + ok.error().describe());
@@ -137,7 +111,8 @@ nav::CdgpsFilter make_filter(const RunInputs& in, Craft local, const ReplaySetti
   }
   settings.elevation_weighting = settings.elevation_weighting || r.elevation_weighting;
   settings.ambiguity_resolution = settings.ambiguity_resolution && r.ambiguity_resolution;
-  auto created = nav::CdgpsFilter::create(settings, onboard_model(in.scenario.dsc, "dsc"), onboard_model(in.scenario.osc, "osc"));
+  auto created = nav::CdgpsFilter::create(settings, or_input_error(sim::onboard_force_model(in.scenario.dsc, "dsc")),
+                                          or_input_error(sim::onboard_force_model(in.scenario.osc, "osc")));
   if (!created) throw InputError("filter settings: " + created.error().describe());
   return std::move(created).value();
 }
@@ -208,7 +183,7 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
   out.name = local == Craft::kDsc ? "dsc" : "osc";
   out.latency_s = r.latency_s;
   nav::CdgpsFilter f = make_filter(in, local, r);
-  core::OnboardEarthFrame frame(uplinked_earth_orientation(in.scenario));
+  core::OnboardEarthFrame frame(or_input_error(sim::uplinked_earth_orientation(in.scenario)));
   nav::ColdStart cold;
   std::mt19937_64 rng(in.scenario.seed + 7 + static_cast<std::uint64_t>(local));  // the drops
   std::bernoulli_distribution drop(r.faults.crosslink_drop);

@@ -8,6 +8,7 @@
 #include "core/angles.hpp"
 #include "core/constants.hpp"
 #include "config/toml_fields.hpp"
+#include "config/cdgps_settings_toml.hpp"
 #include "config/force_model_toml.hpp"
 
 namespace visors::sim {
@@ -39,6 +40,15 @@ core::Result<Eigen::Matrix<double, 6, 1>> vector6_at(const toml::table& table, c
 }
 
 const toml::table* table_at(const toml::table& root, std::string_view key) { return root.get_as<toml::table>(key); }
+
+// A root table as TOML text, printed from the root so that nested tables keep their prefix.
+std::string table_text(std::string_view key, const toml::table& table) {
+  toml::table wrapper;
+  wrapper.insert(key, table);
+  std::ostringstream text;
+  text << wrapper;
+  return text.str() + "\n";
+}
 
 core::Result<bool> read_time(const toml::table& root, CampaignScenario& s) {
   const toml::table* t = table_at(root, "time");
@@ -129,8 +139,9 @@ core::Result<bool> read_navigation(const toml::table& root, CampaignScenario& s)
                                     "absolute_velocity_mps", "correlation_time_s"})) {
     return *e;
   }
-  VISORS_TRY(mode, string_at(*n, sec, "mode", "ideal"));
-  if (mode != "ideal") return Error{"navigation.mode", "only \"ideal\" is available (GPS navigation is a later issue)"};
+  VISORS_TRY(mode, string_at(*n, sec, "mode", s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal"));
+  if (mode != "ideal" && mode != "cdgps") return Error{"navigation.mode", "must be \"cdgps\" or \"ideal\""};
+  s.navigation_mode = mode == "cdgps" ? NavigationMode::kCdgps : NavigationMode::kIdeal;
   auto& v = s.navigation;
   VISORS_TRY(rp, number_at(*n, sec, "relative_position_m", v.relative_position_m));
   VISORS_TRY(rv, number_at(*n, sec, "relative_velocity_mps", v.relative_velocity_mps));
@@ -143,6 +154,18 @@ core::Result<bool> read_navigation(const toml::table& root, CampaignScenario& s)
   if (auto ok = in_range(av, 0.0, 10.0, "navigation.absolute_velocity_mps"); !ok) return ok.error();
   if (auto ok = in_range(tau, 1.0, 1e6, "navigation.correlation_time_s"); !ok) return ok.error();
   v = NavigationErrorSettings{rp, rv, ap, av, tau};
+  return true;
+}
+
+// The [nav] table (the on-board filter's tunables): checked against the filter's defaults now,
+// kept as text for the set-up (which applies it over the receiver-derived settings) and for
+// scenario.toml.
+core::Result<bool> read_nav_tunables(const toml::table& root, CampaignScenario& s) {
+  const toml::table* nav_table = table_at(root, "nav");
+  if (nav_table == nullptr) return true;
+  nav::CdgpsSettings check;
+  if (auto ok = config::read_cdgps_settings(root, check); !ok) return ok.error();
+  s.nav_toml = table_text("nav", *nav_table);
   return true;
 }
 
@@ -260,7 +283,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (!parsed.ok()) return parsed.error();
   const toml::table& root = parsed.value();
   if (auto e = check_keys(root, "", {"name", "seed", "time", "chief", "formation", "campaign", "navigation", "propulsion",
-                                     "dsc", "osc", "crosslink", "forces", "gnc", "fault", "gnss"})) {
+                                     "dsc", "osc", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
     return *e;
   }
   CampaignScenario s = default_campaign();
@@ -269,7 +292,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (seed < 0) return Error{"seed", "must be >= 0"};
   s.name = name;
   s.seed = static_cast<std::uint64_t>(seed);
-  for (auto* reader : {&read_time, &read_chief, &read_campaign, &read_navigation, &read_propulsion,
+  for (auto* reader : {&read_time, &read_chief, &read_campaign, &read_navigation, &read_nav_tunables, &read_propulsion,
                        &read_links_and_faults, &read_gnc}) {
     if (auto ok = reader(root, s); !ok) return ok.error();
   }
@@ -280,11 +303,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
     auto config = config::force_model_config_from_toml(forces, "forces");
     if (!config.ok()) return config.error();
     s.forces = config.value();
-    toml::table wrapper;  // printed from the root so nested tables keep their "forces." prefix
-    wrapper.insert("forces", *forces);
-    std::ostringstream text_out;
-    text_out << wrapper;
-    s.forces_toml = text_out.str() + "\n";
+    s.forces_toml = table_text("forces", *forces);
   }
   return s;
 }
@@ -309,8 +328,9 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      s.initial_roe_m(5));
   out += fmt::format("[campaign]\nstandby_s = {:.17g}\nobservations = {}\ntail_s = {:.17g}\nactive = \"{}\"\n\n", s.standby_s,
                      s.observations, s.tail_s, s.active);
-  out += fmt::format("[navigation]\nmode = \"ideal\"\nrelative_position_m = {:.17g}\nrelative_velocity_mps = {:.17g}\nabsolute_position_m = {:.17g}\nabsolute_velocity_mps = {:.17g}\ncorrelation_time_s = {:.17g}\n\n",
-                     n.relative_position_m, n.relative_velocity_mps, n.absolute_position_m, n.absolute_velocity_mps, n.correlation_time_s);
+  out += fmt::format("[navigation]\nmode = \"{}\"\nrelative_position_m = {:.17g}\nrelative_velocity_mps = {:.17g}\nabsolute_position_m = {:.17g}\nabsolute_velocity_mps = {:.17g}\ncorrelation_time_s = {:.17g}\n\n",
+                     s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal", n.relative_position_m,
+                     n.relative_velocity_mps, n.absolute_position_m, n.absolute_velocity_mps, n.correlation_time_s);
   out += fmt::format("[propulsion]\nmagnitude_sigma = {:.17g}\ndirection_sigma_deg = {:.17g}\nisp_s = {:.17g}\nisp_sigma_s = {:.17g}\n\n",
                      p.magnitude_sigma, deg(p.direction_sigma_rad), p.isp_s, p.isp_sigma_s);
   out += spacecraft("dsc", s.dsc);
@@ -325,6 +345,7 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      s.fault.impulse_dv_rtn_mps(2), s.fault.non_gnc_fault_t_s);
   out += gnss_settings_to_toml(s.gnss);
   out += s.forces_toml;
+  out += s.nav_toml;
   return out;
 }
 

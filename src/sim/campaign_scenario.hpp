@@ -21,6 +21,12 @@
 
 namespace visors::sim {
 
+/// Where the flight components' navigation comes from ([navigation] mode).
+enum class NavigationMode {
+  kIdeal,  // the truth plus Gauss-Markov errors (sim/ideal_navigation.hpp), for control-only studies
+  kCdgps,  // each component's own carrier-phase differential GPS filter (gnc/onboard_navigation.hpp)
+};
+
 struct NavigationErrorSettings {
   /// 3D 1-sigma errors of the ideal navigation (issue 6 defaults: relative 1 cm, 50 um/s;
   /// absolute 5 m, 1 cm/s; the DiGiTaL IAR-on figures of the mission paper's table).
@@ -67,7 +73,11 @@ struct CampaignScenario {
   double output_step_s = 10.0;     // time-series sampling [s]
   std::string active = "osc";      // initially active spacecraft
   // Models.
-  NavigationErrorSettings navigation;
+  NavigationMode navigation_mode = NavigationMode::kIdeal;
+  NavigationErrorSettings navigation;  // ideal navigation's errors
+  /// The [nav] table as given (the on-board filter's tunables over its defaults,
+  /// config/cdgps_settings_toml.hpp), empty when absent; checked when the scenario is read.
+  std::string nav_toml;
   PropulsionSettings propulsion;
   SpacecraftSettings dsc;
   SpacecraftSettings osc;

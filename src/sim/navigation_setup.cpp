@@ -1,0 +1,78 @@
+#include "sim/navigation_setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "config/cdgps_settings_toml.hpp"
+#include "config/toml_fields.hpp"
+#include "core/files/data_path.hpp"
+#include "core/files/eop_file.hpp"
+#include "dynamics/files/force_model_files.hpp"
+#include "sim/spacecraft_geometry.hpp"
+
+namespace visors::sim {
+
+core::Result<nav::CdgpsSettings> cdgps_settings(const CampaignScenario& s) {
+  nav::CdgpsSettings settings;
+  const GpsReceiverSettings& rx = s.gnss.receiver;
+  settings.sdcp_sigma_m = std::sqrt(2.0) * std::hypot(rx.phase_sigma_m, rx.phase_multipath_m);
+  settings.sd_code_sigma_m = std::max(settings.sd_code_sigma_m, std::sqrt(2.0) * std::hypot(rx.code_sigma_m, rx.code_multipath_m));
+  settings.graphic_sigma_m = std::hypot(settings.graphic_sigma_m, 0.5 * rx.code_multipath_m);
+  if (s.nav_toml.empty()) return settings;
+  auto table = config::toml_fields::parse(s.nav_toml);
+  if (!table.ok()) return table.error();
+  if (auto ok = config::read_cdgps_settings(table.value(), settings); !ok) return ok.error();
+  return settings;
+}
+
+core::Result<dynamics::ForceModel> onboard_force_model(const SpacecraftSettings& sc, std::string_view name) {
+  dynamics::SpacecraftProperties p;
+  p.mass = sc.mass_kg;
+  p.cd = sc.cd;
+  p.cr = sc.cr;
+  p.srp_area = sc.srp_area_m2;
+  auto model = dynamics::files::load_force_model(dynamics::ForceModelConfig::onboard(), p);
+  if (!model.ok()) return core::Error{std::string(name) + " on-board force model", model.error().describe()};
+  return std::move(model).value();
+}
+
+core::Result<core::EarthOrientation> uplinked_earth_orientation(const CampaignScenario& s) {
+  if (s.forces.earth_frame.eop.empty()) return core::EarthOrientation{};
+  const auto path = core::files::find_data_file(s.forces.earth_frame.eop);
+  if (!path) return core::EarthOrientation{};
+  auto table = core::files::read_eop_file(*path);
+  if (!table.ok()) return core::Error{"forces.earth_frame.eop", table.error().describe()};
+  auto at = table.value().at(s.t0);
+  return at.ok() ? at.value() : core::EarthOrientation{};
+}
+
+core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const CampaignScenario& s) {
+  gnc::OnboardNavigationSettings settings;
+  auto filter = cdgps_settings(s);
+  if (!filter.ok()) return filter.error();
+  settings.filter = filter.value();
+  const GeometrySettings nominal;  // what the flight software knows of the geometry
+  settings.antenna_arp_body_m = s.gnss.receiver.antenna_body_m - nominal.com_nominal_body_m;
+  settings.antenna_pco_m = s.gnss.receiver.phase_center_offset_m;
+  settings.lrf_lever_body_m = nominal.payload_nominal_body_m - nominal.com_nominal_body_m;
+  settings.lrf_sigma_m = s.gnss.lrf.sigma_m;
+  auto eop = uplinked_earth_orientation(s);
+  if (!eop.ok()) return eop.error();
+  settings.earth_orientation = eop.value();
+  return settings;
+}
+
+core::Result<gnc::OnboardNavigation> make_onboard_navigation(const CampaignScenario& s, gnc::Spacecraft self) {
+  auto settings = onboard_navigation_settings(s);
+  if (!settings.ok()) return settings.error();
+  auto dsc = onboard_force_model(s.dsc, "dsc");
+  if (!dsc.ok()) return dsc.error();
+  auto osc = onboard_force_model(s.osc, "osc");
+  if (!osc.ok()) return osc.error();
+  auto navigation = gnc::OnboardNavigation::create(settings.value(), self, std::move(dsc).value(), std::move(osc).value());
+  if (!navigation.ok()) return core::Error{"nav." + navigation.error().field, navigation.error().message};
+  return navigation;
+}
+
+}  // namespace visors::sim
