@@ -38,6 +38,12 @@ core::Result<bool> OnboardNavigationSettings::validate() const {
   if (!std::isfinite(lrf_bias_m)) return core::Error{"lrf_bias_m", "must be finite"};
   if (!(peer_wait_s >= 0.0 && peer_wait_s <= 10.0)) return core::Error{"peer_wait_s", "must be in [0, 10] s"};
   if (!(coast_after_s >= 1.0 && coast_after_s <= 60.0)) return core::Error{"coast_after_s", "must be in [1, 60] s"};
+  if (!(valid_position_sigma_m > 0.0) || !std::isfinite(valid_position_sigma_m)) {
+    return core::Error{"valid_position_sigma_m", "must be finite and > 0"};
+  }
+  if (!(valid_velocity_sigma_mps > 0.0) || !std::isfinite(valid_velocity_sigma_mps)) {
+    return core::Error{"valid_velocity_sigma_mps", "must be finite and > 0"};
+  }
   return true;
 }
 
@@ -265,13 +271,21 @@ std::optional<NavigationSolution> OnboardNavigation::solve(core::GpsTime now) {
       if (b.filled && b.epoch.t <= last_processed_) b.filled = false;
     }
   }
-  if (!filter_.initialised()) return std::nullopt;
+  if (!filter_.initialised()) {
+    valid_ = false;
+    return std::nullopt;
+  }
   if (next_own_epoch() == nullptr && now.seconds_since(last_update_) >= settings_.coast_after_s) {
     apply_impulses_before(now);
     filter_.predict(now);  // a GPS outage: the covariance grows with the dynamics
     fixed_current_ = false;
   }
-  return solution(now);
+  solution_ = solution(now);
+  const auto& C = solution_->relative_covariance_rtn;
+  valid_ = C.topLeftCorner<3, 3>().trace() <= settings_.valid_position_sigma_m * settings_.valid_position_sigma_m &&
+           C.bottomRightCorner<3, 3>().trace() <= settings_.valid_velocity_sigma_mps * settings_.valid_velocity_sigma_mps;
+  if (!valid_) return std::nullopt;
+  return solution_;
 }
 
 NavigationSolution OnboardNavigation::solution(core::GpsTime now) {

@@ -61,6 +61,13 @@ struct OnboardNavigationSettings {
   double peer_wait_s = 2.0;
   /// Without own epochs for this long the filter coasts (file comment) [s].
   double coast_after_s = 3.0;
+  /// The solution is handed to the control and safety only while its relative position and
+  /// velocity 1-sigma (root of the trace of each 3 x 3 block) are below these: not after the
+  /// cold start until the carrier phase has converged it (the 10 m and 0.1 m/s priors make the
+  /// passive-safety check see a collision risk), nor when a long outage has let it grow
+  /// (the component then reports itself GNC incapable) [m, m/s].
+  double valid_position_sigma_m = 0.1;
+  double valid_velocity_sigma_mps = 1e-3;
   core::EarthOrientation earth_orientation;  // uplinked (the IERS values at the campaign's start)
 
   /// Ok, or the field by name.
@@ -95,15 +102,19 @@ class OnboardNavigation {
   void add_peer(const CrosslinkNavigation& peer);
 
   /// Processes the complete epochs (file comment) and returns the solution at `now`, or nullopt
-  /// before the cold start.
+  /// before the cold start and while it is not valid (settings' valid_* sigmas).
   std::optional<NavigationSolution> solve(core::GpsTime now);
 
   /// What this spacecraft sends the other (its newest epoch, attitude, impulses, range).
   [[nodiscard]] const CrosslinkNavigation& crosslink() const { return outgoing_; }
+  /// The solution of the last solve(), valid or not (nullopt before the cold start).
+  [[nodiscard]] const std::optional<NavigationSolution>& last_solution() const { return solution_; }
   [[nodiscard]] bool initialised() const { return filter_.initialised(); }
   /// The time tag of the last measurement update (or of the cold start).
   [[nodiscard]] core::GpsTime last_update() const { return last_update_; }
   [[nodiscard]] bool fixed() const { return last_report_.fix_applied && fixed_current_; }
+  /// The last solution met the settings' valid_* sigmas.
+  [[nodiscard]] bool valid() const { return valid_; }
   [[nodiscard]] const nav::CdgpsEpochReport& last_report() const { return last_report_; }
   [[nodiscard]] const NavigationCounters& counters() const { return counters_; }
   [[nodiscard]] const nav::CdgpsFilter& filter() const { return filter_; }
@@ -163,6 +174,8 @@ class OnboardNavigation {
   nav::CdgpsEpochReport last_report_{};
   bool fixed_current_ = false;  // the last report's fixed solution belongs to the filter's epoch
   CrosslinkNavigation outgoing_;
+  std::optional<NavigationSolution> solution_;
+  bool valid_ = false;
   NavigationCounters counters_;
 };
 

@@ -8,17 +8,17 @@ namespace {
 
 // The Joseph update given u = P h': with w = u - (h u) k, the header's
 //   P+ = (P - k u') - (w - r k) k' = P - k u' - v k',  v = u - (h u + r) k,
-// in one pass over the lower triangle, each element the mean of its two mirror images (the
-// update is symmetric in exact arithmetic; averaging keeps P exactly symmetric against the
-// round-off, and the next update reads P h' as (h P)'), then mirrored. Three passes over P
-// before (two rank-one updates and a symmetrisation); 44 % of the replay's time went here.
+// i.e. P+ = P - (k u' + u k' - c k k'), c = h u + r: a symmetric rank-two change. P is taken as
+// symmetric (every producer keeps it exactly so): its lower triangle is updated column by column
+// (contiguous, so the compiler vectorises it) and mirrored, which keeps P+ exactly symmetric
+// against the round-off (the next update reads P h' as (h P)'). Reading both mirror images per
+// element, as before, made the pass strided: 1.4x slower in the filter's epoch.
 void joseph_rank_one(NavMatrix& P, const NavRow& h, const NavVector& k, double r, const NavVector& u) {
-  const NavVector v = u - ((h * u).value() + r) * k;
+  const double c = (h * u).value() + r;
   for (int j = 0; j < kNavStates; ++j) {
-    const double kj = k(j), uj = u(j), vj = v(j);
-    for (int i = j; i < kNavStates; ++i) {
-      P(i, j) = 0.5 * (P(i, j) + P(j, i)) - 0.5 * (k(i) * uj + kj * u(i) + v(i) * kj + vj * k(i));
-    }
+    const int n = kNavStates - j;
+    const double a = u(j) - c * k(j);
+    P.col(j).tail(n) -= k.tail(n) * a + u.tail(n) * k(j);
   }
   P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
 }

@@ -13,6 +13,7 @@ inline constexpr std::string_view kObservationsFile = "observations.csv";
 inline constexpr std::string_view kEventsFile = "events.csv";
 inline constexpr std::string_view kSummaryFile = "summary.json";
 inline constexpr std::string_view kReportFile = "report.html";
+inline constexpr std::string_view kNavigationFile = "navigation.csv";  // [navigation] mode = "cdgps" only
 
 /// The columns of timeseries.csv, in order.
 inline constexpr std::array<std::string_view, 26> kTimeseriesColumns{
@@ -25,5 +26,13 @@ inline constexpr std::array<std::string_view, 26> kTimeseriesColumns{
 inline constexpr std::array<std::string_view, 6> kObservationColumns{
     "index", "t_s", "lateral_error_m", "lateral_velocity_mps", "focus_error_m", "success"};
 inline constexpr std::array<std::string_view, 4> kEventColumns{"t_s", "spacecraft", "kind", "detail"};
+
+/// The columns of navigation.csv (each component's on-board navigation against the truth, one
+/// row per spacecraft every output step; sim/navigation_score.hpp), in order.
+inline constexpr std::array<std::string_view, 24> kNavigationColumns{
+    "t_s",          "spacecraft",    "fixed",        "fixed_fraction", "rel_r_m",        "rel_t_m",
+    "rel_n_m",      "antenna_r_m",   "antenna_t_m",  "antenna_n_m",    "rel_vr_mps",     "rel_vt_mps",
+    "rel_vn_mps",   "sigma_r_m",     "sigma_t_m",    "sigma_n_m",      "emp_dsc_r_mps2", "emp_dsc_t_mps2",
+    "emp_dsc_n_mps2", "emp_osc_r_mps2", "emp_osc_t_mps2", "emp_osc_n_mps2", "in_slew", "in_observation"};
 
 }  // namespace visors::report

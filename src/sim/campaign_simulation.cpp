@@ -82,14 +82,34 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
   const auto initial = initial_formation_state(scenario);
   if (!initial.ok()) return initial.error();
   CampaignSimulation sim(scenario, recorder);
+  if (scenario.navigation_mode == NavigationMode::kCdgps) {
+    if (auto ok = sim.set_up_gps(); !ok) return ok.error();
+  }
+  const GpsWorld* gps = sim.gps_ ? &*sim.gps_ : nullptr;
   SimulatedSpacecraft& dsc = sim.vehicles_[0];
   SimulatedSpacecraft& osc = sim.vehicles_[1];
-  if (auto ok = set_up_spacecraft(dsc, scenario, scenario.dsc, scenario.active == "dsc", initial->dsc_gcrf); !ok) return ok.error();
-  if (auto ok = set_up_spacecraft(osc, scenario, scenario.osc, scenario.active == "osc", initial->osc_gcrf); !ok) return ok.error();
+  if (auto ok = set_up_spacecraft(dsc, scenario, scenario.dsc, scenario.active == "dsc", initial->dsc_gcrf, gps); !ok) {
+    return ok.error();
+  }
+  if (auto ok = set_up_spacecraft(osc, scenario, scenario.osc, scenario.active == "osc", initial->osc_gcrf, gps); !ok) {
+    return ok.error();
+  }
   for (const SimulatedSpacecraft& v : sim.vehicles_) {
     for (const auto& warning : v.truth.forces->warnings()) recorder.event(0.0, v.name, "warning", warning);
   }
   return sim;
+}
+
+// The GPS world over the whole campaign, the data sets by satellite, the rangefinder's noise
+// stream (as gnss-sim's) and navigation.csv.
+core::Result<bool> CampaignSimulation::set_up_gps() {
+  auto world = load_gps_world(scenario_, scenario_.max_duration_s);
+  if (!world.ok()) return world.error();
+  gps_.emplace(std::move(world).value());
+  const auto records = gps_->satellites->broadcast_records();
+  for (std::size_t i = 0; i < records.size(); ++i) sets_by_prn_[static_cast<std::size_t>(records[i].prn)].push_back(i);
+  lrf_rng_.emplace(scenario_.seed, "osc.lrf");
+  return recorder_->open_navigation();
 }
 
 SimulatedSpacecraft& CampaignSimulation::active() {
@@ -117,6 +137,7 @@ core::Result<bool> CampaignSimulation::step() {
   update_attitude(sun_gcrf_m);
   apply_ground_timeline(t);
   step_flight_components(t);
+  score_navigation();
   // Per spacecraft, in order: the host routes its outputs, then applies its FDIR (the event log
   // keeps this order).
   route_outputs(vehicles_[0], vehicles_[1]);
@@ -152,16 +173,23 @@ void CampaignSimulation::apply_ground_timeline(core::GpsTime t) {
   }
 }
 
-// Sensors (ideal navigation, the newest crosslink message, time at tone with the attitude) and
-// one step of each flight component with the commands and telemetry queued for it.
+// Sensors (ideal navigation, or the GPS receivers and the rangefinder; the newest crosslink
+// message, time at tone with the attitude) and one step of each flight component with the
+// commands and telemetry queued for it.
 void CampaignSimulation::step_flight_components(core::GpsTime t) {
   const core::StateVector& dsc_gcrf = vehicles_[0].x_gcrf;
   const core::StateVector& osc_gcrf = vehicles_[1].x_gcrf;
+  const EpochFrame frame = gps_ ? epoch_frame(*gps_, t) : EpochFrame{};
   for (SimulatedSpacecraft& v : vehicles_) {
     gnc::GncInputs in;
     in.t = t;
     in.time_at_tone = gnc::TimeAtTone{t, v.q_body_to_gcrf};
-    in.navigation = v.navigation->solve(t, dsc_gcrf, osc_gcrf, k_ == 0 ? 0.0 : scenario_.step_s);
+    if (gps_) {
+      in.gps = measure_gps(v, frame, t);
+      if (v.id == Spacecraft::kOsc) in.laser_range = measure_range(t);
+    } else {
+      in.navigation = v.navigation->solve(t, dsc_gcrf, osc_gcrf, k_ == 0 ? 0.0 : scenario_.step_s);
+    }
     auto delivered = v.inbox->receive(ts_);
     if (!delivered.empty()) in.crosslink = delivered.back();  // the newest state of the other spacecraft
     in.command = v.command;
@@ -171,6 +199,103 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
     const Mode before = v.gnc->mode();
     v.out = v.gnc->step(in);
     if (v.out.mode != before) recorder_->event(ts_, v.name, "mode", fmt::format("{} -> {}", to_string(before), to_string(v.out.mode)));
+  }
+}
+
+// The receiver's epoch at t in the true pose (the attitude's rate from the spacecraft's attitude
+// law), and the broadcast record it decoded; nothing in a data gap.
+std::optional<gnc::GpsMessage> CampaignSimulation::measure_gps(SimulatedSpacecraft& v, const EpochFrame& frame, core::GpsTime t) {
+  const auto law = [&](double t_s, const Eigen::Vector3d& r, const Eigen::Vector3d& velocity) {
+    return v.attitude->body_to_gcrf(t_s, r, velocity, (frame.sun_gcrf - r).normalized());
+  };
+  const Eigen::Vector3d omega_gcrf = attitude_rate_gcrf(law, ts_, v.x_gcrf);
+  const ReceiverPose pose = receiver_pose(frame, t, v.x_gcrf, v.q_body_to_gcrf, omega_gcrf, v.geometry->com_body_m());
+  const GpsReceiverEpoch& epoch = v.receiver->measure(pose, *gps_->satellites);
+  navigation_score_.record_phase_truth(v.id, epoch);
+  if (!epoch.recorded) return std::nullopt;
+  gnc::GpsMessage message;
+  message.t = epoch.measurement.t;
+  message.epoch = epoch.measurement;
+  decode_ephemeris(v, t, message);
+  return message;
+}
+
+// At most one broadcast record per message: of the first tracked satellite whose data set in
+// force at t (each from t_oe - refresh_s / 2, the first from the start: the receivers of
+// gnss-sim select the same way) the receiver has not decoded yet.
+void CampaignSimulation::decode_ephemeris(SimulatedSpacecraft& v, core::GpsTime t, gnc::GpsMessage& message) {
+  const auto records = gps_->satellites->broadcast_records();
+  const double half_refresh_s = 0.5 * scenario_.gnss.broadcast_errors.refresh_s;
+  for (int k = 0; k < message.epoch.channel_count; ++k) {
+    const auto prn = static_cast<std::size_t>(message.epoch.channels[static_cast<std::size_t>(k)].prn);
+    const std::vector<std::size_t>& sets = sets_by_prn_[prn];
+    std::size_t& next = v.next_ephemeris[prn];
+    std::size_t current = next > 0 ? next - 1 : 0;
+    while (current + 1 < sets.size() && half_refresh_s > 0.0 && t.seconds_since(records[sets[current + 1]].toe) >= -half_refresh_s) {
+      ++current;
+    }
+    if (sets.empty() || next > current) continue;
+    message.has_ephemeris = true;
+    message.ephemeris = records[sets[current]];
+    next = current + 1;
+    return;
+  }
+}
+
+// The OSC's rangefinder while its component powers it, inside an observation window, every
+// [gnss.lrf] interval_s from the window's first step: the range between the true payload points
+// with [gnss.lrf] bias_m and N(0, sigma_m) noise (as gnss-sim's lrf.csv).
+std::optional<gnc::LaserRange> CampaignSimulation::measure_range(core::GpsTime t) {
+  const SimulatedSpacecraft& dsc = vehicles_[0];
+  const SimulatedSpacecraft& osc = vehicles_[1];
+  if (!osc.out.lrf_power) return std::nullopt;
+  const GnssLrfSettings& lrf = scenario_.gnss.lrf;
+  const auto stride = std::max<std::int64_t>(1, std::llround(lrf.interval_s / scenario_.step_s));
+  for (const ObservationWindow& w : osc.attitude->windows()) {
+    if (ts_ < w.start_s - 1e-9 || ts_ > w.end_s + 1e-9) continue;
+    const auto first = static_cast<std::int64_t>(std::ceil(w.start_s / scenario_.step_s - 1e-9));
+    if ((k_ - first) % stride != 0) return std::nullopt;
+    const Eigen::Vector3d p_osc = osc.x_gcrf.r + osc.q_body_to_gcrf * osc.geometry->payload_from_com_body_m();
+    const Eigen::Vector3d p_dsc = dsc.x_gcrf.r + dsc.q_body_to_gcrf * dsc.geometry->payload_from_com_body_m();
+    return gnc::LaserRange{t, (p_osc - p_dsc).norm() + lrf.bias_m + lrf_rng_->normal(lrf.sigma_m)};
+  }
+  return std::nullopt;
+}
+
+// Where the observations are (the active spacecraft's schedule, which the passive one follows):
+// in a window, or in the slew to it or back from it (as long as the slew to it).
+bool CampaignSimulation::in_observation(double t_s) const {
+  for (const ObservationWindow& w : active().attitude->windows()) {
+    if (t_s >= w.start_s && t_s <= w.end_s) return true;
+  }
+  return false;
+}
+
+bool CampaignSimulation::in_slew(double t_s) const {
+  for (const ObservationWindow& w : active().attitude->windows()) {
+    const double lead = w.start_s - w.slew_start_s;
+    if ((t_s >= w.slew_start_s && t_s < w.start_s) || (t_s > w.end_s && t_s <= w.end_s + lead)) return true;
+  }
+  return false;
+}
+
+// Each component's navigation solution of this step against the truth.
+void CampaignSimulation::score_navigation() {
+  if (!gps_) return;
+  const SimulatedSpacecraft& dsc = vehicles_[0];
+  const SimulatedSpacecraft& osc = vehicles_[1];
+  FormationTruth truth;
+  truth.dsc_gcrf = dsc.x_gcrf;
+  truth.osc_gcrf = osc.x_gcrf;
+  truth.dsc_body_to_gcrf = dsc.q_body_to_gcrf.toRotationMatrix();
+  truth.osc_body_to_gcrf = osc.q_body_to_gcrf.toRotationMatrix();
+  truth.dsc_com_knowledge_m = dsc.geometry->com_nominal_body_m() - dsc.geometry->com_body_m();
+  truth.osc_com_knowledge_m = osc.geometry->com_nominal_body_m() - osc.geometry->com_body_m();
+  const bool slewing = in_slew(ts_);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const SimulatedSpacecraft& v = vehicles_[k];
+    if (!v.gnc->navigation()) continue;
+    navigation_samples_[k] = navigation_score_.score(v.id, *v.gnc->navigation(), ts_, truth, slewing);
   }
 }
 
@@ -311,6 +436,19 @@ void CampaignSimulation::record_metrics(const Eigen::Vector3d& sun_gcrf_m) {
   row.dv_dsc_mps = dsc.dv_total_mps;
   row.dv_osc_mps = osc.dv_total_mps;
   recorder_->timeseries(row);
+  if (!gps_) return;
+  const bool slewing = in_slew(ts_), observing = in_observation(ts_);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const SimulatedSpacecraft& v = vehicles_[k];
+    const gnc::NavigationCounters& c = v.gnc->navigation()->counters();
+    const std::int64_t epochs = c.epochs_joint + c.epochs_alone;
+    const double fixed_fraction = epochs > rows_epochs_[k] ? static_cast<double>(c.epochs_fixed - rows_fixed_[k]) /
+                                                                 static_cast<double>(epochs - rows_epochs_[k])
+                                                           : 0.0;
+    rows_epochs_[k] = epochs;
+    rows_fixed_[k] = c.epochs_fixed;
+    recorder_->navigation(ts_, v.name, navigation_samples_[k], fixed_fraction, slewing, observing);
+  }
 }
 
 // The campaign ends tail_s after the active spacecraft is back in standby after science, or in
@@ -377,7 +515,33 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
   const gnc::Telemetry& tm_osc = vehicles_[1].out.telemetry;
   summary["rejected_inputs"] = tm_dsc.rejected.total() + tm_osc.rejected.total();
   summary["planning_failures"] = tm_dsc.planning_failures + tm_osc.planning_failures;
+  summary["navigation_mode"] = s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal";
+  if (gps_) summary["navigation"] = navigation_summary();
   return summary;
+}
+
+// The navigation score (sim/navigation_score.hpp) with each component's counters.
+nlohmann::json CampaignSimulation::navigation_summary() const {
+  nlohmann::json out = navigation_score_.summary();
+  for (const SimulatedSpacecraft& v : vehicles_) {
+    const gnc::NavigationCounters& c = v.gnc->navigation()->counters();
+    nlohmann::json ephemerides;
+    for (int k = 0; k < static_cast<int>(c.ephemerides.size()); ++k) {
+      ephemerides[gnss::to_string(static_cast<gnss::EphemerisStore::AcceptStatus>(k))] = c.ephemerides[static_cast<std::size_t>(k)];
+    }
+    nlohmann::json& n = out[std::string(v.name)];
+    n["epochs_joint"] = c.epochs_joint;
+    n["epochs_alone"] = c.epochs_alone;
+    n["epochs_refused"] = c.epochs_refused;
+    n["wrong_fixes_refused"] = c.wrong_fixes_refused;
+    n["impulses_applied"] = c.impulses_applied;
+    n["impulses_late"] = c.impulses_late;
+    n["laser_ranges_used"] = c.laser_used;
+    n["laser_ranges_rejected"] = c.laser_rejected;
+    n["ephemerides"] = ephemerides;
+    n["rejected_gps_messages"] = v.out.telemetry.rejected.gps;
+  }
+  return out;
 }
 
 core::Result<RunResult> run_campaign(const CampaignScenario& scenario, const std::filesystem::path& out_dir,

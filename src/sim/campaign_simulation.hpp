@@ -27,6 +27,8 @@
 #include "core/status.hpp"
 #include "sim/alignment_metrics.hpp"
 #include "sim/campaign_scenario.hpp"
+#include "sim/gps_world.hpp"
+#include "sim/navigation_score.hpp"
 #include "sim/run_recorder.hpp"
 #include "sim/simulated_spacecraft.hpp"
 
@@ -70,6 +72,8 @@ class CampaignSimulation {
   };
 
   CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder);
+  core::Result<bool> set_up_gps();
+  [[nodiscard]] nlohmann::json navigation_summary() const;
   SimulatedSpacecraft& active();
   [[nodiscard]] const SimulatedSpacecraft& active() const;
 
@@ -77,6 +81,7 @@ class CampaignSimulation {
   void update_attitude(const Eigen::Vector3d& sun_gcrf_m);
   void apply_ground_timeline(core::GpsTime t);
   void step_flight_components(core::GpsTime t);
+  void score_navigation();
   void route_outputs(SimulatedSpacecraft& v, SimulatedSpacecraft& other);
   void execute_maneuver(SimulatedSpacecraft& v, core::GpsTime t);
   void apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft& other, core::GpsTime t);
@@ -84,6 +89,12 @@ class CampaignSimulation {
   void record_metrics(const Eigen::Vector3d& sun_gcrf_m);
   void update_end();
   core::Result<bool> propagate_truth(core::GpsTime t);
+  // Sensors of on-board navigation ([navigation] mode = "cdgps").
+  std::optional<gnc::GpsMessage> measure_gps(SimulatedSpacecraft& v, const EpochFrame& frame, core::GpsTime t);
+  void decode_ephemeris(SimulatedSpacecraft& v, core::GpsTime t, gnc::GpsMessage& message);
+  std::optional<gnc::LaserRange> measure_range(core::GpsTime t);
+  [[nodiscard]] bool in_slew(double t_s) const;
+  [[nodiscard]] bool in_observation(double t_s) const;
 
   CampaignScenario scenario_;
   RunRecorder* recorder_;
@@ -100,6 +111,15 @@ class CampaignSimulation {
   double min_sep_3d_m_ = std::numeric_limits<double>::infinity();
   int safety_violations_ = 0;
   bool science_started_ = false, left_science_ = false, escaped_ = false;
+  // On-board navigation ([navigation] mode = "cdgps").
+  std::optional<GpsWorld> gps_;
+  /// Per PRN, the indices of its broadcast data sets in GpsSatelliteTruth::broadcast_records(),
+  /// in t_oe order.
+  std::array<std::vector<std::size_t>, gnss::kMaxGpsPrn + 1> sets_by_prn_;
+  std::optional<RandomStream> lrf_rng_;
+  NavigationScore navigation_score_;
+  std::array<NavigationSample, 2> navigation_samples_{};
+  std::array<std::int64_t, 2> rows_epochs_{}, rows_fixed_{};  // at each spacecraft's last navigation.csv row
 };
 
 /// Runs `scenario`, writing the run directory `out_dir`. `progress` (optional) is called about

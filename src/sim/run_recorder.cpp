@@ -61,6 +61,26 @@ core::Result<RunRecorder> RunRecorder::open(const std::filesystem::path& dir, co
   return r;
 }
 
+core::Result<bool> RunRecorder::open_navigation() {
+  auto file = open_file(dir_ / std::string(report::kNavigationFile));
+  if (!file.ok()) return file.error();
+  navigation_ = std::move(file).value();
+  write_header(navigation_.get(), report::kNavigationColumns);
+  return true;
+}
+
+void RunRecorder::navigation(double t_s, std::string_view spacecraft, const NavigationSample& s, double fixed_fraction,
+                             bool in_slew, bool in_observation) {
+  if (!navigation_ || !s.valid) return;
+  std::string line = fmt::format("{:.17g},{},{},{:.6g}", t_s, spacecraft, s.fixed ? 1 : 0, fixed_fraction);
+  for (const Eigen::Vector3d* v : {&s.position_rtn_m, &s.antenna_rtn_m, &s.velocity_rtn_mps, &s.sigma_rtn_m,
+                                   &s.empirical_dsc_rtn_mps2, &s.empirical_osc_rtn_mps2}) {
+    for (int i = 0; i < 3; ++i) line += fmt::format(",{:.9g}", (*v)(i));
+  }
+  line += fmt::format(",{},{}\n", in_slew ? 1 : 0, in_observation ? 1 : 0);
+  std::fputs(line.c_str(), navigation_.get());
+}
+
 void RunRecorder::timeseries(const TimeseriesRow& row) {
   std::string line = fmt::format("{:.17g},{},{}", row.t_s, row.mode, row.active);
   for (int i = 0; i < 6; ++i) line += fmt::format(",{:.17g}", row.roe_mean_m(i));
@@ -88,6 +108,7 @@ core::Result<bool> RunRecorder::finish(const nlohmann::json& summary) {
   timeseries_.reset();
   observations_.reset();
   events_.reset();
+  navigation_.reset();
   const auto path = dir_ / std::string(report::kSummaryFile);
   std::ofstream out(path);
   if (!out) return core::Error{"output file " + path.string(), "cannot be written"};

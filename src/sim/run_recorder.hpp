@@ -15,6 +15,7 @@
 #include "core/files/output_file.hpp"
 #include "core/status.hpp"
 #include "sim/alignment_metrics.hpp"
+#include "sim/navigation_score.hpp"
 
 namespace visors::sim {
 
@@ -42,7 +43,13 @@ class RunRecorder {
   /// Creates `dir` (and parents) and opens the files. Errors name the path.
   static core::Result<RunRecorder> open(const std::filesystem::path& dir, const std::string& scenario_toml);
 
+  /// Opens navigation.csv (on-board navigation runs). Errors name the path.
+  core::Result<bool> open_navigation();
   void timeseries(const TimeseriesRow& row);
+  /// A navigation.csv row (open_navigation() first): the sample at t_s, the fraction of the
+  /// processed epochs fixed since the spacecraft's previous row, where the step lies.
+  void navigation(double t_s, std::string_view spacecraft, const NavigationSample& sample, double fixed_fraction,
+                  bool in_slew, bool in_observation);
   void observation(const AlignmentResult& result, bool success);
   void event(double t_s, std::string_view spacecraft, std::string_view kind, std::string_view detail);
   /// Writes summary.json and closes the files.
@@ -59,7 +66,7 @@ class RunRecorder {
   RunRecorder() = default;
 
   std::filesystem::path dir_;
-  File timeseries_, observations_, events_;
+  File timeseries_, observations_, events_, navigation_;
 };
 
 }  // namespace visors::sim

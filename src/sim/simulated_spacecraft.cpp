@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "sim/navigation_setup.hpp"
 #include "sim/random_stream.hpp"
 
 namespace visors::sim {
@@ -28,13 +29,31 @@ core::Result<bool> set_up_truth(SimulatedSpacecraft& v, const CampaignScenario& 
   return true;
 }
 
+core::Result<bool> set_up_receiver(SimulatedSpacecraft& v, const CampaignScenario& s, const GpsWorld& gps,
+                                   const std::string& prefix) {
+  GpsReceiverSettings settings = s.gnss.receiver;
+  settings.klobuchar = gps.nav.ionosphere.value_or(gnss::KlobucharCoefficients{});
+  settings.epoch_interval_s = s.step_s;  // clock_step_sigma_m is per epoch
+  auto receiver = GpsReceiver::create(settings, RandomStream(s.seed, prefix + ".gps"));
+  if (!receiver.ok()) return core::Error{"gnss.receiver." + receiver.error().field, receiver.error().message};
+  v.receiver.emplace(std::move(receiver).value());
+  return true;
+}
+
 core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenario& s, const SpacecraftSettings& sc,
-                                   bool active, const std::string& prefix) {
+                                   bool active, const std::string& prefix, const GpsWorld* gps) {
   gnc::GncConfig config = s.gnc;
   config.self = v.id;
   config.active = active;
   config.mass_kg = sc.mass_kg;
-  auto component = gnc::FlightComponent::create(config);
+  std::optional<gnc::OnboardNavigation> onboard;
+  if (gps != nullptr) {
+    if (auto ok = set_up_receiver(v, s, *gps, prefix); !ok) return ok.error();
+    auto made = make_onboard_navigation(s, v.id);
+    if (!made.ok()) return made.error();
+    onboard.emplace(std::move(made).value());
+  }
+  auto component = gnc::FlightComponent::create(config, std::move(onboard));
   if (!component.ok()) return core::Error{"gnc." + component.error().field, component.error().message};
   v.gnc.emplace(std::move(component).value());
   v.navigation.emplace(s.navigation, RandomStream(s.seed, prefix + ".navigation"));
@@ -50,11 +69,12 @@ core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenari
 }  // namespace
 
 core::Result<bool> set_up_spacecraft(SimulatedSpacecraft& v, const CampaignScenario& scenario,
-                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf) {
+                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf,
+                                     const GpsWorld* gps) {
   const std::string prefix(v.name);
   v.x_gcrf = x0_gcrf;
   if (auto ok = set_up_truth(v, scenario, settings, prefix); !ok) return ok.error();
-  return set_up_avionics(v, scenario, settings, active, prefix);
+  return set_up_avionics(v, scenario, settings, active, prefix, gps);
 }
 
 }  // namespace visors::sim

@@ -18,6 +18,9 @@
 #include "sim/campaign_scenario.hpp"
 #include "sim/crosslink.hpp"
 #include "sim/drag_area.hpp"
+#include "gnss/gps_constants.hpp"
+#include "sim/gps_receiver.hpp"
+#include "sim/gps_world.hpp"
 #include "sim/ideal_navigation.hpp"
 #include "sim/propulsion.hpp"
 #include "sim/spacecraft_geometry.hpp"
@@ -37,7 +40,10 @@ struct SimulatedSpacecraft {
   std::optional<Propulsion> propulsion;
   std::optional<SpacecraftGeometry> geometry;
   // Sensors and the flight component.
-  std::optional<IdealNavigation> navigation;
+  std::optional<IdealNavigation> navigation;  // [navigation] mode = "ideal"
+  std::optional<GpsReceiver> receiver;        // [navigation] mode = "cdgps"
+  /// Per PRN, the next broadcast data set the receiver has not decoded yet (CampaignSimulation).
+  std::array<std::size_t, gnss::kMaxGpsPrn + 1> next_ephemeris{};
   std::optional<Crosslink<gnc::CrosslinkMessage>> inbox;  // messages from the other spacecraft
   std::optional<gnc::FlightComponent> gnc;
   gnc::GncOutputs out;  // of the last step
@@ -52,8 +58,11 @@ struct SimulatedSpacecraft {
 
 /// Sets up `v` (its `id` and `name` already set) for `scenario`: truth models, propulsion,
 /// attitude, geometry draw, flight component (`active` role), ideal navigation and inbox, with
-/// random streams named after the spacecraft. Errors name the scenario field.
+/// random streams named after the spacecraft; with `gps` ([navigation] mode = "cdgps") the GPS
+/// receiver (as `visors gnss-sim`'s: RandomStream(seed, "<name>.gps"), the world's ionosphere)
+/// and the component's on-board navigation. Errors name the scenario field.
 core::Result<bool> set_up_spacecraft(SimulatedSpacecraft& v, const CampaignScenario& scenario,
-                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf);
+                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf,
+                                     const GpsWorld* gps = nullptr);
 
 }  // namespace visors::sim
