@@ -91,23 +91,32 @@ NavigationSample NavigationScore::score(gnc::Spacecraft who, const gnc::OnboardN
                                         const FormationTruth& truth, bool in_slew) {
   NavigationSample sample;
   const auto& solution = navigation.last_solution();
-  if (!solution) return sample;
   Accumulator& a = stats_[index_of(who)];
-  if (a.first_solution_s < 0.0) a.first_solution_s = t_s;
-  count_epoch(a, navigation, t_s);
+  if (solution && a.first_solution_s < 0.0) a.first_solution_s = t_s;  // the cold start
+  if (solution) count_epoch(a, navigation, t_s);
+  if (!solution || !navigation.valid()) {
+    if (solution) ++a.steps_invalid;
+    return sample;
+  }
   const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(truth.dsc_gcrf);
   const Eigen::Vector3d position_gcrf =
       (solution->deputy_gcrf.r - solution->chief_gcrf.r) - (truth.osc_gcrf.r - truth.dsc_gcrf.r);
-  const Eigen::Vector3d knowledge_gcrf =
-      truth.osc_body_to_gcrf * truth.osc_com_knowledge_m - truth.dsc_body_to_gcrf * truth.dsc_com_knowledge_m;
+  // The estimated antenna is the estimated centre of mass + C (arp + pco + p), the true one the
+  // true centre of mass + C (arp + pco + c_nom - c_true): their difference is the position error
+  // + C (p - (c_nom - c_true)) per spacecraft.
+  const nav::NavVector& x = navigation.fixed() ? navigation.filter().x_fixed() : navigation.filter().x();
+  const auto lever = [&x](nav::Craft craft, const Eigen::Matrix3d& c, const Eigen::Vector3d& knowledge) {
+    return Eigen::Vector3d(c * (nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft)) - knowledge));
+  };
+  const Eigen::Vector3d lever_gcrf = lever(nav::Craft::kOsc, truth.osc_body_to_gcrf, truth.osc_com_knowledge_m) -
+                                     lever(nav::Craft::kDsc, truth.dsc_body_to_gcrf, truth.dsc_com_knowledge_m);
   sample.valid = true;
   sample.fixed = navigation.fixed();
   sample.position_rtn_m = R * position_gcrf;
-  sample.antenna_rtn_m = R * (position_gcrf - knowledge_gcrf);
+  sample.antenna_rtn_m = R * (position_gcrf + lever_gcrf);
   sample.velocity_rtn_mps =
       R * ((solution->deputy_gcrf.v - solution->chief_gcrf.v) - (truth.osc_gcrf.v - truth.dsc_gcrf.v));
   sample.sigma_rtn_m = solution->relative_covariance_rtn.diagonal().head<3>().cwiseMax(0.0).cwiseSqrt();
-  const nav::NavVector& x = navigation.filter().x();
   using nav::Craft;
   sample.empirical_dsc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kDsc));
   sample.empirical_osc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kOsc));
@@ -135,6 +144,7 @@ nlohmann::json NavigationScore::summary() const {
     const double epochs = static_cast<double>(std::max<std::int64_t>(a.epochs, 1));
     out[names[k]] = {
         {"steps", a.steps},
+        {"steps_not_valid", a.steps_invalid},
         {"relative_position_rms_m", rms(a.position_sq, a.steps)},
         {"relative_antenna_rms_m", rms(a.antenna_sq, a.steps)},
         {"relative_antenna_worst_m", a.antenna_worst},

@@ -8,11 +8,14 @@
 //  - relative position: estimated deputy minus chief centre of mass, minus the truth's: what the
 //    control and safety use; it holds the centre-of-mass knowledge error (the drawn geometry,
 //    sim/spacecraft_geometry.hpp: a few mm per spacecraft), which no navigation can see;
-//  - relative antenna position: the same with that knowledge error removed,
-//    R_osc (c_nom - c_osc) - R_dsc (c_nom - c_dsc) (R the true attitude, c the true and nominal
-//    centres of mass in the body frame): what the GPS measurements determine, the paper's figure;
+//  - relative antenna position: the error of the antennas' relative position the estimate implies
+//    (its centres of mass plus C (arp + pco + p), p the estimated phase-centre error) against the
+//    true antennas: the position error plus R_osc (p_osc - (c_nom - c_osc)) - R_dsc (p_dsc -
+//    (c_nom - c_dsc)) (R the true attitude, c the true and nominal centres of mass in the body
+//    frame): what the GPS measurements determine, the paper's figure (as `visors nav`);
 //  - relative velocity: estimated minus true inertial velocity difference.
-// The statistics leave out the slews to and from the observations (the satellites in view change
+// Only the solutions the component uses (valid: OnboardNavigation::valid()) are scored; the steps
+// with a solution not yet (or no longer) valid are counted. The statistics leave out the slews to and from the observations (the satellites in view change
 // at 1.5 deg/s) where the issue asks so ("outside the slews"), and report them whole too.
 // A fix is wrong when a double difference of the fixed SDCP ambiguities of a processed epoch
 // differs from the truth's (the receivers' integer ambiguities and phase offsets of that epoch)
@@ -74,7 +77,7 @@ class NavigationScore {
     std::array<double, gnss::kMaxGpsChannels> cycles{};  // N + half cycle + receiver phase offset
   };
   struct Accumulator {
-    std::int64_t steps = 0, steps_outside_slews = 0;
+    std::int64_t steps = 0, steps_outside_slews = 0, steps_invalid = 0;
     double position_sq = 0.0, antenna_sq = 0.0, velocity_sq = 0.0;
     double antenna_outside_sq = 0.0, position_outside_sq = 0.0;
     double antenna_worst = 0.0, antenna_outside_worst = 0.0;
