@@ -94,6 +94,36 @@ StateVector itrf_to_gcrf(GpsTime t, const StateVector& itrf, const EarthOrientat
 }
 
 // ---------------------------------------------------------------------------------------------
+// Interpolated full model
+
+namespace {
+
+Eigen::Vector3d xys06a(GpsTime t) {
+  const JulianDate tt = t.jd_tt();
+  Eigen::Vector3d out;
+  eraXys06a(tt.jd1, tt.jd2, &out(0), &out(1), &out(2));
+  return out;
+}
+
+}  // namespace
+
+Eigen::Matrix3d InterpolatedEarthFrame::gcrf_to_itrf_matrix(GpsTime t, const EarthOrientation& eop) {
+  const double since = t.seconds_since(GpsTime{});
+  if (!have_nodes_ || t < node_ || t.seconds_since(node_) > node_interval_s_) {
+    node_ = GpsTime{} + std::floor(since / node_interval_s_) * node_interval_s_;
+    xys_[0] = xys06a(node_);
+    xys_[1] = xys06a(node_ + node_interval_s_);
+    have_nodes_ = true;
+  }
+  const double f = t.seconds_since(node_) / node_interval_s_;
+  const Eigen::Vector3d xys = (1.0 - f) * xys_[0] + f * xys_[1];
+  double rc2i[3][3];
+  eraC2ixys(xys(0) + eop.dx, xys(1) + eop.dy, xys(2), rc2i);
+  const JulianDate ut1 = t.jd_ut1(eop.dut1);
+  return polar_motion(t.jd_tt(), eop) * r3(eraEra00(ut1.jd1, ut1.jd2)) * to_eigen(rc2i);
+}
+
+// ---------------------------------------------------------------------------------------------
 // On-board variant
 
 OnboardEarthFrame::OnboardEarthFrame(const EarthOrientation& uplinked, double refresh_interval)

@@ -179,7 +179,7 @@ void CampaignSimulation::apply_ground_timeline(core::GpsTime t) {
 void CampaignSimulation::step_flight_components(core::GpsTime t) {
   const core::StateVector& dsc_gcrf = vehicles_[0].x_gcrf;
   const core::StateVector& osc_gcrf = vehicles_[1].x_gcrf;
-  const EpochFrame frame = gps_ ? epoch_frame(*gps_, t) : EpochFrame{};
+  const EpochFrame frame = gps_ ? epoch_frame(*gps_, t, earth_frame_) : EpochFrame{};
   for (SimulatedSpacecraft& v : vehicles_) {
     gnc::GncInputs in;
     in.t = t;

@@ -117,6 +117,7 @@ class CampaignSimulation {
   /// in t_oe order.
   std::array<std::vector<std::size_t>, gnss::kMaxGpsPrn + 1> sets_by_prn_;
   std::optional<RandomStream> lrf_rng_;
+  core::InterpolatedEarthFrame earth_frame_;
   NavigationScore navigation_score_;
   std::array<NavigationSample, 2> navigation_samples_{};
   std::array<std::int64_t, 2> rows_epochs_{}, rows_fixed_{};  // at each spacecraft's last navigation.csv row

@@ -38,12 +38,27 @@ core::Result<GpsWorld> load_gps_world(const CampaignScenario& s, double span_s) 
   return w;
 }
 
-EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t) {
+namespace {
+
+core::EarthOrientation earth_orientation_at(const GpsWorld& world, core::GpsTime t) {
   core::EarthOrientation eop;
   if (world.eop) {
     if (auto at = world.eop->at(t); at.ok()) eop = *at;
   }
+  return eop;
+}
+
+}  // namespace
+
+EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t) {
+  const core::EarthOrientation eop = earth_orientation_at(world, t);
   return EpochFrame{core::gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop)),
+                    astro::sun_position_gcrf(t)};
+}
+
+EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t, core::InterpolatedEarthFrame& earth) {
+  const core::EarthOrientation eop = earth_orientation_at(world, t);
+  return EpochFrame{earth.gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop)),
                     astro::sun_position_gcrf(t)};
 }
 

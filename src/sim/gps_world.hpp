@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/earth_frames.hpp"
 #include "core/eop.hpp"
 #include "core/gps_time.hpp"
 #include "core/state_vector.hpp"
@@ -39,6 +40,9 @@ struct EpochFrame {
   Eigen::Vector3d sun_gcrf = Eigen::Vector3d::Zero();
 };
 EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t);
+/// The same with the interpolated full model (core::InterpolatedEarthFrame: 6e-15 rad from it),
+/// for the closed loop's every step.
+EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t, core::InterpolatedEarthFrame& earth);
 
 /// The body's angular velocity (GCRF axes) [rad/s] of the attitude law `at(t_s, r, v)` (body to
 /// GCRF) about a state x at t_s: the rotation between the attitudes at t_s -/+ 0.5 s, the states
