@@ -23,6 +23,16 @@ void joseph_rank_one(NavMatrix& P, const NavRow& h, const NavVector& k, double r
   P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
 }
 
+// u = P h' over the non-zero entries of h only: a GPS scalar touches ~20 of the 74 states
+// (positions, clocks, phase centres, one or two ambiguities), so the product is a sum of ~20
+// columns of P instead of the whole matrix-vector product.
+void sparse_product(const NavMatrix& P, const NavRow& h, NavVector& u) {
+  u.setZero();
+  for (int i = 0; i < kNavStates; ++i) {
+    if (h(i) != 0.0) u.noalias() += P.col(i) * h(i);
+  }
+}
+
 bool finite_scalars(double innovation, double variance, double gate_sigmas) {
   return std::isfinite(innovation) && std::isfinite(variance) && std::isfinite(gate_sigmas);
 }
@@ -56,7 +66,7 @@ ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, do
     return result;
   }
   NavVector& u = workspace.ph;
-  u.noalias() = P * h.transpose();
+  sparse_product(P, h, u);
   if (!u.allFinite()) return result;  // a non-finite P (see joseph_update)
   const double s = (h * u).value() + variance;
   if (!std::isfinite(s) || !(s > 0.0)) return result;  // P not positive semidefinite along h

@@ -16,14 +16,14 @@
 //   M  = (I - k h) P        = P - k u'          (h P = u' for a symmetric P)
 //   w  = M h'               = u - (h u) k
 //   P+ = M (I - k h)' + r k k' = M - (w - r k) k'
-// then P+ is symmetrised against round-off. About 3 n^2 multiply-adds for the two rank-one
-// updates and n^2 for u.
+// as one symmetric rank-two change over the lower triangle, mirrored (exactly symmetric): about
+// n^2 multiply-adds, and u over the non-zero entries of h only (~20 of 74 for a GPS scalar).
 //
 // Gate: the update is applied only when |nu| <= gate_sigmas sqrt(s) (digest sec. 5.3: k ~ 4-5,
 // the SDCP cycle-slip detector); otherwise x and P are untouched and the normalised innovation is
-// reported. Invalid input (NaN or infinity in x, h, nu, r, gate_sigmas or P, r <= 0,
-// gate_sigmas <= 0, s <= 0 from a P that is not positive semidefinite) is refused the same way:
-// no NaN reaches x or P. Allocates nothing: the caller owns the workspace.
+// reported. Invalid input (NaN or infinity in x, h, nu, r, gate_sigmas or the columns of P that h
+// touches, r <= 0, gate_sigmas <= 0, s <= 0 from a P that is not positive semidefinite) is
+// refused the same way: no NaN reaches x or P (one elsewhere in P stays where it is). Allocates nothing: the caller owns the workspace.
 
 #include <string_view>
 
