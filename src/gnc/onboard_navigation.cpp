@@ -17,14 +17,17 @@ nav::Craft craft_of(Spacecraft s) { return s == Spacecraft::kDsc ? nav::Craft::k
 Eigen::Matrix<double, 6, 6> relative_covariance_rtn(const nav::NavMatrix& P, const core::StateVector& chief) {
   using nav::Craft;
   namespace st = nav::state;
-  Eigen::Matrix<double, 6, nav::kNavStates> J = Eigen::Matrix<double, 6, nav::kNavStates>::Zero();
+  static_assert(st::velocity(Craft::kDsc) == st::position(Craft::kDsc) + 3, "r, v adjacent");
+  const int d = st::position(Craft::kDsc);
+  const int o = st::position(Craft::kOsc);
+  // [r; v]_osc - [r; v]_dsc in state units, then in SI and the chief's RTN axes.
+  const Eigen::Matrix<double, 6, 6> C = P.block<6, 6>(o, o) - P.block<6, 6>(o, d) - P.block<6, 6>(d, o) + P.block<6, 6>(d, d);
+  Eigen::Matrix<double, 6, 6> T = Eigen::Matrix<double, 6, 6>::Zero();
   const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(chief);
-  J.block<3, 3>(0, st::position(Craft::kOsc)) = R;
-  J.block<3, 3>(0, st::position(Craft::kDsc)) = -R;
-  J.block<3, 3>(3, st::velocity(Craft::kOsc)) = st::kVelocityUnit * R;
-  J.block<3, 3>(3, st::velocity(Craft::kDsc)) = -st::kVelocityUnit * R;
-  Eigen::Matrix<double, 6, 6> C = J * P * J.transpose();
-  return 0.5 * (C + C.transpose());
+  T.topLeftCorner<3, 3>() = R;
+  T.bottomRightCorner<3, 3>() = st::kVelocityUnit * R;
+  const Eigen::Matrix<double, 6, 6> out = T * C * T.transpose();
+  return 0.5 * (out + out.transpose());
 }
 
 }  // namespace
