@@ -271,7 +271,20 @@ NavVector CdgpsFilter::forecast(const NavVector& from, core::GpsTime t) {
   Impl& m = *impl_;
   NavVector out = from;
   const double dt = t.seconds_since(m.t);
-  if (m.initialised && dt > 0.0) (void)m.propagate_mean_states(out, dt, settings_);
+  if (!m.initialised || !(dt > 0.0)) return out;
+  if (dt > kShortForecastS) {
+    (void)m.propagate_mean_states(out, dt, settings_);
+    return out;
+  }
+  for (int k = 0; k < 2; ++k) {
+    const Craft c = kCrafts[k];
+    auto& model = m.models[static_cast<std::size_t>(k)];
+    const Eigen::Vector3d a0 = state::kEmpiricalUnit * out.segment<3>(state::empirical_acceleration(c));
+    const MeanPropagation mean = forecast_mean(model, m.t, centre_of_mass(out, c), a0, settings_.empirical_tau_s, dt, model.gm());
+    out.segment<3>(state::position(c)) = mean.x_gcrf.r;
+    out.segment<3>(state::velocity(c)) = mean.x_gcrf.v / state::kVelocityUnit;
+    out.segment<3>(state::empirical_acceleration(c)) = mean.a_emp_rtn_mps2 / state::kEmpiricalUnit;
+  }
   return out;
 }
 

@@ -54,6 +54,19 @@ Eigen::Matrix3d point_mass_gradient(const Eigen::Vector3d& r_gcrf, double gm) {
   return gm / (r * r * r) * (3.0 * e * e.transpose() - Eigen::Matrix3d::Identity());
 }
 
+MeanPropagation forecast_mean(dynamics::ForceModel& model, core::GpsTime t0, const core::StateVector& x0_gcrf,
+                              const Eigen::Vector3d& a_emp_rtn_mps2, double tau_s, double dt_s, double gm) {
+  model.set_empirical_acceleration_rtn(a_emp_rtn_mps2);
+  const Eigen::Vector3d a = model.acceleration(t0, x0_gcrf);
+  model.set_empirical_acceleration_rtn(Eigen::Vector3d::Zero());
+  const Eigen::Vector3d j = point_mass_gradient(x0_gcrf.r, gm) * x0_gcrf.v;
+  const double dt2 = dt_s * dt_s;
+  core::StateVector x;
+  x.r = x0_gcrf.r + x0_gcrf.v * dt_s + a * (0.5 * dt2) + j * (dt2 * dt_s / 6.0);
+  x.v = x0_gcrf.v + a * dt_s + j * (0.5 * dt2);
+  return {x, a_emp_rtn_mps2 * std::exp(-dt_s / tau_s)};
+}
+
 DynamicTransition dynamic_transition(const core::StateVector& x0_gcrf, const core::StateVector& x1_gcrf, double gm,
                                      double dt_s, double tau_s) {
   const Eigen::Matrix3d G0 = point_mass_gradient(x0_gcrf.r, gm);
