@@ -229,8 +229,7 @@ std::size_t GpsReceiver::screen_visibility(const Reception& rx, const GpsSatelli
   for (std::size_t j = 0; j < count; ++j) {
     Candidate& c = candidates_[j];
     c.index = j;
-    const gnss::GpsSatelliteState s = satellites.true_state(j, rx.t_receive - 0.075);
-    const Eigen::Vector3d to_satellite = s.r_ecef_m - rx.r_apc;
+    const Eigen::Vector3d to_satellite = satellites.screening_position_ecef(j, rx.t_receive - 0.075) - rx.r_apc;
     const double distance = to_satellite.norm();
     const Eigen::Vector3d e = to_satellite / distance;
     c.elevation = std::asin(std::clamp(rx.boresight.dot(e), -1.0, 1.0));

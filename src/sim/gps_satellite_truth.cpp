@@ -106,7 +106,16 @@ core::Result<GpsSatelliteTruth> GpsSatelliteTruth::create(const gnss::GpsConstel
       truth.broadcast_.push_back(perturbed(set, errors, z[j]));
     }
   }
+  truth.screened_.resize(truth.truth_.size());
   return truth;
+}
+
+Eigen::Vector3d GpsSatelliteTruth::screening_position_ecef(std::size_t index, core::GpsTime t) const {
+  Screened& s = screened_[index];
+  if (s.valid && std::abs(t.seconds_since(s.t)) <= kScreenReuseS) return s.r_ecef_m + s.v_ecef_mps * t.seconds_since(s.t);
+  const gnss::GpsSatelliteState state = gnss::broadcast_state(truth_[index], t);
+  s = Screened{true, t, state.r_ecef_m, state.v_ecef_mps};
+  return s.r_ecef_m;
 }
 
 gnss::GpsSatelliteState GpsSatelliteTruth::true_state(std::size_t index, core::GpsTime t) const {

@@ -73,9 +73,23 @@ class GpsSatelliteTruth {
   /// True state at GPS time t; the clock is the L1 C/A clock (T_GD applied).
   [[nodiscard]] gnss::GpsSatelliteState true_state(std::size_t index, core::GpsTime t) const;
 
+  /// The true position at t for a visibility screen (a receiver's elevation and occultation test):
+  /// the last one evaluated for this satellite moved along its velocity when it is within
+  /// kScreenReuseS of t (the two receivers of a step ask ~1 us apart: 4 mm of motion, and the
+  /// linear move is off by a dt^2 / 2 ~ 3e-13 m), else a new evaluation. Not thread-safe (one
+  /// simulation per object); allocation-free.
+  [[nodiscard]] Eigen::Vector3d screening_position_ecef(std::size_t index, core::GpsTime t) const;
+  static constexpr double kScreenReuseS = 1e-3;
+
  private:
+  struct Screened {
+    bool valid = false;
+    core::GpsTime t;
+    Eigen::Vector3d r_ecef_m = Eigen::Vector3d::Zero(), v_ecef_mps = Eigen::Vector3d::Zero();
+  };
   std::vector<gnss::BroadcastEphemeris> truth_, broadcast_;
   std::vector<double> phase_offset_cycles_;
+  mutable std::vector<Screened> screened_;  // sized at create()
 };
 
 }  // namespace visors::sim

@@ -561,3 +561,26 @@ TEST_F(GpsReceiverTest, BadRefreshIsNamed) {
 
 }  // namespace
 }  // namespace visors::sim
+
+namespace visors::sim {
+namespace {
+
+// The visibility screen's position (sim/gps_satellite_truth.hpp): reused within 1 ms, moved along
+// the velocity, it agrees with the exact evaluation (IS-GPS-200) to the dropped a dt^2 / 2, here
+// 0.6 m/s^2 x (0.5 ms)^2 / 2 < 1e-7 m; beyond 1 ms it is evaluated anew, exactly.
+class ScreeningPositionTest : public test::GpsReceiverWorld {};
+
+TEST_F(ScreeningPositionTest, ReusedWithinAMillisecondAndExactBeyond) {
+  const GpsSatelliteTruth& sats = *truth_;
+  const core::GpsTime t = test::kMissionEpoch + 100.0;
+  for (std::size_t j = 0; j < sats.truth().size(); ++j) {
+    (void)sats.screening_position_ecef(j, t);
+    const core::GpsTime near = t + 5e-4;
+    EXPECT_LT((sats.screening_position_ecef(j, near) - sats.true_state(j, near).r_ecef_m).norm(), 1e-7);
+    const core::GpsTime far = t + 2.0;
+    EXPECT_EQ(sats.screening_position_ecef(j, far), sats.true_state(j, far).r_ecef_m);
+  }
+}
+
+}  // namespace
+}  // namespace visors::sim
