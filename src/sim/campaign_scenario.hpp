@@ -73,7 +73,7 @@ struct CampaignScenario {
   double output_step_s = 10.0;     // time-series sampling [s]
   std::string active = "osc";      // initially active spacecraft
   // Models.
-  NavigationMode navigation_mode = NavigationMode::kIdeal;
+  NavigationMode navigation_mode = NavigationMode::kCdgps;
   NavigationErrorSettings navigation;  // ideal navigation's errors
   /// The [nav] table as given (the on-board filter's tunables over its defaults,
   /// config/cdgps_settings_toml.hpp), empty when absent; checked when the scenario is read.

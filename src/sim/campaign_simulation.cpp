@@ -10,6 +10,7 @@
 #include "astro/mean_osculating.hpp"
 #include "astro/relative_orbital_elements.hpp"
 #include "astro/sun_moon.hpp"
+#include "core/files/data_path.hpp"
 #include "core/rtn_frame.hpp"
 #include "sim/formation_initial_state.hpp"
 
@@ -83,7 +84,17 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
   if (!initial.ok()) return initial.error();
   CampaignSimulation sim(scenario, recorder);
   if (scenario.navigation_mode == NavigationMode::kCdgps) {
-    if (auto ok = sim.set_up_gps(); !ok) return ok.error();
+    if (core::files::find_data_file(scenario.gnss.nav_file)) {
+      if (auto ok = sim.set_up_gps(); !ok) return ok.error();
+    } else {
+      // Without the constellation there is no GPS to navigate with: the run goes on with ideal
+      // navigation (the main command works without the shared data), loudly.
+      sim.scenario_.navigation_mode = NavigationMode::kIdeal;
+      recorder.event(0.0, "sim", "warning",
+                     fmt::format("gnss.nav_file '{}' not found in the data search path: no GPS constellation, so "
+                                 "[navigation] mode = \"cdgps\" falls back to ideal navigation (its [navigation] errors)",
+                                 scenario.gnss.nav_file));
+    }
   }
   const GpsWorld* gps = sim.gps_ ? &*sim.gps_ : nullptr;
   SimulatedSpacecraft& dsc = sim.vehicles_[0];

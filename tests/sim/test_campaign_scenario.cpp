@@ -14,6 +14,7 @@ namespace {
 using visors::sim::campaign_from_toml;
 using visors::sim::campaign_to_toml;
 using visors::sim::default_campaign;
+using visors::sim::NavigationMode;
 
 std::string shipped_scenario() {
   std::ifstream in(std::string(VISORS_SOURCE_DIR) + "/data/scenarios/campaign.toml");
@@ -71,9 +72,32 @@ TEST(CampaignScenario, IntegrationStepMustDivideTheStep) {
   EXPECT_EQ(s.error().field, "time.integration_step_s");
 }
 
-TEST(CampaignScenario, OnlyIdealNavigationExists) {
+TEST(CampaignScenario, UnknownNavigationModeIsNamed) {
   const auto s = campaign_from_toml("[navigation]\nmode = \"gps\"\n");
   EXPECT_EQ(s.error().field, "navigation.mode");
+}
+
+// Issue 16: carrier-phase GPS navigation is the campaign's default; "ideal" stays for
+// control-only studies; both read back from the resolved scenario.
+TEST(CampaignScenario, NavigationIsCdgpsByDefault) {
+  EXPECT_EQ(default_campaign().navigation_mode, NavigationMode::kCdgps);
+}
+
+TEST(CampaignScenario, NavigationModeReadsBack) {
+  for (const char* mode : {"ideal", "cdgps"}) {
+    const auto s = campaign_from_toml(std::string("[navigation]\nmode = \"") + mode + "\"\n").value();
+    const auto back = campaign_from_toml(campaign_to_toml(s)).value();
+    EXPECT_EQ(back.navigation_mode, s.navigation_mode) << mode;
+  }
+}
+
+// The on-board filter's [nav] table: checked when the scenario is read (the key named), kept for
+// the resolved scenario.
+TEST(CampaignScenario, NavTunablesAreCheckedAndKept) {
+  EXPECT_EQ(campaign_from_toml("[nav]\nsdcp_sigma_m = -1.0\n").error().field, "nav.sdcp_sigma_m");
+  EXPECT_EQ(campaign_from_toml("[nav]\nno_such_key = 1.0\n").error().field, "nav.no_such_key");
+  const auto s = campaign_from_toml("[nav]\ngate_sigmas = 4.5\n").value();
+  EXPECT_NE(campaign_to_toml(s).find("gate_sigmas = 4.5"), std::string::npos);
 }
 
 TEST(CampaignScenario, GncThresholdOutOfRangeIsNamed) {

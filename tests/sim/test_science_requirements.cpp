@@ -35,6 +35,8 @@ observations = 10
 tail_s = 60.0
 [time]
 max_duration_s = 70000.0
+[navigation]
+mode = "ideal"
 )";
 }
 
