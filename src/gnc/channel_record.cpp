@@ -1,5 +1,6 @@
 #include "gnc/channel_record.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cassert>
 
@@ -126,6 +127,130 @@ bool flag(std::uint8_t byte, bool& out) {
   return true;
 }
 
+constexpr int kSlots = gnss::kMaxGpsChannels;  // observations per epoch in a record
+constexpr std::size_t kGpsChannelBytes = 48, kEphemerisBytes = 208, kCrosslinkObservationBytes = 24, kImpulseBytes = 32;
+
+std::uint8_t lock_flags(bool loss_of_lock, bool half_cycle) {
+  return static_cast<std::uint8_t>((loss_of_lock ? 1 : 0) | (half_cycle ? 2 : 0));
+}
+
+bool read_lock_flags(std::uint8_t byte, bool& loss_of_lock, bool& half_cycle) {
+  if (byte > 3) return false;
+  loss_of_lock = (byte & 1) != 0;
+  half_cycle = (byte & 2) != 0;
+  return true;
+}
+
+void write_navigation(Writer& w, const CrosslinkNavigation& n) {
+  const int count = n.has_epoch ? std::clamp(n.epoch.count, 0, kSlots) : 0;
+  const int impulses = std::clamp(n.impulse_count, 0, kCrosslinkImpulses);
+  w.u8(n.has_epoch ? 1 : 0);
+  w.u8(static_cast<std::uint8_t>(impulses));
+  w.u8(n.has_range ? 1 : 0);
+  w.u8(static_cast<std::uint8_t>(count));
+  w.zeros(4);
+  w.time(n.has_epoch ? n.epoch.t : core::GpsTime{});
+  for (int k = 0; k < kSlots; ++k) {
+    if (k >= count) {
+      w.zeros(kCrosslinkObservationBytes);
+      continue;
+    }
+    const nav::GpsObservation& o = n.epoch.observations[static_cast<std::size_t>(k)];
+    w.u8(static_cast<std::uint8_t>(o.prn));
+    w.u8(lock_flags(o.loss_of_lock, o.half_cycle));
+    w.zeros(6);
+    w.f64(o.code_m);
+    w.f64(o.phase_cycles);
+  }
+  const Eigen::Quaterniond q = n.has_epoch ? n.q_body_to_gcrf : Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0);
+  w.f64(q.w());
+  w.f64(q.x());
+  w.f64(q.y());
+  w.f64(q.z());
+  for (int k = 0; k < kCrosslinkImpulses; ++k) {
+    if (k >= impulses) {
+      w.zeros(kImpulseBytes);
+      continue;
+    }
+    w.time(n.impulses[static_cast<std::size_t>(k)].t);
+    w.vector3(n.impulses[static_cast<std::size_t>(k)].dv_gcrf_mps);
+  }
+  w.time(n.has_range ? n.range.t : core::GpsTime{});
+  w.f64(n.has_range ? n.range.range_m : 0.0);
+}
+
+// The navigation part; anything not in use must be all 0 (a record decodes to one message only).
+RecordStatus read_navigation(Reader& r, CrosslinkNavigation& n) {
+  const std::uint8_t has_epoch = r.u8(), impulses = r.u8(), has_range = r.u8(), count = r.u8();
+  if (!flag(has_epoch, n.has_epoch) || !flag(has_range, n.has_range)) return RecordStatus::kBadEnumeration;
+  if (impulses > kCrosslinkImpulses || count > kSlots || (!n.has_epoch && count > 0)) return RecordStatus::kBadEnumeration;
+  if (!r.zeros(4)) return RecordStatus::kBadPadding;
+  n.epoch.t = r.time();
+  n.epoch.count = count;
+  for (int k = 0; k < kSlots; ++k) {
+    if (k >= count) {
+      if (!r.zeros(kCrosslinkObservationBytes)) return RecordStatus::kBadPadding;
+      continue;
+    }
+    nav::GpsObservation& o = n.epoch.observations[static_cast<std::size_t>(k)];
+    o.prn = r.u8();
+    if (!read_lock_flags(r.u8(), o.loss_of_lock, o.half_cycle)) return RecordStatus::kBadEnumeration;
+    if (!r.zeros(6)) return RecordStatus::kBadPadding;
+    o.code_m = r.f64();
+    o.phase_cycles = r.f64();
+  }
+  const double w = r.f64(), x = r.f64(), y = r.f64(), z = r.f64();
+  n.q_body_to_gcrf = Eigen::Quaterniond(w, x, y, z);
+  n.impulse_count = impulses;
+  for (int k = 0; k < kCrosslinkImpulses; ++k) {
+    if (k >= impulses) {
+      if (!r.zeros(kImpulseBytes)) return RecordStatus::kBadPadding;
+      continue;
+    }
+    n.impulses[static_cast<std::size_t>(k)].t = r.time();
+    n.impulses[static_cast<std::size_t>(k)].dv_gcrf_mps = r.vector3();
+  }
+  n.range.t = r.time();
+  n.range.range_m = r.f64();
+  const bool unused_zero = (n.has_epoch || (n.epoch.t == core::GpsTime{} && w == 0.0 && x == 0.0 && y == 0.0 && z == 0.0)) &&
+                           (n.has_range || (n.range.t == core::GpsTime{} && n.range.range_m == 0.0));
+  if (!unused_zero) return RecordStatus::kBadPadding;
+  if (!n.has_epoch) n.q_body_to_gcrf = Eigen::Quaterniond::Identity();
+  return RecordStatus::kAccepted;
+}
+
+void write_ephemeris(Writer& w, const gnss::BroadcastEphemeris& e) {
+  w.i32(e.prn);
+  w.i32(e.iode);
+  w.i32(e.iodc);
+  w.i32(e.health);
+  w.time(e.toc);
+  w.time(e.toe);
+  w.time(e.transmission);
+  for (double v : {e.af0_s, e.af1_sps, e.af2_sps2, e.sqrt_a, e.eccentricity, e.i0_rad, e.omega0_rad, e.omega_rad, e.m0_rad,
+                   e.delta_n_radps, e.idot_radps, e.omega_dot_radps, e.cuc_rad, e.cus_rad, e.crc_m, e.crs_m, e.cic_rad,
+                   e.cis_rad, e.tgd_s, e.ura_m, e.fit_interval_h}) {
+    w.f64(v);
+  }
+}
+
+gnss::BroadcastEphemeris read_ephemeris(Reader& r) {
+  gnss::BroadcastEphemeris e;
+  e.prn = r.i32();
+  e.iode = r.i32();
+  e.iodc = r.i32();
+  e.health = r.i32();
+  e.toc = r.time();
+  e.toe = r.time();
+  e.transmission = r.time();
+  for (double* v : {&e.af0_s, &e.af1_sps, &e.af2_sps2, &e.sqrt_a, &e.eccentricity, &e.i0_rad, &e.omega0_rad, &e.omega_rad,
+                    &e.m0_rad, &e.delta_n_radps, &e.idot_radps, &e.omega_dot_radps, &e.cuc_rad, &e.cus_rad, &e.crc_m, &e.crs_m,
+                    &e.cic_rad, &e.cis_rad, &e.tgd_s, &e.ura_m, &e.fit_interval_h}) {
+    *v = r.f64();
+  }
+  return e;
+}
+
 }  // namespace
 
 std::string_view to_string(RecordStatus status) {
@@ -178,6 +303,7 @@ std::size_t encode(const CrosslinkMessage& m, std::uint32_t sequence, std::span<
     w.time(m.slew_start);
     w.time(m.observation_start);
     w.time(m.observation_end);
+    write_navigation(w, m.navigation);
   });
 }
 
@@ -196,6 +322,78 @@ std::size_t encode(const PropulsionTelemetry& m, std::uint32_t sequence, std::sp
     w.u8(m.executed ? 1 : 0);
     w.zeros(7);
   });
+}
+
+std::size_t encode(const GpsMessage& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kGps, m.t, sequence, out, [&m](Writer& w) {
+    const int count = std::clamp(m.epoch.channel_count, 0, kSlots);
+    w.u8(static_cast<std::uint8_t>(count));
+    w.u8(m.has_ephemeris ? 1 : 0);
+    w.zeros(6);
+    for (int k = 0; k < kSlots; ++k) {
+      if (k >= count) {
+        w.zeros(kGpsChannelBytes);
+        continue;
+      }
+      const gnss::GpsChannelMeasurement& c = m.epoch.channels[static_cast<std::size_t>(k)];
+      w.u8(static_cast<std::uint8_t>(c.prn));
+      w.u8(lock_flags(c.loss_of_lock, c.half_cycle_ambiguity));
+      w.zeros(6);
+      for (double v : {c.pseudorange_m, c.carrier_phase_cycles, c.doppler_hz, c.cn0_dbhz, c.lock_time_s}) w.f64(v);
+    }
+    if (m.has_ephemeris) write_ephemeris(w, m.ephemeris);
+    else w.zeros(kEphemerisBytes);
+  });
+}
+
+std::size_t encode(const LaserRange& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kLaserRange, m.t, sequence, out, [&m](Writer& w) { w.f64(m.range_m); });
+}
+
+std::size_t encode(const ManeuverCommand& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kManeuver, m.t, sequence, out, [&m](Writer& w) {
+    w.vector3(m.dv_body_mps);
+    w.vector3(m.dv_rtn_mps);
+  });
+}
+
+std::size_t encode(const ObservationCommand& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kObservation, m.t, sequence, out, [&m](Writer& w) {
+    w.i32(m.index);
+    w.zeros(4);
+    w.time(m.slew_start);
+    w.time(m.start);
+    w.time(m.end);
+  });
+}
+
+std::size_t encode(const Telemetry& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kTelemetry, m.t, sequence, out, [&m](Writer& w) {
+    w.u8(static_cast<std::uint8_t>(m.mode));
+    for (bool b : {m.active, m.estimate_valid, m.safety_checked, m.star_tracker_power, m.lrf_power, m.gnc_incapable,
+                   m.passive_safety_violated}) {
+      w.u8(b ? 1 : 0);
+    }
+    for (int i = 0; i < 6; ++i) w.f64(m.roe_mean_m(i));
+    w.f64(m.safety_margin_m);
+    for (int i = 0; i < 6; ++i) w.f64(m.roe_target_m(i));
+    w.i32(m.observations_done);
+    w.i32(m.pending_pieces);
+    w.i64(m.plans);
+    w.i64(m.planning_failures);
+    const RejectionCounters& r = m.rejected;
+    for (std::int64_t v : {r.time_at_tone, r.navigation, r.crosslink, r.command, r.propulsion, r.gps, r.laser_range}) w.i64(v);
+    for (std::int64_t v : m.records.by_status) w.i64(v);
+    w.u8(m.navigation_valid ? 1 : 0);
+    w.u8(m.navigation_fixed ? 1 : 0);
+    w.zeros(6);
+    w.time(m.navigation_update);
+  });
+}
+
+std::optional<Channel> channel_of(std::span<const std::uint8_t> in) {
+  if (in.size() < kHeaderBytes || in[2] < 1 || in[2] > kChannels) return std::nullopt;
+  return static_cast<Channel>(in[2]);
 }
 
 namespace {
@@ -252,7 +450,7 @@ RecordStatus decode(std::span<const std::uint8_t> in, CrosslinkMessage& message,
     m.slew_start = r.time();
     m.observation_start = r.time();
     m.observation_end = r.time();
-    return RecordStatus::kAccepted;
+    return read_navigation(r, m.navigation);
   });
 }
 
@@ -276,6 +474,84 @@ RecordStatus decode(std::span<const std::uint8_t> in, PropulsionTelemetry& messa
   });
 }
 
+RecordStatus decode(std::span<const std::uint8_t> in, GpsMessage& message, RecordHeader& header) {
+  return decode_record(in, Channel::kGps, message, header, [](Reader& r, GpsMessage& m) {
+    const std::uint8_t count = r.u8();
+    if (count > kSlots || !flag(r.u8(), m.has_ephemeris)) return RecordStatus::kBadEnumeration;
+    if (!r.zeros(6)) return RecordStatus::kBadPadding;
+    m.epoch.t = m.t;
+    m.epoch.channel_count = count;
+    for (int k = 0; k < kSlots; ++k) {
+      if (k >= count) {
+        if (!r.zeros(kGpsChannelBytes)) return RecordStatus::kBadPadding;
+        continue;
+      }
+      gnss::GpsChannelMeasurement& c = m.epoch.channels[static_cast<std::size_t>(k)];
+      c.prn = r.u8();
+      if (!read_lock_flags(r.u8(), c.loss_of_lock, c.half_cycle_ambiguity)) return RecordStatus::kBadEnumeration;
+      if (!r.zeros(6)) return RecordStatus::kBadPadding;
+      for (double* v : {&c.pseudorange_m, &c.carrier_phase_cycles, &c.doppler_hz, &c.cn0_dbhz, &c.lock_time_s}) *v = r.f64();
+    }
+    if (!m.has_ephemeris) return r.zeros(kEphemerisBytes) ? RecordStatus::kAccepted : RecordStatus::kBadPadding;
+    m.ephemeris = read_ephemeris(r);
+    return RecordStatus::kAccepted;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, LaserRange& message, RecordHeader& header) {
+  return decode_record(in, Channel::kLaserRange, message, header, [](Reader& r, LaserRange& m) {
+    m.range_m = r.f64();
+    return RecordStatus::kAccepted;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, ManeuverCommand& message, RecordHeader& header) {
+  return decode_record(in, Channel::kManeuver, message, header, [](Reader& r, ManeuverCommand& m) {
+    m.dv_body_mps = r.vector3();
+    m.dv_rtn_mps = r.vector3();
+    return RecordStatus::kAccepted;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, ObservationCommand& message, RecordHeader& header) {
+  return decode_record(in, Channel::kObservation, message, header, [](Reader& r, ObservationCommand& m) {
+    m.index = r.i32();
+    if (!r.zeros(4)) return RecordStatus::kBadPadding;
+    m.slew_start = r.time();
+    m.start = r.time();
+    m.end = r.time();
+    return RecordStatus::kAccepted;
+  });
+}
+
+RecordStatus decode(std::span<const std::uint8_t> in, Telemetry& message, RecordHeader& header) {
+  return decode_record(in, Channel::kTelemetry, message, header, [](Reader& r, Telemetry& m) {
+    const std::uint8_t mode = r.u8();
+    if (mode >= kModes) return RecordStatus::kBadEnumeration;
+    m.mode = static_cast<Mode>(mode);
+    for (bool* b : {&m.active, &m.estimate_valid, &m.safety_checked, &m.star_tracker_power, &m.lrf_power, &m.gnc_incapable,
+                    &m.passive_safety_violated}) {
+      if (!flag(r.u8(), *b)) return RecordStatus::kBadEnumeration;
+    }
+    for (int i = 0; i < 6; ++i) m.roe_mean_m(i) = r.f64();
+    m.safety_margin_m = r.f64();
+    for (int i = 0; i < 6; ++i) m.roe_target_m(i) = r.f64();
+    m.observations_done = r.i32();
+    m.pending_pieces = r.i32();
+    m.plans = r.i64();
+    m.planning_failures = r.i64();
+    RejectionCounters& c = m.rejected;
+    for (std::int64_t* v : {&c.time_at_tone, &c.navigation, &c.crosslink, &c.command, &c.propulsion, &c.gps, &c.laser_range}) {
+      *v = r.i64();
+    }
+    for (std::int64_t& v : m.records.by_status) v = r.i64();
+    if (!flag(r.u8(), m.navigation_valid) || !flag(r.u8(), m.navigation_fixed)) return RecordStatus::kBadEnumeration;
+    if (!r.zeros(6)) return RecordStatus::kBadPadding;
+    m.navigation_update = r.time();
+    return RecordStatus::kAccepted;
+  });
+}
+
 RecordStatus SequenceGate::admit(const RecordHeader& header) {
   const auto c = static_cast<std::size_t>(header.channel);
   // Serial-number comparison (RFC 1982): ahead when the u32 difference, read signed, is > 0.
@@ -283,12 +559,6 @@ RecordStatus SequenceGate::admit(const RecordHeader& header) {
   seen_[c] = true;
   last_[c] = header.sequence;
   return RecordStatus::kAccepted;
-}
-
-std::int64_t RecordCounters::refused() const {
-  std::int64_t n = 0;
-  for (std::size_t i = 1; i < by_status.size(); ++i) n += by_status[i];
-  return n;
 }
 
 }  // namespace visors::gnc

@@ -19,9 +19,30 @@
 //                  triangle row by row (21 f64)                                            264
 //   crosslink      sender, mode, sender_active, has_observation (4 u8); observations_done,
 //                  observations_planned, observation_index (3 i32); slew_start,
-//                  observation_start, observation_end (3 i64 ns)                           40
+//                  observation_start, observation_end (3 i64 ns); navigation (below)       456
 //   ground command kind (u8), 3 bytes 0, observations (i32)                               8
 //   propulsion     dv_body (3 f64), mass (f64), executed (u8), 7 bytes 0                  40
+//   GPS            channel count, has_ephemeris (2 u8), 6 bytes 0; 12 channels of: prn, flags
+//                  (bit 0 loss of lock, bit 1 half cycle) (2 u8), 6 bytes 0, pseudorange,
+//                  carrier phase, Doppler, C/N0, lock time (5 f64) (unused channels all 0);
+//                  the broadcast record (gnss::BroadcastEphemeris, all 0 without one):
+//                  prn, iode, iodc, health (4 i32), toc, toe, transmission (3 i64 ns),
+//                  af0, af1, af2, sqrt_a, e, i0, omega0, omega, m0, delta_n, idot, omega_dot,
+//                  cuc, cus, crc, crs, cic, cis, tgd, ura, fit interval (21 f64)         792
+//   laser range    range (f64)                                                            8
+//   maneuver       dv_body, dv_rtn (6 f64)                                               48
+//   observation    index (i32), 4 bytes 0, slew_start, start, end (3 i64 ns)              32
+//   telemetry      mode, active, estimate_valid, safety_checked, star_tracker_power,
+//                  lrf_power, gnc_incapable, passive_safety_violated (8 u8); a * mean ROE
+//                  (6 f64), safety margin (f64), a * target ROE (6 f64), observations_done,
+//                  pending_pieces (2 i32), plans, planning_failures (2 i64), rejected by
+//                  channel (7 i64), records refused by status (11 i64), navigation_valid,
+//                  navigation_fixed (2 u8), 6 bytes 0, navigation_update (i64 ns)      296
+// The crosslink's payload goes on after its 40 bytes above with the navigation part
+// (CrosslinkNavigation): has_epoch, impulse_count, has_range, epoch count (4 u8), 4 bytes 0;
+// epoch time tag (i64 ns); 12 observations of prn, flags (2 u8), 6 bytes 0, code, phase (2 f64)
+// (unused all 0); attitude w, x, y, z (4 f64); 2 impulses of t (i64 ns), dv GCRF (3 f64)
+// (unused all 0); range t (i64 ns), range (f64): 456 in all.
 //
 // Decoding checks the structure only, in this order, and names the first failure
 // (RecordStatus): header length, magic, declared size within bounds, length against it,
@@ -36,7 +57,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <tuple>
 #include <string_view>
 
 #include "core/gps_time.hpp"
@@ -45,13 +68,20 @@
 namespace visors::gnc {
 
 enum class Channel : std::uint8_t {
+  // Inputs.
   kTimeAtTone = 1,
   kNavigation = 2,
-  kCrosslink = 3,
+  kCrosslink = 3,  // also an output (the host forwards it to the other spacecraft)
   kGroundCommand = 4,
   kPropulsion = 5,
+  kGps = 6,
+  kLaserRange = 7,
+  // Outputs.
+  kManeuver = 8,
+  kObservation = 9,
+  kTelemetry = 10,
 };
-inline constexpr int kChannels = 5;
+inline constexpr int kChannels = 10;
 inline constexpr std::uint8_t kRecordVersion = 1;
 inline constexpr std::size_t kHeaderBytes = 20;
 inline constexpr std::size_t kChecksumBytes = 4;
@@ -83,10 +113,10 @@ struct RecordHeader {
 
 /// The whole record's size of a channel [bytes].
 [[nodiscard]] constexpr std::size_t record_size(Channel channel) {
-  constexpr std::size_t kPayload[] = {0, 32, 264, 40, 8, 40};
+  constexpr std::size_t kPayload[] = {0, 32, 264, 456, 8, 40, 792, 8, 48, 32, 296};
   return kHeaderBytes + kPayload[static_cast<std::size_t>(channel)] + kChecksumBytes;
 }
-inline constexpr std::size_t kMaxRecordBytes = record_size(Channel::kNavigation);
+inline constexpr std::size_t kMaxRecordBytes = record_size(Channel::kGps);
 using RecordBuffer = std::array<std::uint8_t, kMaxRecordBytes>;
 
 /// Writes the record of `message` with `sequence` into `out`; returns its size, or 0 when `out`
@@ -96,6 +126,11 @@ std::size_t encode(const NavigationSolution& message, std::uint32_t sequence, st
 std::size_t encode(const CrosslinkMessage& message, std::uint32_t sequence, std::span<std::uint8_t> out);
 std::size_t encode(const GroundCommand& message, std::uint32_t sequence, std::span<std::uint8_t> out);
 std::size_t encode(const PropulsionTelemetry& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const GpsMessage& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const LaserRange& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const ManeuverCommand& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const ObservationCommand& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const Telemetry& message, std::uint32_t sequence, std::span<std::uint8_t> out);
 
 /// Reads a record of the message's channel from the start of `in` (extra bytes after it are
 /// ignored). On kAccepted `message` and `header` hold it; otherwise they are unchanged.
@@ -104,6 +139,16 @@ RecordStatus decode(std::span<const std::uint8_t> in, NavigationSolution& messag
 RecordStatus decode(std::span<const std::uint8_t> in, CrosslinkMessage& message, RecordHeader& header);
 RecordStatus decode(std::span<const std::uint8_t> in, GroundCommand& message, RecordHeader& header);
 RecordStatus decode(std::span<const std::uint8_t> in, PropulsionTelemetry& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, GpsMessage& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, LaserRange& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, ManeuverCommand& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, ObservationCommand& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, Telemetry& message, RecordHeader& header);
+
+/// The channel a record says it is of (its header's byte), without any other check: for a host
+/// or an interface that dispatches records of any channel to their decode(). nullopt when `in`
+/// is shorter than a header or the byte is no channel.
+std::optional<Channel> channel_of(std::span<const std::uint8_t> in);
 
 /// The order of arrival per channel: a record is admitted when its sequence number follows the
 /// last admitted one of its channel (serial-number arithmetic, RFC 1982: within 2^31 ahead, so
@@ -118,11 +163,8 @@ class SequenceGate {
   std::array<bool, kChannels + 1> seen_{};
 };
 
-/// Records refused, by reason (telemetry).
-struct RecordCounters {
-  std::array<std::int64_t, kRecordStatuses> by_status{};
-  void count(RecordStatus status) { ++by_status[static_cast<std::size_t>(status)]; }
-  [[nodiscard]] std::int64_t refused() const;
-};
+/// One refused (or accepted) record counted by its status (RecordCounters: messages.hpp).
+inline void count(RecordCounters& counters, RecordStatus status) { ++counters.by_status[static_cast<std::size_t>(status)]; }
+static_assert(std::tuple_size_v<decltype(RecordCounters::by_status)> == kRecordStatuses, "one counter per status");
 
 }  // namespace visors::gnc

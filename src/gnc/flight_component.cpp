@@ -70,6 +70,15 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
   telemetry_.roe_target_m.setZero();
   if (observation_ && estimate_) telemetry_.roe_target_m = estimate_->chief_mean.a * observation_->roe_target;
   telemetry_.pending_pieces = queue_.pending();
+  telemetry_.star_tracker_power = out.star_tracker_power;
+  telemetry_.lrf_power = out.lrf_power;
+  telemetry_.gnc_incapable = out.gnc_incapable;
+  telemetry_.passive_safety_violated = out.passive_safety_violated;
+  if (navigation_) {
+    telemetry_.navigation_valid = navigation_->valid();
+    telemetry_.navigation_fixed = navigation_->fixed();
+    telemetry_.navigation_update = navigation_->last_update();
+  }
   out.telemetry = telemetry_;
   fill_crosslink(out);
   return out;
@@ -188,7 +197,7 @@ void FlightComponent::follow_peer(const CrosslinkMessage& peer, GncOutputs& out)
     scheduled.start = peer.observation_start;
     scheduled.end = peer.observation_end;
     observation_ = scheduled;
-    out.observation = ObservationCommand{scheduled.index, scheduled.slew_start, scheduled.start, scheduled.end};
+    out.observation = ObservationCommand{now_, scheduled.index, scheduled.slew_start, scheduled.start, scheduled.end};
   }
 }
 
@@ -353,7 +362,7 @@ bool FlightComponent::schedule_observation(GncOutputs& out) {
   mpc_started_ = true;
   last_mpc_ = now_ - 2.0 * config_.science.mpc_period_s;  // plan at once
   ls_planned_ = false;
-  out.observation = ObservationCommand{next->index, next->slew_start, next->start, next->end};
+  out.observation = ObservationCommand{now_, next->index, next->slew_start, next->start, next->end};
   return true;
 }
 

@@ -144,7 +144,8 @@ struct ManeuverCommand {
 };
 
 struct ObservationCommand {
-  int index = 0;  // 1-based attempt number
+  core::GpsTime t;  // when issued
+  int index = 0;    // 1-based attempt number
   core::GpsTime slew_start, start, end;
 };
 
@@ -156,11 +157,20 @@ struct RejectionCounters {
   }
 };
 
+/// Records refused at the component's binary interface, by reason (gnc/channel_record.hpp
+/// RecordStatus; index 0, accepted, unused).
+struct RecordCounters {
+  std::array<std::int64_t, 11> by_status{};
+  [[nodiscard]] std::int64_t refused() const;
+};
+
 struct Telemetry {
   core::GpsTime t;
   Mode mode = Mode::kManual;
   bool active = false;
   bool estimate_valid = false;
+  // The step's discrete outputs (GncOutputs), so that the telemetry record carries them.
+  bool star_tracker_power = false, lrf_power = false, gnc_incapable = false, passive_safety_violated = false;
   Eigen::Matrix<double, 6, 1> roe_mean_m = Eigen::Matrix<double, 6, 1>::Zero();  // a * mean ROE [m]
   bool safety_checked = false;       // a check has been made
   double safety_margin_m = 0.0;      // last check: min separation - q sigma [m]
@@ -170,7 +180,11 @@ struct Telemetry {
   int pending_pieces = 0;            // buffered impulses not yet commanded
   std::int64_t plans = 0;            // planner calls that produced a plan
   std::int64_t planning_failures = 0;
-  RejectionCounters rejected;
+  RejectionCounters rejected;  // valid records whose values were refused (stale, out of range), by channel
+  RecordCounters records;      // records refused by the binary interface, by reason
+  // On-board navigation (mode "cdgps"): its solution is in use, its last update was fixed, when.
+  bool navigation_valid = false, navigation_fixed = false;
+  core::GpsTime navigation_update;
 };
 
 struct GncOutputs {

@@ -1,6 +1,8 @@
 #include "sim/campaign_simulation.hpp"
 
 #include <chrono>
+#include <type_traits>
+#include <vector>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -59,6 +61,37 @@ std::string vector_text(const Eigen::Vector3d& x, double scale) {
 std::int64_t step_at(double t_s, double step_s) {
   return t_s >= 0.0 ? static_cast<std::int64_t>(std::llround(t_s / step_s)) : -1;
 }
+
+// The step's input records of one spacecraft as its host writes them: each message encoded with
+// the host's next sequence number of its channel; crosslink records forwarded as received.
+template <class Message>
+constexpr gnc::Channel channel_for() {
+  if constexpr (std::is_same_v<Message, gnc::TimeAtTone>) return gnc::Channel::kTimeAtTone;
+  else if constexpr (std::is_same_v<Message, gnc::NavigationSolution>) return gnc::Channel::kNavigation;
+  else if constexpr (std::is_same_v<Message, gnc::GroundCommand>) return gnc::Channel::kGroundCommand;
+  else if constexpr (std::is_same_v<Message, gnc::PropulsionTelemetry>) return gnc::Channel::kPropulsion;
+  else if constexpr (std::is_same_v<Message, gnc::GpsMessage>) return gnc::Channel::kGps;
+  else return gnc::Channel::kLaserRange;
+}
+
+class HostRecords {
+ public:
+  template <class Message>
+  void add(SimulatedSpacecraft& v, const Message& message) {
+    gnc::OutputRecords::Record& r = records_.emplace_back();
+    r.size = gnc::encode(message, v.sequence[static_cast<std::size_t>(channel_for<Message>())]++, r.bytes);
+  }
+  void forward(const gnc::OutputRecords::Record& record) { records_.push_back(record); }
+  std::span<const gnc::RecordView> views() {
+    views_.clear();
+    for (const auto& r : records_) views_.push_back(r.view());
+    return views_;
+  }
+
+ private:
+  std::vector<gnc::OutputRecords::Record> records_;
+  std::vector<gnc::RecordView> views_;
+};
 
 }  // namespace
 
@@ -192,25 +225,53 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
   const core::StateVector& osc_gcrf = vehicles_[1].x_gcrf;
   const EpochFrame frame = gps_ ? epoch_frame(*gps_, t, earth_frame_) : EpochFrame{};
   for (SimulatedSpacecraft& v : vehicles_) {
-    gnc::GncInputs in;
-    in.t = t;
-    in.time_at_tone = gnc::TimeAtTone{t, v.q_body_to_gcrf};
+    HostRecords records;
+    records.add(v, gnc::TimeAtTone{t, v.q_body_to_gcrf});
     if (gps_) {
-      in.gps = measure_gps(v, frame, t);
-      if (v.id == Spacecraft::kOsc) in.laser_range = measure_range(t);
+      if (const auto gps = measure_gps(v, frame, t)) records.add(v, *gps);
+      if (v.id == Spacecraft::kOsc) {
+        if (const auto range = measure_range(t)) records.add(v, *range);
+      }
     } else {
-      in.navigation = v.navigation->solve(t, dsc_gcrf, osc_gcrf, k_ == 0 ? 0.0 : scenario_.step_s);
+      records.add(v, v.navigation->solve(t, dsc_gcrf, osc_gcrf, k_ == 0 ? 0.0 : scenario_.step_s));
     }
-    auto delivered = v.inbox->receive(ts_);
-    if (!delivered.empty()) in.crosslink = delivered.back();  // the newest state of the other spacecraft
-    in.command = v.command;
-    in.propulsion = v.telemetry;
+    for (const auto& delivered : v.inbox->receive(ts_)) records.forward(delivered);
+    if (v.command) records.add(v, *v.command);
+    if (v.telemetry) records.add(v, *v.telemetry);
     v.command.reset();
     v.telemetry.reset();
-    const Mode before = v.gnc->mode();
-    v.out = v.gnc->step(in);
+    const Mode before = v.out.mode;
+    const gnc::OutputRecords& out = v.gnc->step(t, records.views());
+    read_outputs(v, out);
     if (v.out.mode != before) recorder_->event(ts_, v.name, "mode", fmt::format("{} -> {}", to_string(before), to_string(v.out.mode)));
   }
+}
+
+// The host's side of the binary channels: the component's output records decoded into what the
+// host routes (GncOutputs: the discrete outputs are in the telemetry record); the crosslink
+// record kept as bytes, to be forwarded as is.
+void CampaignSimulation::read_outputs(SimulatedSpacecraft& v, const gnc::OutputRecords& out) {
+  gnc::GncOutputs decoded;
+  gnc::RecordHeader header;
+  if (gnc::decode(out.telemetry.view(), decoded.telemetry, header) != gnc::RecordStatus::kAccepted) {
+    recorder_->event(ts_, v.name, "rejected_message", "the component's telemetry record does not decode");
+  }
+  const gnc::Telemetry& tm = decoded.telemetry;
+  decoded.mode = tm.mode;
+  decoded.star_tracker_power = tm.star_tracker_power;
+  decoded.lrf_power = tm.lrf_power;
+  decoded.gnc_incapable = tm.gnc_incapable;
+  decoded.passive_safety_violated = tm.passive_safety_violated;
+  const auto optional_output = [&](const gnc::OutputRecords::Record& record, auto& slot, const char* name) {
+    if (record.size == 0) return;
+    typename std::decay_t<decltype(slot)>::value_type message;
+    if (gnc::decode(record.view(), message, header) == gnc::RecordStatus::kAccepted) slot = message;
+    else recorder_->event(ts_, v.name, "rejected_message", fmt::format("the component's {} record does not decode", name));
+  };
+  optional_output(out.maneuver, decoded.maneuver, "maneuver");
+  optional_output(out.observation, decoded.observation, "observation");
+  v.crosslink_out = out.crosslink;
+  v.out = decoded;
 }
 
 // The receiver's epoch at t in the true pose (the attitude's rate from the spacecraft's attitude
@@ -305,15 +366,16 @@ void CampaignSimulation::score_navigation() {
   const bool slewing = in_slew(ts_);
   for (std::size_t k = 0; k < 2; ++k) {
     const SimulatedSpacecraft& v = vehicles_[k];
-    if (!v.gnc->navigation()) continue;
-    navigation_samples_[k] = navigation_score_.score(v.id, *v.gnc->navigation(), ts_, truth, slewing);
+    const auto& navigation = v.gnc->component().navigation();
+    if (!navigation) continue;
+    navigation_samples_[k] = navigation_score_.score(v.id, *navigation, ts_, truth, slewing);
   }
 }
 
 // Host routing: crosslink to the other spacecraft, observation schedule to the attitude profile
 // (and, from the active spacecraft, to the metrics), maneuvers to the propulsion.
 void CampaignSimulation::route_outputs(SimulatedSpacecraft& v, SimulatedSpacecraft& other) {
-  if (v.out.crosslink) other.inbox->send(ts_, *v.out.crosslink);
+  if (v.crosslink_out.size > 0) other.inbox->send(ts_, v.crosslink_out);
   if (v.out.observation) {
     const auto& o = *v.out.observation;
     const core::GpsTime t0 = scenario_.t0;
@@ -451,7 +513,7 @@ void CampaignSimulation::record_metrics(const Eigen::Vector3d& sun_gcrf_m) {
   const bool slewing = in_slew(ts_), observing = in_observation(ts_);
   for (std::size_t k = 0; k < 2; ++k) {
     const SimulatedSpacecraft& v = vehicles_[k];
-    const gnc::NavigationCounters& c = v.gnc->navigation()->counters();
+    const gnc::NavigationCounters& c = v.gnc->component().navigation()->counters();
     const std::int64_t epochs = c.epochs_joint + c.epochs_alone;
     const double fixed_fraction = epochs > rows_epochs_[k] ? static_cast<double>(c.epochs_fixed - rows_fixed_[k]) /
                                                                  static_cast<double>(epochs - rows_epochs_[k])
@@ -525,6 +587,12 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
   const gnc::Telemetry& tm_dsc = vehicles_[0].out.telemetry;
   const gnc::Telemetry& tm_osc = vehicles_[1].out.telemetry;
   summary["rejected_inputs"] = tm_dsc.rejected.total() + tm_osc.rejected.total();
+  for (const SimulatedSpacecraft& v : vehicles_) {
+    nlohmann::json refused;
+    const auto& by_status = v.out.telemetry.records.by_status;
+    for (std::size_t k = 1; k < by_status.size(); ++k) refused[std::string(gnc::to_string(static_cast<gnc::RecordStatus>(k)))] = by_status[k];
+    summary["records_refused"][std::string(v.name)] = refused;
+  }
   summary["planning_failures"] = tm_dsc.planning_failures + tm_osc.planning_failures;
   summary["navigation_mode"] = s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal";
   if (gps_) summary["navigation"] = navigation_summary();
@@ -535,7 +603,7 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
 nlohmann::json CampaignSimulation::navigation_summary() const {
   nlohmann::json out = navigation_score_.summary();
   for (const SimulatedSpacecraft& v : vehicles_) {
-    const gnc::NavigationCounters& c = v.gnc->navigation()->counters();
+    const gnc::NavigationCounters& c = v.gnc->component().navigation()->counters();
     nlohmann::json ephemerides;
     for (int k = 0; k < static_cast<int>(c.ephemerides.size()); ++k) {
       ephemerides[gnss::to_string(static_cast<gnss::EphemerisStore::AcceptStatus>(k))] = c.ephemerides[static_cast<std::size_t>(k)];

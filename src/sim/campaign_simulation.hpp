@@ -81,6 +81,7 @@ class CampaignSimulation {
   void update_attitude(const Eigen::Vector3d& sun_gcrf_m);
   void apply_ground_timeline(core::GpsTime t);
   void step_flight_components(core::GpsTime t);
+  void read_outputs(SimulatedSpacecraft& v, const gnc::OutputRecords& out);
   void score_navigation();
   void route_outputs(SimulatedSpacecraft& v, SimulatedSpacecraft& other);
   void execute_maneuver(SimulatedSpacecraft& v, core::GpsTime t);

@@ -53,14 +53,14 @@ core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenari
     if (!made.ok()) return made.error();
     onboard.emplace(std::move(made).value());
   }
-  auto component = gnc::FlightComponent::create(config, std::move(onboard));
+  auto component = gnc::RecordInterface::create(config, std::move(onboard));
   if (!component.ok()) return core::Error{"gnc." + component.error().field, component.error().message};
   v.gnc.emplace(std::move(component).value());
   v.navigation.emplace(s.navigation, RandomStream(s.seed, prefix + ".navigation"));
   CrosslinkSettings link;
   link.delay_s = s.crosslink_delay_s;
   link.drop_probability = s.crosslink_drop_probability;
-  auto inbox = Crosslink<gnc::CrosslinkMessage>::create(link, RandomStream(s.seed, prefix + ".crosslink"));
+  auto inbox = Crosslink<gnc::OutputRecords::Record>::create(link, RandomStream(s.seed, prefix + ".crosslink"));
   if (!inbox.ok()) return core::Error{"crosslink." + inbox.error().field, inbox.error().message};
   v.inbox.emplace(std::move(inbox).value());
   return true;

@@ -13,7 +13,7 @@
 
 #include "core/state_vector.hpp"
 #include "core/status.hpp"
-#include "gnc/flight_component.hpp"
+#include "gnc/record_interface.hpp"
 #include "sim/attitude_profile.hpp"
 #include "sim/campaign_scenario.hpp"
 #include "sim/crosslink.hpp"
@@ -44,9 +44,12 @@ struct SimulatedSpacecraft {
   std::optional<GpsReceiver> receiver;        // [navigation] mode = "cdgps"
   /// Per PRN, the next broadcast data set the receiver has not decoded yet (CampaignSimulation).
   std::array<std::size_t, gnss::kMaxGpsPrn + 1> next_ephemeris{};
-  std::optional<Crosslink<gnc::CrosslinkMessage>> inbox;  // messages from the other spacecraft
-  std::optional<gnc::FlightComponent> gnc;
-  gnc::GncOutputs out;  // of the last step
+  std::optional<Crosslink<gnc::OutputRecords::Record>> inbox;  // crosslink records from the other spacecraft
+  std::optional<gnc::RecordInterface> gnc;  // the flight component behind its binary channels
+  gnc::GncOutputs out;  // of the last step, decoded from its output records
+  gnc::OutputRecords::Record crosslink_out;  // the last step's crosslink record (size 0: none), as sent
+  // Host application: the sequence numbers of the records it writes, per channel.
+  std::array<std::uint32_t, gnc::kChannels + 1> sequence{};
   // Host application.
   std::optional<gnc::PropulsionTelemetry> telemetry;  // delivered at the next step
   std::optional<gnc::GroundCommand> command;          // delivered at the next step

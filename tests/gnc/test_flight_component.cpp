@@ -8,6 +8,7 @@
 #include "formation_harness.hpp"
 #include "gnc/channel_record.hpp"
 #include "gnc/flight_component.hpp"
+#include "gnc/record_interface.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace {
@@ -191,6 +192,29 @@ TEST(FlightComponent, ChannelRecordsAllocateNothing) {
   EXPECT_EQ(allocations, 0);
   EXPECT_EQ(accepted, RecordStatus::kAccepted);
   EXPECT_EQ(refused, RecordStatus::kBadChecksum);
+}
+
+// The binary interface's routine step, decoding included, allocates nothing either.
+TEST(FlightComponent, RecordInterfaceStepAllocatesNothing) {
+  GncConfig config;
+  RecordInterface gnc = RecordInterface::create(config).value();
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  std::vector<std::array<RecordBuffer, 3>> buffers(26);
+  std::vector<std::array<RecordView, 3>> views(26);
+  for (int k = 0; k <= 25; ++k) {
+    const GncInputs in = h.inputs(k);
+    auto& b = buffers[static_cast<std::size_t>(k)];
+    const auto seq = static_cast<std::uint32_t>(k);
+    views[static_cast<std::size_t>(k)] = {RecordView(b[0].data(), encode(*in.time_at_tone, seq, b[0])),
+                                          RecordView(b[1].data(), encode(*in.navigation, seq, b[1])),
+                                          RecordView(b[2].data(), encode(command(k, GroundCommand::Kind::kToStandby), seq, b[2]))};
+  }
+  (void)gnc.step(kT0, views[0]);
+  const long allocations = visors::test::count_allocations([&] {
+    for (int k = 1; k <= 25; ++k) (void)gnc.step(kT0 + static_cast<double>(k), views[static_cast<std::size_t>(k)]);
+  });
+  EXPECT_EQ(allocations, 0);
+  EXPECT_EQ(gnc.component().mode(), Mode::kStandby);
 }
 
 // A routine step (standby inside the deadband, safety check included) allocates nothing.
