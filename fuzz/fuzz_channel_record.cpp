@@ -62,10 +62,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check<CrosslinkMessage>(in);
   check<GroundCommand>(in);
   check<PropulsionTelemetry>(in);
+  check<GpsMessage>(in);
+  check<LaserRange>(in);
+  check<ManeuverCommand>(in);
+  check<ObservationCommand>(in);
+  check<Telemetry>(in);
   check_sealed<TimeAtTone>(in, Channel::kTimeAtTone);
   check_sealed<NavigationSolution>(in, Channel::kNavigation);
   check_sealed<CrosslinkMessage>(in, Channel::kCrosslink);
   check_sealed<GroundCommand>(in, Channel::kGroundCommand);
   check_sealed<PropulsionTelemetry>(in, Channel::kPropulsion);
+  check_sealed<GpsMessage>(in, Channel::kGps);
+  check_sealed<LaserRange>(in, Channel::kLaserRange);
+  check_sealed<ManeuverCommand>(in, Channel::kManeuver);
+  check_sealed<ObservationCommand>(in, Channel::kObservation);
+  check_sealed<Telemetry>(in, Channel::kTelemetry);
   return 0;
 }

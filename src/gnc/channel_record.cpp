@@ -179,28 +179,34 @@ void write_navigation(Writer& w, const CrosslinkNavigation& n) {
   w.f64(n.has_range ? n.range.range_m : 0.0);
 }
 
-// The navigation part; anything not in use must be all 0 (a record decodes to one message only).
+// The navigation part; anything not in use must be all 0 bytes (a record decodes to one message
+// only: -0.0 is not 0 here, as the fuzzer found).
 RecordStatus read_navigation(Reader& r, CrosslinkNavigation& n) {
   const std::uint8_t has_epoch = r.u8(), impulses = r.u8(), has_range = r.u8(), count = r.u8();
   if (!flag(has_epoch, n.has_epoch) || !flag(has_range, n.has_range)) return RecordStatus::kBadEnumeration;
   if (impulses > kCrosslinkImpulses || count > kSlots || (!n.has_epoch && count > 0)) return RecordStatus::kBadEnumeration;
   if (!r.zeros(4)) return RecordStatus::kBadPadding;
-  n.epoch.t = r.time();
   n.epoch.count = count;
-  for (int k = 0; k < kSlots; ++k) {
-    if (k >= count) {
-      if (!r.zeros(kCrosslinkObservationBytes)) return RecordStatus::kBadPadding;
-      continue;
+  n.q_body_to_gcrf = Eigen::Quaterniond::Identity();
+  if (n.has_epoch) {
+    n.epoch.t = r.time();
+    for (int k = 0; k < kSlots; ++k) {
+      if (k >= count) {
+        if (!r.zeros(kCrosslinkObservationBytes)) return RecordStatus::kBadPadding;
+        continue;
+      }
+      nav::GpsObservation& o = n.epoch.observations[static_cast<std::size_t>(k)];
+      o.prn = r.u8();
+      if (!read_lock_flags(r.u8(), o.loss_of_lock, o.half_cycle)) return RecordStatus::kBadEnumeration;
+      if (!r.zeros(6)) return RecordStatus::kBadPadding;
+      o.code_m = r.f64();
+      o.phase_cycles = r.f64();
     }
-    nav::GpsObservation& o = n.epoch.observations[static_cast<std::size_t>(k)];
-    o.prn = r.u8();
-    if (!read_lock_flags(r.u8(), o.loss_of_lock, o.half_cycle)) return RecordStatus::kBadEnumeration;
-    if (!r.zeros(6)) return RecordStatus::kBadPadding;
-    o.code_m = r.f64();
-    o.phase_cycles = r.f64();
+    const double w = r.f64(), x = r.f64(), y = r.f64(), z = r.f64();
+    n.q_body_to_gcrf = Eigen::Quaterniond(w, x, y, z);
+  } else if (!r.zeros(8 + kSlots * kCrosslinkObservationBytes + 32)) {  // time tag, observations, attitude
+    return RecordStatus::kBadPadding;
   }
-  const double w = r.f64(), x = r.f64(), y = r.f64(), z = r.f64();
-  n.q_body_to_gcrf = Eigen::Quaterniond(w, x, y, z);
   n.impulse_count = impulses;
   for (int k = 0; k < kCrosslinkImpulses; ++k) {
     if (k >= impulses) {
@@ -210,12 +216,9 @@ RecordStatus read_navigation(Reader& r, CrosslinkNavigation& n) {
     n.impulses[static_cast<std::size_t>(k)].t = r.time();
     n.impulses[static_cast<std::size_t>(k)].dv_gcrf_mps = r.vector3();
   }
+  if (!n.has_range) return r.zeros(16) ? RecordStatus::kAccepted : RecordStatus::kBadPadding;
   n.range.t = r.time();
   n.range.range_m = r.f64();
-  const bool unused_zero = (n.has_epoch || (n.epoch.t == core::GpsTime{} && w == 0.0 && x == 0.0 && y == 0.0 && z == 0.0)) &&
-                           (n.has_range || (n.range.t == core::GpsTime{} && n.range.range_m == 0.0));
-  if (!unused_zero) return RecordStatus::kBadPadding;
-  if (!n.has_epoch) n.q_body_to_gcrf = Eigen::Quaterniond::Identity();
   return RecordStatus::kAccepted;
 }
 

@@ -433,6 +433,12 @@ TEST(ChannelRecord, ALockFlagBeyondItsTwoBitsIsNamed) {
   EXPECT_EQ(resealed(gps(), kHeaderBytes + 8 + 1, 4), RecordStatus::kBadEnumeration);
 }
 
+// Found by the fuzzer: an absent epoch's attitude holding -0.0 (sign bit set) decoded, and
+// encoded back as +0.0: unused parts are checked as bytes, so the record is refused.
+TEST(ChannelRecord, ANegativeZeroInAnUnusedPartIsPadding) {
+  EXPECT_EQ(resealed(crosslink(), kHeaderBytes + 40 + 8 + 8 + 12 * 24 + 15, 0x80), RecordStatus::kBadPadding);
+}
+
 TEST(ChannelRecord, ACrosslinkImpulseCountBeyondTwoIsNamed) {
   EXPECT_EQ(resealed(crosslink_with_navigation(), kHeaderBytes + 40 + 1, 3), RecordStatus::kBadEnumeration);
 }
