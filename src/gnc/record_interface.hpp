@@ -8,9 +8,11 @@
 // dispatched by its header's channel to its decode(); a structural failure (truncated, bad
 // checksum, unknown channel, an output channel, ...) and a record older than the last one
 // admitted on its channel (SequenceGate) are refused and counted by reason (Telemetry::records);
-// of several valid records of one channel in a step the newest (last admitted) is used. Values
-// are the component's to validate (stale, non-finite, out of range: counted by channel,
-// Telemetry::rejected). Nothing crashes, nothing allocates, nothing throws.
+// the values of an admitted record are validated here (messages.hpp validate: stale, non-finite,
+// out of range; counted by channel, Telemetry::rejected), and of several records of one channel
+// in a step the newest valid one is used, so garbage values never displace a good record.
+// Nothing crashes, nothing allocates (but an error's text when validation refuses a value),
+// nothing throws.
 // Outputs: the step's maneuver, observation, crosslink and telemetry, each as one record with its
 // channel's own sequence; the telemetry record every step.
 
@@ -59,6 +61,7 @@ class RecordInterface {
   FlightComponent component_;
   SequenceGate gate_;
   RecordCounters refused_;
+  RejectionCounters rejected_;  // valid records with refused values, by channel
   std::array<std::uint32_t, kChannels + 1> sequence_{};  // of the outputs, per channel
   OutputRecords out_;
 };

@@ -216,12 +216,28 @@ core::Result<bool> read_links_and_faults(const toml::table& root, CampaignScenar
     s.crosslink_drop_probability = drop;
   }
   if (const toml::table* f = table_at(root, "fault")) {
-    if (auto e = check_keys(*f, "fault", {"impulse_t_s", "impulse_dv_rtn_mps", "non_gnc_fault_t_s"})) return *e;
+    if (auto e = check_keys(*f, "fault", {"impulse_t_s", "impulse_dv_rtn_mps", "non_gnc_fault_t_s", "gps_outage_t_s",
+                                          "gps_outage_s", "crosslink_loss_t_s", "crosslink_loss_s", "safe_mode_t_s",
+                                          "safe_mode_s", "garbage_t_s", "garbage_s"})) {
+      return *e;
+    }
     VISORS_TRY(t, number_at(*f, "fault", "impulse_t_s", s.fault.impulse_t_s));
     VISORS_TRY(dv, vector3_at(*f, "fault", "impulse_dv_rtn_mps", s.fault.impulse_dv_rtn_mps));
     VISORS_TRY(non_gnc, number_at(*f, "fault", "non_gnc_fault_t_s", s.fault.non_gnc_fault_t_s));
     if (dv.norm() > 1.0) return Error{"fault.impulse_dv_rtn_mps", "must be below 1 m/s"};
-    s.fault = FaultSettings{t, dv, non_gnc};
+    FaultSettings fault = s.fault;
+    fault.impulse_t_s = t;
+    fault.impulse_dv_rtn_mps = dv;
+    fault.non_gnc_fault_t_s = non_gnc;
+    for (auto [window, name] : {std::pair{&fault.gps_outage, "gps_outage"}, std::pair{&fault.crosslink_loss, "crosslink_loss"},
+                                std::pair{&fault.safe_mode, "safe_mode"}, std::pair{&fault.garbage, "garbage"}}) {
+      const std::string start_key = std::string(name) + "_t_s", length_key = std::string(name) + "_s";
+      VISORS_TRY(start, number_at(*f, "fault", start_key, window->start_s));
+      VISORS_TRY(length, number_at(*f, "fault", length_key, window->duration_s));
+      if (auto ok = in_range(length, 0.0, 1e6, "fault." + length_key); !ok) return ok.error();
+      *window = FaultWindow{start, length};
+    }
+    s.fault = fault;
   }
   return true;
 }
@@ -340,9 +356,14 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,
                      g.science.mpc_period_s, g.science.least_squares_window_s, g.safety.epsilon_m, g.safety.q_sigma,
                      g.safety.horizon_orbits, g.safety.check_period_s, g.escape.da_target_m, g.science.geometry.north);
-  out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\nnon_gnc_fault_t_s = {:.17g}\n\n",
+  out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\nnon_gnc_fault_t_s = {:.17g}\n",
                      s.fault.impulse_t_s, s.fault.impulse_dv_rtn_mps(0), s.fault.impulse_dv_rtn_mps(1),
                      s.fault.impulse_dv_rtn_mps(2), s.fault.non_gnc_fault_t_s);
+  for (auto [window, name] : {std::pair{&s.fault.gps_outage, "gps_outage"}, std::pair{&s.fault.crosslink_loss, "crosslink_loss"},
+                              std::pair{&s.fault.safe_mode, "safe_mode"}, std::pair{&s.fault.garbage, "garbage"}}) {
+    out += fmt::format("{}_t_s = {:.17g}\n{}_s = {:.17g}\n", name, window->start_s, name, window->duration_s);
+  }
+  out += "\n";
   out += gnss_settings_to_toml(s.gnss);
   out += s.forces_toml;
   out += s.nav_toml;

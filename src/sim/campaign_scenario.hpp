@@ -47,6 +47,13 @@ struct SpacecraftSettings {
   double srp_area_m2 = 0.35;
 };
 
+/// A fault that lasts: from start_s [s since t0] for duration_s [s]; disabled when start_s < 0.
+struct FaultWindow {
+  double start_s = -1.0;
+  double duration_s = 0.0;
+  [[nodiscard]] bool contains(double t_s) const { return start_s >= 0.0 && t_s >= start_s && t_s < start_s + duration_s; }
+};
+
 struct FaultSettings {
   /// An unplanned impulse of the OSC (a stuck valve), to force a passive-safety violation;
   /// disabled when t_s < 0.
@@ -56,6 +63,12 @@ struct FaultSettings {
   /// passive spacecraft); disabled when < 0. The host's response (mission paper, FDIR): transfer
   /// to standby when the formation is in science or transfer, otherwise a role switch.
   double non_gnc_fault_t_s = -1.0;
+  // Faults of issue 16 (each handled by the host's FDIR as sim/campaign_simulation.hpp says); the
+  // spacecraft concerned is the one active when the window opens.
+  FaultWindow gps_outage;      // its receiver delivers nothing; every satellite re-acquired after
+  FaultWindow crosslink_loss;  // every crosslink message lost, both ways
+  FaultWindow safe_mode;       // its bus in safe mode: its component is not stepped
+  FaultWindow garbage;         // bursts of garbage and NaN records on every input channel of both
 };
 
 struct CampaignScenario {

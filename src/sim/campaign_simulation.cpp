@@ -1,6 +1,7 @@
 #include "sim/campaign_simulation.hpp"
 
 #include <chrono>
+#include <limits>
 #include <type_traits>
 #include <vector>
 #include <cmath>
@@ -92,6 +93,40 @@ class HostRecords {
   std::vector<gnc::OutputRecords::Record> records_;
   std::vector<gnc::RecordView> views_;
 };
+
+// A burst of the garbage fault on every input channel: a record of random bytes behind a valid
+// header (refused: bad checksum), and an intact record of NaN or out-of-range values (admitted,
+// its values refused by validation).
+void add_garbage(SimulatedSpacecraft& v, core::GpsTime t, RandomStream& rng, HostRecords& records) {
+  for (int c = 1; c <= gnc::kChannels; ++c) {
+    const auto channel = static_cast<gnc::Channel>(c);
+    gnc::OutputRecords::Record r;
+    r.size = gnc::record_size(channel);
+    for (std::size_t i = 0; i < r.size; ++i) r.bytes[i] = static_cast<std::uint8_t>(rng.uniform() * 256.0);
+    r.bytes[0] = 'V';
+    r.bytes[1] = 'G';
+    r.bytes[2] = static_cast<std::uint8_t>(c);
+    r.bytes[3] = gnc::kRecordVersion;
+    r.bytes[4] = static_cast<std::uint8_t>(r.size);
+    r.bytes[5] = static_cast<std::uint8_t>(r.size >> 8);
+    records.forward(r);
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  records.add(v, gnc::TimeAtTone{t, Eigen::Quaterniond(nan, 0.0, 0.0, 0.0)});
+  gnc::NavigationSolution navigation;
+  navigation.t = t;
+  navigation.chief_gcrf.r = Eigen::Vector3d::Constant(nan);
+  records.add(v, navigation);
+  records.add(v, gnc::GroundCommand{t, gnc::GroundCommand::Kind::kStartScience, -5});
+  records.add(v, gnc::PropulsionTelemetry{t, Eigen::Vector3d::Zero(), nan, true});
+  gnc::GpsMessage gps;
+  gps.t = gps.epoch.t = t;
+  gps.epoch.channel_count = 1;
+  gps.epoch.channels[0].prn = 7;
+  gps.epoch.channels[0].pseudorange_m = nan;
+  records.add(v, gps);
+  records.add(v, gnc::LaserRange{t, nan});
+}
 
 }  // namespace
 
@@ -224,11 +259,25 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
   const core::StateVector& dsc_gcrf = vehicles_[0].x_gcrf;
   const core::StateVector& osc_gcrf = vehicles_[1].x_gcrf;
   const EpochFrame frame = gps_ ? epoch_frame(*gps_, t, earth_frame_) : EpochFrame{};
-  for (SimulatedSpacecraft& v : vehicles_) {
+  open_fault_windows(t);
+  close_fault_windows(t);
+  for (std::size_t k = 0; k < vehicles_.size(); ++k) {
+    SimulatedSpacecraft& v = vehicles_[k];
+    if (in_window(scenario_.fault.safe_mode, safe_mode_victim_, k)) {
+      // Bus safe mode: the component is not stepped; nothing comes out of it.
+      v.out.maneuver.reset();
+      v.out.observation.reset();
+      v.crosslink_out.size = 0;
+      continue;
+    }
     HostRecords records;
     records.add(v, gnc::TimeAtTone{t, v.q_body_to_gcrf});
     if (gps_) {
-      if (const auto gps = measure_gps(v, frame, t)) records.add(v, *gps);
+      if (in_window(scenario_.fault.gps_outage, gps_outage_victim_, k)) {
+        v.receiver->reacquire_all();  // the receiver restarts when the outage ends
+      } else if (const auto gps = measure_gps(v, frame, t)) {
+        records.add(v, *gps);
+      }
       if (v.id == Spacecraft::kOsc) {
         if (const auto range = measure_range(t)) records.add(v, *range);
       }
@@ -238,7 +287,9 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
     for (const auto& delivered : v.inbox->receive(ts_)) records.forward(delivered);
     if (v.command) records.add(v, *v.command);
     if (v.telemetry) records.add(v, *v.telemetry);
-    v.command.reset();
+    if (scenario_.fault.garbage.contains(ts_)) add_garbage(v, t, *garbage_rng_, records);
+    v.command = v.command_after;
+    v.command_after.reset();
     v.telemetry.reset();
     const Mode before = v.out.mode;
     const gnc::OutputRecords& out = v.gnc->step(t, records.views());
@@ -375,7 +426,7 @@ void CampaignSimulation::score_navigation() {
 // Host routing: crosslink to the other spacecraft, observation schedule to the attitude profile
 // (and, from the active spacecraft, to the metrics), maneuvers to the propulsion.
 void CampaignSimulation::route_outputs(SimulatedSpacecraft& v, SimulatedSpacecraft& other) {
-  if (v.crosslink_out.size > 0) other.inbox->send(ts_, v.crosslink_out);
+  if (v.crosslink_out.size > 0 && !scenario_.fault.crosslink_loss.contains(ts_)) other.inbox->send(ts_, v.crosslink_out);
   if (v.out.observation) {
     const auto& o = *v.out.observation;
     const core::GpsTime t0 = scenario_.t0;
@@ -422,7 +473,8 @@ void CampaignSimulation::execute_maneuver(SimulatedSpacecraft& v, core::GpsTime 
 }
 
 // Host FDIR on the active spacecraft's outputs (mission paper): a passive-safety violation ->
-// escape; GNC incapable for kRoleSwitchAfter_s while the other is capable -> role switch.
+// escape; GNC incapable for kRoleSwitchAfter_s while the other is capable (and not in a bus safe
+// mode, whose last outputs are stale) -> role switch.
 void CampaignSimulation::apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft& other, core::GpsTime t) {
   if (!v.out.telemetry.active) return;
   const core::GpsTime next = t + scenario_.step_s;
@@ -439,13 +491,65 @@ void CampaignSimulation::apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft&
     return;
   }
   if (v.incapable_since_s < 0.0) v.incapable_since_s = ts_;
-  if (ts_ - v.incapable_since_s >= kRoleSwitchAfter_s && !other.out.gnc_incapable) {
+  const auto other_index = static_cast<std::size_t>(&other == &vehicles_[0] ? 0 : 1);
+  const bool other_in_safe_mode = in_window(scenario_.fault.safe_mode, safe_mode_victim_, other_index);
+  if (ts_ - v.incapable_since_s >= kRoleSwitchAfter_s && !other.out.gnc_incapable && !other_in_safe_mode) {
     v.command = GroundCommand{next, GroundCommand::Kind::kMakePassive, 0};
     other.command = GroundCommand{next, GroundCommand::Kind::kMakeActive, 0};
     v.incapable_since_s = -1.0;
     recorder_->event(ts_, "sim", "fdir", fmt::format("{} GNC incapable: role switch", v.name));
   }
 }
+
+// The fault windows that open at this step: each concerns the spacecraft active then. A bus safe
+// mode is the non-GNC fault of mission paper's FDIR with the spacecraft unable to act: the host
+// switches roles at once and, from science or a transfer, commands the new active spacecraft back
+// to standby at the next step (one command a step).
+void CampaignSimulation::open_fault_windows(core::GpsTime t) {
+  const FaultSettings& f = scenario_.fault;
+  const int active_index = &active() == &vehicles_[0] ? 0 : 1;
+  if (f.gps_outage.contains(ts_) && gps_outage_victim_ < 0) {
+    gps_outage_victim_ = active_index;
+    recorder_->event(ts_, vehicles_[static_cast<std::size_t>(active_index)].name, "fault",
+                     fmt::format("GPS receiver outage for {:.0f} s", f.gps_outage.duration_s));
+  }
+  if (f.crosslink_loss.contains(ts_) && !f.crosslink_loss.contains(ts_ - scenario_.step_s)) {
+    recorder_->event(ts_, "sim", "fault", fmt::format("crosslink lost for {:.0f} s", f.crosslink_loss.duration_s));
+  }
+  if (f.garbage.contains(ts_) && !garbage_rng_) {
+    garbage_rng_.emplace(scenario_.seed, "faults.garbage");
+    recorder_->event(ts_, "sim", "fault", fmt::format("garbage and NaN records on every channel for {:.0f} s", f.garbage.duration_s));
+  }
+  if (f.safe_mode.contains(ts_) && safe_mode_victim_ < 0) {
+    safe_mode_victim_ = active_index;
+    SimulatedSpacecraft& victim = vehicles_[static_cast<std::size_t>(active_index)];
+    SimulatedSpacecraft& other = vehicles_[static_cast<std::size_t>(1 - active_index)];
+    const Mode mode_now = victim.out.mode;
+    recorder_->event(ts_, victim.name, "fault", fmt::format("bus safe mode for {:.0f} s", f.safe_mode.duration_s));
+    other.command = GroundCommand{t, GroundCommand::Kind::kMakeActive, 0};
+    if (mode_now == Mode::kScience || mode_now == Mode::kTransferToScience) {
+      other.command_after = GroundCommand{t + scenario_.step_s, GroundCommand::Kind::kTransferToStandby, 0};
+      recorder_->event(ts_, "sim", "fdir", fmt::format("{} in bus safe mode: role switch, then transfer to standby", victim.name));
+    } else {
+      recorder_->event(ts_, "sim", "fdir", fmt::format("{} in bus safe mode: role switch", victim.name));
+    }
+  }
+}
+
+bool CampaignSimulation::in_window(const FaultWindow& window, int victim, std::size_t k) const {
+  return victim == static_cast<int>(k) && window.contains(ts_);
+}
+
+// The first step after a safe mode: the spacecraft is back, and told it is passive now.
+void CampaignSimulation::close_fault_windows(core::GpsTime t) {
+  const FaultWindow& safe = scenario_.fault.safe_mode;
+  if (safe_mode_victim_ >= 0 && !safe.contains(ts_) && safe.contains(ts_ - scenario_.step_s)) {
+    SimulatedSpacecraft& back = vehicles_[static_cast<std::size_t>(safe_mode_victim_)];
+    back.command = GroundCommand{t, GroundCommand::Kind::kMakePassive, 0};
+    recorder_->event(ts_, back.name, "fault", "back from bus safe mode: made passive");
+  }
+}
+
 
 // Scenario faults: a non-GNC fault reported to the host (its FDIR: back to standby from science
 // or transfer, else a role switch), and an unplanned impulse on the OSC's truth.

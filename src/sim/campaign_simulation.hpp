@@ -87,6 +87,9 @@ class CampaignSimulation {
   void execute_maneuver(SimulatedSpacecraft& v, core::GpsTime t);
   void apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft& other, core::GpsTime t);
   void inject_faults(core::GpsTime t);
+  void open_fault_windows(core::GpsTime t);
+  void close_fault_windows(core::GpsTime t);
+  [[nodiscard]] bool in_window(const FaultWindow& window, int victim, std::size_t k) const;
   void record_metrics(const Eigen::Vector3d& sun_gcrf_m);
   void update_end();
   core::Result<bool> propagate_truth(core::GpsTime t);
@@ -122,6 +125,9 @@ class CampaignSimulation {
   NavigationScore navigation_score_;
   std::array<NavigationSample, 2> navigation_samples_{};
   std::array<std::int64_t, 2> rows_epochs_{}, rows_fixed_{};  // at each spacecraft's last navigation.csv row
+  // Fault windows ([fault]): the spacecraft each concerns (index, -1 before the window opens).
+  int gps_outage_victim_ = -1, safe_mode_victim_ = -1;
+  std::optional<RandomStream> garbage_rng_;
 };
 
 /// Runs `scenario`, writing the run directory `out_dir`. `progress` (optional) is called about

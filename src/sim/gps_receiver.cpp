@@ -118,6 +118,10 @@ core::Result<GpsReceiver> GpsReceiver::create(const GpsReceiverSettings& setting
   return receiver;
 }
 
+void GpsReceiver::reacquire_all() {
+  for (Track& track : tracks_) track.prn = 0;
+}
+
 std::int64_t GpsReceiver::draw_ambiguity() {
   // An arbitrary integer in [-2^20, 2^20): a receiver starts the phase count anywhere.
   return static_cast<std::int64_t>(std::floor(rng_.uniform() * 2097152.0)) - 1048576;

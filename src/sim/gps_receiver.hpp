@@ -166,6 +166,10 @@ class GpsReceiver {
   /// the next call.
   const GpsReceiverEpoch& measure(const ReceiverPose& pose, const GpsSatelliteTruth& satellites);
 
+  /// Every channel freed: the next epoch re-acquires what is visible, each with a new ambiguity
+  /// and the loss-of-lock flag (after an outage of the receiver).
+  void reacquire_all();
+
   [[nodiscard]] const GpsReceiverSettings& settings() const { return settings_; }
   /// The true boresight (unit, body frame) and phase centre (body frame) [m].
   [[nodiscard]] const Eigen::Vector3d& boresight_body() const { return boresight_body_; }

@@ -53,6 +53,7 @@ struct SimulatedSpacecraft {
   // Host application.
   std::optional<gnc::PropulsionTelemetry> telemetry;  // delivered at the next step
   std::optional<gnc::GroundCommand> command;          // delivered at the next step
+  std::optional<gnc::GroundCommand> command_after;    // delivered at the step after (one command a step)
   bool violation_reported = false;
   double incapable_since_s = -1.0;  // since when GNC incapable is reported, -1 if not
   std::array<double, gnc::kModeCount> dv_by_mode_mps{};  // executed, L1 in the thrusters' frame
