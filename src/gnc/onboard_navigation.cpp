@@ -254,6 +254,7 @@ void OnboardNavigation::process(const BufferedEpoch& own, const BufferedEpoch* p
     return;
   }
   last_update_ = t;
+  counters_.clock_jumps += last_report_.clock_jumps;
   ++(peer != nullptr ? counters_.epochs_joint : counters_.epochs_alone);
   if (last_report_.fix_applied) ++counters_.epochs_fixed;
   if (last_report_.wrong_fix_refused) ++counters_.wrong_fixes_refused;

@@ -83,6 +83,7 @@ struct NavigationCounters {
   std::int64_t wrong_fixes_refused = 0;
   std::int64_t impulses_applied = 0, impulses_late = 0;
   std::int64_t laser_used = 0, laser_rejected = 0;
+  std::int64_t clock_jumps = 0;       // receiver clock jumps taken into the clock states
   std::array<std::int64_t, 6> ephemerides{};  // by gnss::EphemerisStore::AcceptStatus
 };
 

@@ -103,6 +103,8 @@ struct CdgpsFilter::Impl {
   double innovation(const Scalar& m) const { return m.z - (m.p.value_m + m.p.h.dot(x - x_prior)); }
   double innovations(const std::array<Scalar, kGpsSlots>& scalars, int count, std::array<double, kGpsSlots>& values) const;
   void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
+  bool absorb_clock_jump(const std::array<Scalar, kGpsSlots>& scalars, int count, int clock_state, double sigma_m,
+                         const CdgpsSettings& s);
   void process(const CdgpsSettings& s, CdgpsEpochReport& report);
   std::array<core::StateVector, 2> propagate_mean_states(NavVector& xs, double dt, const CdgpsSettings& s);
   void update_sd_code(const CdgpsSettings& s, CdgpsEpochReport& report);
@@ -490,6 +492,30 @@ double CdgpsFilter::Impl::innovations(const std::array<Scalar, kGpsSlots>& scala
   return sorted[static_cast<std::size_t>(count / 2)];
 }
 
+// A receiver steering its clock (by a millisecond: 299,792 m) moves every measurement of that
+// receiver by the same amount at once. Seen here as the epoch's median scalar failing its own
+// gate (the majority of the satellites, not one blunder, disagree with the prior beyond
+// gate_sigmas): the median innovation is taken into the clock state, which sets every scalar
+// back near zero, and the ambiguities stay (code and phase moved alike). Needs 3 scalars or
+// more (a median of fewer is one satellite). The local receiver's from its GRAPHIC, the remote
+// one's from the SD codes (remote minus local clock), after the local's.
+bool CdgpsFilter::Impl::absorb_clock_jump(const std::array<Scalar, kGpsSlots>& scalars, int count, int clock_state,
+                                          double sigma_m, const CdgpsSettings& s) {
+  if (count < 3) return false;
+  std::array<double, kGpsSlots> values{};
+  const double median = innovations(scalars, count, values);
+  const Scalar* at_median = &scalars[0];
+  for (int i = 0; i < count; ++i) {
+    if (values[static_cast<std::size_t>(i)] == median) at_median = &scalars[static_cast<std::size_t>(i)];
+  }
+  const NavRow& h = at_median->p.h;
+  const double spread = std::sqrt((h * P * h.transpose()).value() + at_median->variance_scale * sigma_m * sigma_m);
+  const double partial = h(clock_state);
+  if (std::abs(median) <= s.gate_sigmas * spread || std::abs(partial) < 0.5) return false;
+  x(clock_state) += median / partial;
+  return true;
+}
+
 // The order of the sequential updates: the receiver clocks are nearly free at each epoch (a random
 // walk of metres), so the first scalar processed mostly sets the clock (GRAPHIC) or the clock
 // difference (SDCP), and a slip or a code blunder in it would pass its own gate and make every
@@ -687,6 +713,13 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.start_ambiguities(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2));
   m.start_ambiguities(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2));
   m.follow_ephemeris_switches(settings_.local, std::pow(settings_.ephemeris_switch_sigma_m, 2), report);
+  const Craft remote = settings_.local == Craft::kDsc ? Craft::kOsc : Craft::kDsc;
+  report.clock_jumps += m.absorb_clock_jump(m.graphic_scalars, m.graphic_count, state::clock(settings_.local),
+                                            settings_.graphic_sigma_m, settings_) ? 1 : 0;
+  if (settings_.sd_code) {
+    report.clock_jumps += m.absorb_clock_jump(m.code_scalars, m.code_count, state::clock(remote), settings_.sd_code_sigma_m,
+                                              settings_) ? 1 : 0;
+  }
   m.order_by_consensus(m.graphic_scalars, m.graphic_count);
   m.order_by_consensus(m.sdcp_scalars, m.sdcp_count);
   m.process(settings_, report);

@@ -8,6 +8,9 @@
 //
 // Epoch cycle (the caller's order): predict(t) to the measurements' time tag; apply_impulse() for
 // maneuvers executed since; update() with the epoch's observations:
+// 0. Receiver clock jumps (a receiver steering its clock by a millisecond moves all its code and
+//    phase at once): the epoch's median GRAPHIC (local receiver) or SD code (remote) beyond its
+//    own gate is taken into that clock state (absorb_clock_jump in cdgps_filter.cpp).
 // 1. Ambiguity slots (nav/ambiguity_slots.hpp): a satellite new to a bank, or flagged by the
 //    loss-of-lock indicator, gets its slot (re)initialised from the measurement's residual with
 //    the prior variance (digest 5.4, large-variance method), so the same measurement then updates
@@ -78,6 +81,7 @@ struct CdgpsEpochReport {
   int detected_slips = 0;      // SDCP gate failures (slips the indicator did not flag)
   int missing_ephemeris = 0;
   int ephemeris_switches = 0;  // GRAPHIC biases widened for a new broadcast data set of their satellite
+  int clock_jumps = 0;         // receiver clock jumps taken into the clock states (the local's, the remote's)
   int implausible_observations = 0;  // skipped (nav/gps_observations.hpp plausible())
   int half_cycle_skipped = 0;        // phases flagged with an unresolved half cycle, not used
   double nis_sum = 0.0;        // sum of the accepted scalars' normalised innovations squared

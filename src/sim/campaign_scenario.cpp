@@ -218,7 +218,8 @@ core::Result<bool> read_links_and_faults(const toml::table& root, CampaignScenar
   if (const toml::table* f = table_at(root, "fault")) {
     if (auto e = check_keys(*f, "fault", {"impulse_t_s", "impulse_dv_rtn_mps", "non_gnc_fault_t_s", "gps_outage_t_s",
                                           "gps_outage_s", "crosslink_loss_t_s", "crosslink_loss_s", "safe_mode_t_s",
-                                          "safe_mode_s", "garbage_t_s", "garbage_s"})) {
+                                          "safe_mode_s", "garbage_t_s", "garbage_s", "thruster_failure_t_s",
+                                          "clock_jump_t_s", "clock_jump_m"})) {
       return *e;
     }
     VISORS_TRY(t, number_at(*f, "fault", "impulse_t_s", s.fault.impulse_t_s));
@@ -237,6 +238,13 @@ core::Result<bool> read_links_and_faults(const toml::table& root, CampaignScenar
       if (auto ok = in_range(length, 0.0, 1e6, "fault." + length_key); !ok) return ok.error();
       *window = FaultWindow{start, length};
     }
+    VISORS_TRY(thruster, number_at(*f, "fault", "thruster_failure_t_s", fault.thruster_failure_t_s));
+    VISORS_TRY(jump_t, number_at(*f, "fault", "clock_jump_t_s", fault.clock_jump_t_s));
+    VISORS_TRY(jump_m, number_at(*f, "fault", "clock_jump_m", fault.clock_jump_m));
+    if (auto ok = in_range(jump_m, -1e7, 1e7, "fault.clock_jump_m"); !ok) return ok.error();
+    fault.thruster_failure_t_s = thruster;
+    fault.clock_jump_t_s = jump_t;
+    fault.clock_jump_m = jump_m;
     s.fault = fault;
   }
   return true;
@@ -363,7 +371,8 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                               std::pair{&s.fault.safe_mode, "safe_mode"}, std::pair{&s.fault.garbage, "garbage"}}) {
     out += fmt::format("{}_t_s = {:.17g}\n{}_s = {:.17g}\n", name, window->start_s, name, window->duration_s);
   }
-  out += "\n";
+  out += fmt::format("thruster_failure_t_s = {:.17g}\nclock_jump_t_s = {:.17g}\nclock_jump_m = {:.17g}\n\n",
+                     s.fault.thruster_failure_t_s, s.fault.clock_jump_t_s, s.fault.clock_jump_m);
   out += gnss_settings_to_toml(s.gnss);
   out += s.forces_toml;
   out += s.nav_toml;

@@ -69,6 +69,9 @@ struct FaultSettings {
   FaultWindow crosslink_loss;  // every crosslink message lost, both ways
   FaultWindow safe_mode;       // its bus in safe mode: its component is not stepped
   FaultWindow garbage;         // bursts of garbage and NaN records on every input channel of both
+  double thruster_failure_t_s = -1.0;  // from then its propulsion executes nothing
+  double clock_jump_t_s = -1.0;        // its receiver clock jumps by clock_jump_m then
+  double clock_jump_m = 0.0;           // c x the jump [m] (receivers steer by 1 ms: 299,792.458 m)
 };
 
 struct CampaignScenario {

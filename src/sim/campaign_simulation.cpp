@@ -452,10 +452,16 @@ void CampaignSimulation::route_outputs(SimulatedSpacecraft& v, SimulatedSpacecra
 // goes back at the next step.
 void CampaignSimulation::execute_maneuver(SimulatedSpacecraft& v, core::GpsTime t) {
   const Mode mode = v.out.mode;
-  auto executed = v.propulsion->execute(ts_, v.out.maneuver->dv_body_mps);
   gnc::PropulsionTelemetry telemetry;
   telemetry.t = t;
   telemetry.mass_kg = v.propulsion->mass_kg();
+  if (thruster_victim_ >= 0 && &v == &vehicles_[static_cast<std::size_t>(thruster_victim_)]) {
+    // A failed thruster: nothing executed, the telemetry says so, and the host's FDIR (once).
+    v.telemetry = telemetry;
+    if (v.out.telemetry.active) switch_away_from(static_cast<std::size_t>(thruster_victim_), t + scenario_.step_s, "thruster failed");
+    return;
+  }
+  auto executed = v.propulsion->execute(ts_, v.out.maneuver->dv_body_mps);
   if (executed.ok()) {
     v.x_gcrf.v += v.q_body_to_gcrf * executed->dv_executed_body_mps;
     const double l1 = thruster_l1_norm(executed->dv_executed_body_mps);
@@ -522,17 +528,36 @@ void CampaignSimulation::open_fault_windows(core::GpsTime t) {
   }
   if (f.safe_mode.contains(ts_) && safe_mode_victim_ < 0) {
     safe_mode_victim_ = active_index;
-    SimulatedSpacecraft& victim = vehicles_[static_cast<std::size_t>(active_index)];
-    SimulatedSpacecraft& other = vehicles_[static_cast<std::size_t>(1 - active_index)];
-    const Mode mode_now = victim.out.mode;
-    recorder_->event(ts_, victim.name, "fault", fmt::format("bus safe mode for {:.0f} s", f.safe_mode.duration_s));
-    other.command = GroundCommand{t, GroundCommand::Kind::kMakeActive, 0};
-    if (mode_now == Mode::kScience || mode_now == Mode::kTransferToScience) {
-      other.command_after = GroundCommand{t + scenario_.step_s, GroundCommand::Kind::kTransferToStandby, 0};
-      recorder_->event(ts_, "sim", "fdir", fmt::format("{} in bus safe mode: role switch, then transfer to standby", victim.name));
-    } else {
-      recorder_->event(ts_, "sim", "fdir", fmt::format("{} in bus safe mode: role switch", victim.name));
-    }
+    recorder_->event(ts_, vehicles_[static_cast<std::size_t>(active_index)].name, "fault",
+                     fmt::format("bus safe mode for {:.0f} s", f.safe_mode.duration_s));
+    switch_away_from(static_cast<std::size_t>(active_index), t, "in bus safe mode");
+  }
+  if (f.thruster_failure_t_s >= 0.0 && ts_ >= f.thruster_failure_t_s && thruster_victim_ < 0) {
+    thruster_victim_ = active_index;
+    recorder_->event(ts_, vehicles_[static_cast<std::size_t>(active_index)].name, "fault", "thruster failed");
+  }
+  if (gps_ && f.clock_jump_t_s >= 0.0 && k_ == step_at(f.clock_jump_t_s, scenario_.step_s)) {
+    SimulatedSpacecraft& v = vehicles_[static_cast<std::size_t>(active_index)];
+    v.receiver->jump_clock(f.clock_jump_m);
+    recorder_->event(ts_, v.name, "fault", fmt::format("receiver clock jump of {:.3f} m", f.clock_jump_m));
+  }
+}
+
+// The host's response to a non-GNC fault that leaves a spacecraft unable to act (mission paper's
+// FDIR: from science or a transfer back to standby, else a role switch; here the role switch in
+// any case, the faulty one cannot fly the return): the other made active at once and, from
+// science or a transfer, commanded back to standby at the next step (one command a step).
+void CampaignSimulation::switch_away_from(std::size_t victim_index, core::GpsTime t, std::string_view what) {
+  SimulatedSpacecraft& victim = vehicles_[victim_index];
+  SimulatedSpacecraft& other = vehicles_[1 - victim_index];
+  const Mode mode_now = victim.out.mode;
+  victim.command = GroundCommand{t, GroundCommand::Kind::kMakePassive, 0};
+  other.command = GroundCommand{t, GroundCommand::Kind::kMakeActive, 0};
+  if (mode_now == Mode::kScience || mode_now == Mode::kTransferToScience) {
+    other.command_after = GroundCommand{t + scenario_.step_s, GroundCommand::Kind::kTransferToStandby, 0};
+    recorder_->event(ts_, "sim", "fdir", fmt::format("{} {}: role switch, then transfer to standby", victim.name, what));
+  } else {
+    recorder_->event(ts_, "sim", "fdir", fmt::format("{} {}: role switch", victim.name, what));
   }
 }
 
@@ -721,6 +746,7 @@ nlohmann::json CampaignSimulation::navigation_summary() const {
     n["impulses_late"] = c.impulses_late;
     n["laser_ranges_used"] = c.laser_used;
     n["laser_ranges_rejected"] = c.laser_rejected;
+    n["clock_jumps"] = c.clock_jumps;
     n["ephemerides"] = ephemerides;
     n["rejected_gps_messages"] = v.out.telemetry.rejected.gps;
   }

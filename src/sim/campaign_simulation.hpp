@@ -89,6 +89,8 @@ class CampaignSimulation {
   void inject_faults(core::GpsTime t);
   void open_fault_windows(core::GpsTime t);
   void close_fault_windows(core::GpsTime t);
+  /// The non-GNC fault of a spacecraft that can no longer act (bus safe mode, failed thruster).
+  void switch_away_from(std::size_t victim, core::GpsTime t, std::string_view what);
   [[nodiscard]] bool in_window(const FaultWindow& window, int victim, std::size_t k) const;
   void record_metrics(const Eigen::Vector3d& sun_gcrf_m);
   void update_end();
@@ -126,7 +128,7 @@ class CampaignSimulation {
   std::array<NavigationSample, 2> navigation_samples_{};
   std::array<std::int64_t, 2> rows_epochs_{}, rows_fixed_{};  // at each spacecraft's last navigation.csv row
   // Fault windows ([fault]): the spacecraft each concerns (index, -1 before the window opens).
-  int gps_outage_victim_ = -1, safe_mode_victim_ = -1;
+  int gps_outage_victim_ = -1, safe_mode_victim_ = -1, thruster_victim_ = -1;
   std::optional<RandomStream> garbage_rng_;
 };
 

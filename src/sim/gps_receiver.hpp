@@ -169,6 +169,9 @@ class GpsReceiver {
   /// Every channel freed: the next epoch re-acquires what is visible, each with a new ambiguity
   /// and the loss-of-lock flag (after an outage of the receiver).
   void reacquire_all();
+  /// The receiver steers its clock: c dt_r jumps by jump_m [m] before the next epoch (code and
+  /// phase both move by it; the ambiguities stay).
+  void jump_clock(double jump_m) { clock_m_ += jump_m; }
 
   [[nodiscard]] const GpsReceiverSettings& settings() const { return settings_; }
   /// The true boresight (unit, body frame) and phase centre (body frame) [m].

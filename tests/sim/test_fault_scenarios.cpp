@@ -105,5 +105,31 @@ TEST_F(FaultScenario, SafeModeOfTheActiveSpacecraftSwitchesRolesAndReturnsToward
   expect_safe(r);
 }
 
+// The active OSC's thruster fails in the transfer: at its first refused maneuver the host
+// switches roles and sends the DSC back to standby, which it flies.
+TEST_F(FaultScenario, ThrusterFailureSwitchesRolesAndReturnsTowardsStandby) {
+  const FaultRun r = run("thruster_failure");
+  EXPECT_NE(r.events.find("3000,osc,fault,\"thruster failed\""), std::string::npos) << r.events;
+  EXPECT_NE(r.events.find("sim,fdir,\"osc thruster failed: role switch, then transfer to standby\""), std::string::npos);
+  EXPECT_NE(r.events.find("dsc,mode,\"transfer_to_science -> transfer_to_standby\""), std::string::npos);
+  EXPECT_GT(r.summary["delta_v_mps"]["dsc"]["transfer_to_standby"].get<double>(), 0.0);
+  expect_safe(r);
+}
+
+// A 1-ms receiver clock jump of the active OSC: both filters take it into the OSC's clock state
+// at once (each sees it once: as its own receiver's, or the other's) and stay fixed.
+TEST_F(FaultScenario, ReceiverClockJumpIsAbsorbed) {
+  const FaultRun r = run("clock_jump");
+  for (const char* craft : {"dsc", "osc"}) {
+    const auto& nav = r.summary["navigation"][craft];
+    EXPECT_EQ(nav["clock_jumps"].get<int>(), 1) << craft;
+    EXPECT_GE(nav["fix_rate"].get<double>(), 0.995) << craft;
+    EXPECT_EQ(nav["wrong_fix_epochs"].get<int>(), 0) << craft;
+    EXPECT_LT(nav["outside_slews"]["relative_antenna_worst_m"].get<double>(), 0.01) << craft;
+  }
+  EXPECT_EQ(r.events.find("fdir"), std::string::npos);
+  expect_safe(r);
+}
+
 }  // namespace
 }  // namespace visors::sim
