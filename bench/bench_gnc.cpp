@@ -92,4 +92,34 @@ void BM_RecordGroundCommand(benchmark::State& state) {
 }
 BENCHMARK(BM_RecordGroundCommand);
 
+// The largest records: a GPS message of 12 channels with a broadcast record (816 bytes) and a
+// crosslink with its navigation part (480 bytes).
+void BM_RecordGps(benchmark::State& state) {
+  GpsMessage m;
+  m.t = m.epoch.t = kT0;
+  m.epoch.channel_count = visors::gnss::kMaxGpsChannels;
+  for (int k = 0; k < m.epoch.channel_count; ++k) {
+    auto& c = m.epoch.channels[static_cast<std::size_t>(k)];
+    c.prn = k + 1;
+    c.pseudorange_m = 2.1e7 + 1e5 * k;
+    c.carrier_phase_cycles = 1.1e8 + 1e3 * k;
+  }
+  m.has_ephemeris = true;
+  m.ephemeris.prn = 7;
+  m.ephemeris.sqrt_a = 5153.6;
+  codec_round_trip(state, m);
+}
+BENCHMARK(BM_RecordGps);
+
+void BM_RecordCrosslink(benchmark::State& state) {
+  CrosslinkMessage m;
+  m.t = kT0;
+  m.navigation.has_epoch = true;
+  m.navigation.epoch.t = kT0;
+  m.navigation.epoch.count = visors::gnss::kMaxGpsChannels;
+  for (int k = 0; k < m.navigation.epoch.count; ++k) m.navigation.epoch.observations[static_cast<std::size_t>(k)].prn = k + 1;
+  codec_round_trip(state, m);
+}
+BENCHMARK(BM_RecordCrosslink);
+
 }  // namespace

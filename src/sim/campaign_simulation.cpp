@@ -1,5 +1,6 @@
 #include "sim/campaign_simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 #include <type_traits>
@@ -292,7 +293,10 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
     v.command_after.reset();
     v.telemetry.reset();
     const Mode before = v.out.mode;
-    const gnc::OutputRecords& out = v.gnc->step(t, records.views());
+    const auto views = records.views();
+    const auto start = std::chrono::steady_clock::now();
+    const gnc::OutputRecords& out = v.gnc->step(t, views);
+    step_us_[k].push_back(static_cast<float>(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count()));
     read_outputs(v, out);
     if (v.out.mode != before) recorder_->event(ts_, v.name, "mode", fmt::format("{} -> {}", to_string(before), to_string(v.out.mode)));
   }
@@ -724,6 +728,16 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
   }
   summary["planning_failures"] = tm_dsc.planning_failures + tm_osc.planning_failures;
   summary["navigation_mode"] = s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal";
+  for (std::size_t k = 0; k < vehicles_.size(); ++k) {
+    // Wall time of each flight-component step through its binary interface (decoding, the step,
+    // encoding) [us]: the flight rule's budget is a median <= 0.3 ms and a 99.9th percentile <= 5 ms.
+    std::vector<float> sorted = step_us_[k];
+    std::sort(sorted.begin(), sorted.end());
+    const auto at = [&sorted](double q) {
+      return sorted.empty() ? 0.0 : static_cast<double>(sorted[static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1))]);
+    };
+    summary["flight_step_us"][std::string(vehicles_[k].name)] = {{"median", at(0.5)}, {"p99_9", at(0.999)}, {"max", at(1.0)}};
+  }
   if (gps_) summary["navigation"] = navigation_summary();
   return summary;
 }

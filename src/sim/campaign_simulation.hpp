@@ -130,6 +130,7 @@ class CampaignSimulation {
   // Fault windows ([fault]): the spacecraft each concerns (index, -1 before the window opens).
   int gps_outage_victim_ = -1, safe_mode_victim_ = -1, thruster_victim_ = -1;
   std::optional<RandomStream> garbage_rng_;
+  std::array<std::vector<float>, 2> step_us_;  // wall time of each component step [us]
 };
 
 /// Runs `scenario`, writing the run directory `out_dir`. `progress` (optional) is called about

@@ -39,6 +39,22 @@ TEST(Crc32c, Rfc3720Incrementing) {
   EXPECT_EQ(crc32c(v), 0x46DD794Eu);
 }
 
+// The table-driven CRC (eight bytes a step) against the definition bit by bit (reflected
+// polynomial 0x82F63B78, initial and final 0xFFFFFFFF) for every length up to 100, random bytes.
+TEST(Crc32c, EqualsTheBitwiseDefinitionForEveryLength) {
+  std::mt19937_64 rng(3720);
+  for (std::size_t length = 0; length <= 100; ++length) {
+    std::vector<std::uint8_t> data(length);
+    for (auto& b : data) b = static_cast<std::uint8_t>(rng());
+    std::uint32_t crc = 0xFFFFFFFFu;
+    for (const std::uint8_t b : data) {
+      crc ^= b;
+      for (int bit = 0; bit < 8; ++bit) crc = (crc & 1u) != 0 ? (crc >> 1) ^ 0x82F63B78u : crc >> 1;
+    }
+    EXPECT_EQ(crc32c(data), crc ^ 0xFFFFFFFFu) << "length " << length;
+  }
+}
+
 core::GpsTime t0() { return core::GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kGps).value(); }
 
 TimeAtTone tone() { return {t0() + 1.5, Eigen::Quaterniond(0.5, -0.5, 0.5, 0.5)}; }
