@@ -223,9 +223,51 @@ std::string mode_figure(const RunData& run) {
               "Mode of the active spacecraft versus time (one coloured band per stretch in a mode).");
 }
 
+std::string navigation_figure(const RunData& run) {
+  if (run.navigation_osc.t_s.empty() && run.navigation_dsc.t_s.empty()) return "";
+  const auto scaled = [](const std::vector<double>& v, double k) {
+    std::vector<double> out(v.size());
+    std::transform(v.begin(), v.end(), out.begin(), [k](double x) { return k * x; });
+    return out;
+  };
+  const Style r_style{"#1b2a49", 1.0, false}, t_style{"#e07b39", 1.0, false}, n_style{"#2e8b57", 1.0, false};
+  Figure figure("fig-navigation", kWidth, 230.0, 2);
+  for (const auto& [name, nav] : {std::pair{"OSC", &run.navigation_osc}, std::pair{"DSC", &run.navigation_dsc}}) {
+    const std::vector<double> t = hours(nav->t_s);
+    Plot& position = figure.add(Plot(fmt::format("{} filter: relative antenna position error", name), "time [h]", "[mm]"));
+    position.line("R", t, scaled(nav->antenna_r, 1e3), r_style)
+        .line("T", t, scaled(nav->antenna_t, 1e3), t_style)
+        .line("N", t, scaled(nav->antenna_n, 1e3), n_style);
+    add_time_marks(position, run);
+    Plot& velocity = figure.add(Plot(fmt::format("{} filter: relative velocity error", name), "time [h]", "[mm/s]"));
+    velocity.line("R", t, scaled(nav->v_r, 1e3), r_style)
+        .line("T", t, scaled(nav->v_t, 1e3), t_style)
+        .line("N", t, scaled(nav->v_n, 1e3), n_style);
+    add_time_marks(velocity, run);
+  }
+  const NavigationSeries& osc = run.navigation_osc;
+  const std::vector<double> t = hours(osc.t_s);
+  Plot& empirical = figure.add(Plot("OSC filter: empirical accelerations", "time [h]", "[\u03bcm/s\u00b2]"));
+  empirical.line("DSC R", t, scaled(osc.emp_dsc_r, 1e6), Style{"#1b2a49", 0.8, true})
+      .line("DSC T", t, scaled(osc.emp_dsc_t, 1e6), Style{"#e07b39", 0.8, true})
+      .line("OSC R", t, scaled(osc.emp_osc_r, 1e6), r_style)
+      .line("OSC T", t, scaled(osc.emp_osc_t, 1e6), t_style);
+  add_time_marks(empirical, run);
+  Plot& fixed = figure.add(Plot("integer ambiguity resolution", "time [h]", "epochs fixed [%]"));
+  fixed.step("OSC filter", t, scaled(osc.fixed_fraction, 100.0), r_style)
+      .step("DSC filter", hours(run.navigation_dsc.t_s), scaled(run.navigation_dsc.fixed_fraction, 100.0), t_style);
+  add_time_marks(fixed, run);
+  return wrap("fig-navigation", figure.svg("on-board navigation errors, empirical accelerations and fix status"),
+              "On-board carrier-phase GPS navigation against the truth, every output step: the relative position of "
+              "the GPS antennas (the centres of mass's knowledge error removed) and the relative velocity, each "
+              "filter in the chief's RTN axes; the empirical accelerations the OSC's filter estimates; the "
+              "fraction of the processed epochs with a fixed integer solution since the previous sample. "
+              "Vertical lines: observation starts and mode changes.");
+}
+
 std::string all_figures(const RunData& run) {
   return roe_figure(run) + ei_vector_figure(run) + separation_figure(run) + trajectory_figure(run) +
-         alignment_figure(run) + delta_v_figure(run) + mode_figure(run);
+         alignment_figure(run) + navigation_figure(run) + delta_v_figure(run) + mode_figure(run);
 }
 
 }  // namespace visors::report

@@ -8,7 +8,8 @@
 
 namespace visors::report {
 
-/// The ids of the figures, in the order they appear.
+/// The ids of the figures every run has, in the order they appear (a run with on-board navigation
+/// also has "fig-navigation", after "fig-alignment").
 inline constexpr const char* kFigureIds[] = {"fig-roe-mean-osc", "fig-ei-vectors", "fig-separation",
                                              "fig-trajectory-rtn", "fig-alignment", "fig-delta-v",
                                              "fig-modes"};
@@ -20,6 +21,10 @@ std::string trajectory_figure(const RunData& run);
 std::string alignment_figure(const RunData& run);
 std::string delta_v_figure(const RunData& run);
 std::string mode_figure(const RunData& run);
+/// The mission paper's navigation figures (on-board navigation runs; empty otherwise): each
+/// filter's relative antenna position and velocity errors in RTN, the empirical accelerations
+/// it estimates, and the fraction of its epochs fixed, with the observations marked.
+std::string navigation_figure(const RunData& run);
 
 /// All seven, in order.
 std::string all_figures(const RunData& run);

@@ -1,5 +1,6 @@
 #include "report/run_data.hpp"
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <utility>
@@ -127,6 +128,40 @@ core::Result<nlohmann::json> load_summary(const std::filesystem::path& path) {
   return summary;
 }
 
+core::Result<bool> load_navigation(const std::filesystem::path& path, NavigationSeries& dsc, NavigationSeries& osc) {
+  if (absent_or_empty(path)) return true;
+  auto read = read_table(path, kNavigationColumns);
+  if (!read) return read.error();
+  const CsvTable& t = read.value();
+  const std::size_t craft = *t.column("spacecraft");
+  const std::array<std::pair<std::string_view, std::vector<double> NavigationSeries::*>, 14> columns{{
+      {"t_s", &NavigationSeries::t_s},
+      {"fixed_fraction", &NavigationSeries::fixed_fraction},
+      {"antenna_r_m", &NavigationSeries::antenna_r},
+      {"antenna_t_m", &NavigationSeries::antenna_t},
+      {"antenna_n_m", &NavigationSeries::antenna_n},
+      {"rel_vr_mps", &NavigationSeries::v_r},
+      {"rel_vt_mps", &NavigationSeries::v_t},
+      {"rel_vn_mps", &NavigationSeries::v_n},
+      {"emp_dsc_r_mps2", &NavigationSeries::emp_dsc_r},
+      {"emp_dsc_t_mps2", &NavigationSeries::emp_dsc_t},
+      {"emp_dsc_n_mps2", &NavigationSeries::emp_dsc_n},
+      {"emp_osc_r_mps2", &NavigationSeries::emp_osc_r},
+      {"emp_osc_t_mps2", &NavigationSeries::emp_osc_t},
+      {"emp_osc_n_mps2", &NavigationSeries::emp_osc_n},
+  }};
+  for (const auto& [name, member] : columns) {
+    auto values = t.numbers(name);
+    if (!values) return values.error();
+    for (std::size_t r = 0; r < t.row_count(); ++r) {
+      const std::string& who = t.cell(r, craft);
+      if (who != "dsc" && who != "osc") return t.cell_error(r, "spacecraft", "must be dsc or osc");
+      ((who == "dsc" ? dsc : osc).*member).push_back(values.value()[r]);
+    }
+  }
+  return true;
+}
+
 core::Result<RunData> load_run(const std::filesystem::path& dir) {
   RunData run;
   run.dir = dir;
@@ -142,6 +177,7 @@ core::Result<RunData> load_run(const std::filesystem::path& dir) {
   auto events = load_events(dir / kEventsFile);
   if (!events) return events.error();
   run.events = std::move(events).value();
+  if (auto ok = load_navigation(dir / kNavigationFile, run.navigation_dsc, run.navigation_osc); !ok) return ok.error();
   return run;
 }
 

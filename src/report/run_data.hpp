@@ -46,9 +46,18 @@ struct Event {
   std::string detail;
 };
 
+/// navigation.csv (on-board navigation runs) for one spacecraft's filter, by column.
+struct NavigationSeries {
+  std::vector<double> t_s, fixed_fraction;
+  std::vector<double> antenna_r, antenna_t, antenna_n;  // relative antenna position error [m]
+  std::vector<double> v_r, v_t, v_n;                    // relative velocity error [m/s]
+  std::vector<double> emp_dsc_r, emp_dsc_t, emp_dsc_n, emp_osc_r, emp_osc_t, emp_osc_n;  // [m/s^2]
+};
+
 struct RunData {
   std::filesystem::path dir;
   Timeseries timeseries;
+  NavigationSeries navigation_dsc, navigation_osc;  // empty without navigation.csv
   std::vector<Observation> observations;
   std::vector<Event> events;
   nlohmann::json summary;  // an object
@@ -61,5 +70,7 @@ core::Result<Timeseries> load_timeseries(const std::filesystem::path& path);
 core::Result<std::vector<Observation>> load_observations(const std::filesystem::path& path);
 core::Result<std::vector<Event>> load_events(const std::filesystem::path& path);
 core::Result<nlohmann::json> load_summary(const std::filesystem::path& path);
+/// navigation.csv split by spacecraft (both empty when the file is absent).
+core::Result<bool> load_navigation(const std::filesystem::path& path, NavigationSeries& dsc, NavigationSeries& osc);
 
 }  // namespace visors::report

@@ -1,6 +1,7 @@
 // render_report / write_report on a synthetic run directory: every figure and table, escaping,
 // optional files, errors that name the file, the size of a long run, and `visors report`.
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -146,3 +147,48 @@ TEST(ReportChecks, DrawsDataNeedsDistinctPlottedPoints) {
   EXPECT_TRUE(visors::test::draws_data("<svg><path class=\"series\" d=\"M1.0 2.0L3.0 4.0L5.0 1.0\" fill=\"none\"/></svg>"));
   EXPECT_TRUE(visors::test::draws_data("<svg><polyline points=\"1,2 3,4 5,6\"/></svg>"));
 }
+
+namespace visors::report {
+namespace {
+
+// A navigation.csv beside the synthetic run (issue 16): the navigation figure is drawn from it,
+// each of its panels with data; without the file there is none.
+TEST(Report, NavigationFigureFromNavigationCsv) {
+  const test::SyntheticRun run;
+  EXPECT_EQ(rendered(run).find("fig-navigation"), std::string::npos);
+  {
+    std::ofstream csv(run.dir() / kNavigationFile);
+    for (std::size_t i = 0; i < kNavigationColumns.size(); ++i) csv << (i ? "," : "") << kNavigationColumns[i];
+    csv << "\n";
+    for (int k = 0; k < 50; ++k) {
+      for (const char* craft : {"dsc", "osc"}) {
+        csv << 10 * k << "," << craft << ",1," << (k % 5 == 0 ? 0.9 : 1.0);
+        for (int c = 0; c < 18; ++c) csv << "," << 1e-4 * std::sin(0.3 * k + c);
+        csv << ",0,0\n";
+      }
+    }
+  }
+  const std::string html = rendered(run);
+  const std::string svg = test::figure_svg(html, "fig-navigation");
+  ASSERT_FALSE(svg.empty());
+  EXPECT_TRUE(test::draws_data(svg));
+  EXPECT_NE(svg.find("OSC filter: relative antenna position error"), std::string::npos);
+  EXPECT_NE(svg.find("integer ambiguity resolution"), std::string::npos);
+}
+
+TEST(Report, NavigationCsvWithAnUnknownSpacecraftIsNamed) {
+  const test::SyntheticRun run;
+  {
+    std::ofstream csv(run.dir() / kNavigationFile);
+    for (std::size_t i = 0; i < kNavigationColumns.size(); ++i) csv << (i ? "," : "") << kNavigationColumns[i];
+    csv << "\n0,xsc,1,1";
+    for (int c = 0; c < 18; ++c) csv << ",0";
+    csv << ",0,0\n";
+  }
+  const auto html = render_report(run.dir());
+  ASSERT_FALSE(html.ok());
+  EXPECT_NE(html.error().describe().find("spacecraft"), std::string::npos) << html.error().describe();
+}
+
+}  // namespace
+}  // namespace visors::report
