@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/rtn_frame.hpp"
+#include "nav/fix_truth.hpp"
 
 namespace visors::nav_app {
 namespace {
@@ -13,29 +14,13 @@ namespace {
 using nav::Craft;
 using Json = nlohmann::json;
 
-// A full fix is wrong when any of the epoch's double differences of the fixed SDCP ambiguities
-// differs from the truth's by more than half a cycle.
+// A full fix against the truth's single differences of this epoch (nav/fix_truth.hpp).
 bool wrong_fix(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
                const std::map<int, std::pair<double, double>>& truth) {
-  const auto slots = filter.sdcp_slots();
-  const auto state_of = [&slots](int prn) {
-    for (int i = 0; i < slots.count; ++i) {
-      if (slots.prn[static_cast<std::size_t>(i)] == prn) return slots.state[static_cast<std::size_t>(i)];
-    }
-    return -1;
-  };
-  const auto true_sd = [&truth](int prn) {
+  return nav::wrong_fix(filter, r, [&truth](int prn) {
     const auto it = truth.find(prn);
     return it == truth.end() ? NAN : it->second.second - it->second.first;
-  };
-  const int reference = r.dd_prns[0];
-  for (int j = 1; j <= r.double_differences; ++j) {
-    const int prn = r.dd_prns[static_cast<std::size_t>(j)];
-    const double estimated = filter.x_fixed()(state_of(prn)) - filter.x_fixed()(state_of(reference));
-    const double expected = true_sd(prn) - true_sd(reference);
-    if (std::isfinite(expected) && std::abs(estimated - expected) > 0.5) return true;
-  }
-  return false;
+  });
 }
 
 // The covariance [m^2, GCRF] of the antennas' relative position, r_osc + C_osc p_osc - r_dsc -

@@ -161,7 +161,7 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
       sim.scenario_.navigation_mode = NavigationMode::kIdeal;
       recorder.event(0.0, "sim", "warning",
                      fmt::format("gnss.nav_file '{}' not found in the data search path: no GPS constellation, so "
-                                 "[navigation] mode = \"cdgps\" falls back to ideal navigation (its [navigation] errors)",
+                                 "navigation mode cdgps falls back to ideal navigation (the [navigation] errors)",
                                  scenario.gnss.nav_file));
     }
   }

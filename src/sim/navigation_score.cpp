@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/rtn_frame.hpp"
+#include "nav/fix_truth.hpp"
 
 namespace visors::sim {
 
@@ -52,24 +53,7 @@ bool NavigationScore::wrong_fix(const gnc::OnboardNavigation& navigation, core::
     };
     return find(*osc) - find(*dsc);
   };
-  const nav::CdgpsFilter& filter = navigation.filter();
-  const auto slots = filter.sdcp_slots();
-  const auto state_of = [&slots](int prn) {
-    for (int i = 0; i < slots.count; ++i) {
-      if (slots.prn[static_cast<std::size_t>(i)] == prn) return slots.state[static_cast<std::size_t>(i)];
-    }
-    return -1;
-  };
-  const nav::CdgpsEpochReport& r = navigation.last_report();
-  const int reference = r.dd_prns[0];
-  for (int j = 1; j <= r.double_differences; ++j) {
-    const int prn = r.dd_prns[static_cast<std::size_t>(j)];
-    if (state_of(prn) < 0 || state_of(reference) < 0) continue;
-    const double estimated = filter.x_fixed()(state_of(prn)) - filter.x_fixed()(state_of(reference));
-    const double expected = true_sd(prn) - true_sd(reference);
-    if (std::isfinite(expected) && std::abs(estimated - expected) > 0.5) return true;
-  }
-  return false;
+  return nav::wrong_fix(navigation.filter(), navigation.last_report(), true_sd);
 }
 
 // The processed epochs since the last step: counted, and the last one's fix scored.
