@@ -120,7 +120,7 @@ void OnboardNavigation::add_own_impulse(const ExecutedImpulse& impulse) {
 
 void OnboardNavigation::queue_range(const LaserRange& range) {
   if (range_count_ == kRanges) {
-    for (int k = 1; k < kRanges; ++k) ranges_[static_cast<std::size_t>(k - 1)] = ranges_[static_cast<std::size_t>(k)];
+    std::move(ranges_.begin() + 1, ranges_.end(), ranges_.begin());  // the oldest goes
     --range_count_;
   }
   ranges_[static_cast<std::size_t>(range_count_++)] = range;
@@ -185,11 +185,9 @@ void OnboardNavigation::cold_start(const BufferedEpoch& own, const BufferedEpoch
   filter_.initialise(start->t, start->dsc_gcrf, start->osc_gcrf, start->dsc_clock_m, start->osc_clock_m);
   last_update_ = start->t;
   // Impulses before the start are in the measured states already.
-  int kept = 0;
-  for (int k = 0; k < impulse_count_; ++k) {
-    if (impulses_[static_cast<std::size_t>(k)].t >= start->t) impulses_[static_cast<std::size_t>(kept++)] = impulses_[static_cast<std::size_t>(k)];
-  }
-  impulse_count_ = kept;
+  const auto first = impulses_.begin();
+  impulse_count_ = static_cast<int>(
+      std::remove_if(first, first + impulse_count_, [&](const PendingImpulse& i) { return i.t < start->t; }) - first);
 }
 
 void OnboardNavigation::apply_impulses_before(core::GpsTime t) {
@@ -205,7 +203,7 @@ void OnboardNavigation::apply_impulses_before(core::GpsTime t) {
     }
     if (filter_.apply_impulse(i.craft, i.dv_gcrf_mps, std::max(0.0, late_s))) ++counters_.impulses_applied;
   }
-  for (int k = done; k < impulse_count_; ++k) impulses_[static_cast<std::size_t>(k - done)] = impulses_[static_cast<std::size_t>(k)];
+  std::move(impulses_.begin() + done, impulses_.begin() + impulse_count_, impulses_.begin());
   impulse_count_ -= done;
 }
 
@@ -223,11 +221,8 @@ void OnboardNavigation::fuse_range(core::GpsTime t, const Eigen::Matrix3d& dsc_b
     ++(status == nav::ScalarUpdateStatus::kAccepted ? counters_.laser_used : counters_.laser_rejected);
   }
   // Ranges of this epoch and before are done with.
-  int kept = 0;
-  for (int k = 0; k < range_count_; ++k) {
-    if (ranges_[static_cast<std::size_t>(k)].t > t) ranges_[static_cast<std::size_t>(kept++)] = ranges_[static_cast<std::size_t>(k)];
-  }
-  range_count_ = kept;
+  const auto first = ranges_.begin();
+  range_count_ = static_cast<int>(std::remove_if(first, first + range_count_, [t](const LaserRange& r) { return r.t <= t; }) - first);
 }
 
 void OnboardNavigation::process(const BufferedEpoch& own, const BufferedEpoch* peer) {
