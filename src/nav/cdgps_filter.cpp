@@ -551,7 +551,8 @@ void CdgpsFilter::Impl::update_sd_code(const CdgpsSettings& s, CdgpsEpochReport&
     const Scalar& m = code_scalars[static_cast<std::size_t>(i)];
     const auto row = m.p.h.head<n>();
     const double variance = m.variance_scale * s.sd_code_sigma_m * s.sd_code_sigma_m;
-    const double spread = std::sqrt(row * P.topLeftCorner<n, n>() * row.transpose() + variance);
+    const double spread =
+        std::sqrt(row * P.topLeftCorner<n, n>().selfadjointView<Eigen::Lower>() * row.transpose() + variance);
     if (std::abs(values[static_cast<std::size_t>(i)] - median) > s.gate_sigmas * spread) {
       ++report.sd_code_rejected;
       continue;
@@ -563,7 +564,7 @@ void CdgpsFilter::Impl::update_sd_code(const CdgpsSettings& s, CdgpsEpochReport&
   }
   if (used == 0) return;
   const double count = used;
-  const auto r = scalar_update(x, P, h / count, innovation_sum / count, variance_sum / (count * count), s.gate_sigmas, workspace);
+  const auto r = scalar_update_lower(x, P, h / count, innovation_sum / count, variance_sum / (count * count), s.gate_sigmas, workspace);
   if (r.status != ScalarUpdateStatus::kAccepted) {
     report.sd_code_rejected += used;
     return;
@@ -574,7 +575,7 @@ void CdgpsFilter::Impl::update_sd_code(const CdgpsSettings& s, CdgpsEpochReport&
 }
 
 // Sequential scalar updates, GRAPHIC, SD code, then SDCP, each in consensus order (file comment
-// of cdgps_filter.hpp).
+// of cdgps_filter.hpp), on the lower triangle of P, mirrored once at the end.
 void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report) {
   const auto account = [&report](const ScalarUpdateResult& r) {
     report.nis_sum += r.normalised_innovation_squared;
@@ -582,7 +583,7 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
   };
   for (int i = 0; i < graphic_count; ++i) {
     const Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
-    const auto r = scalar_update(x, P, m.p.h, innovation(m), m.variance_scale * s.graphic_sigma_m * s.graphic_sigma_m,
+    const auto r = scalar_update_lower(x, P, m.p.h, innovation(m), m.variance_scale * s.graphic_sigma_m * s.graphic_sigma_m,
                                  s.gate_sigmas, workspace);
     if (r.status == ScalarUpdateStatus::kAccepted) {
       ++report.graphic_used;
@@ -597,14 +598,14 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
     Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
     const double variance = m.variance_scale * s.sdcp_sigma_m * s.sdcp_sigma_m;
     if (m.reinitialise) lock[static_cast<std::size_t>(m.slot)] = 0;
-    auto r = scalar_update(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
+    auto r = scalar_update_lower(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
     if (r.status == ScalarUpdateStatus::kRejected) {  // a slip the indicator missed
       ++report.sdcp_rejected;
       ++report.detected_slips;
       ++report.new_ambiguities;
       (void)sdcp.reinitialise(m.slot, m.from_code, std::pow(s.sdcp_ambiguity_sigma_cycles, 2), x, P);
       lock[static_cast<std::size_t>(m.slot)] = 0;
-      r = scalar_update(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
+      r = scalar_update_lower(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
     }
     if (r.status == ScalarUpdateStatus::kAccepted) {
       ++report.sdcp_used;
@@ -615,6 +616,7 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
       m.slot = -1;  // not used for the integer resolution of this epoch
     }
   }
+  mirror_lower(P);  // the updates above kept the lower triangle only (scalar_update.hpp)
 }
 
 // Integer ambiguity resolution on the DDs of this epoch's SDCP slots (file comment).

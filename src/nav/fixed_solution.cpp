@@ -1,7 +1,9 @@
 #include "nav/fixed_solution.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <Eigen/Cholesky>
 
@@ -71,6 +73,18 @@ bool FixedSolutionUpdate::factor(Index k) {
   return s.diagonal().cwiseAbs2().minCoeff() > kRelativePivot * largest;
 }
 
+// The columns [first, first + width) of C holding all its non-zero entries (width 0 for C = 0).
+// An ambiguity fix touches only the ambiguity states: C P and C x need only those rows of P and x.
+std::pair<Index, Index> FixedSolutionUpdate::column_span(const Eigen::Ref<const Eigen::MatrixXd>& C) {
+  Index first = C.cols(), last = -1;
+  for (Index j = 0; j < C.cols(); ++j) {
+    if ((C.col(j).array() == 0.0).all()) continue;
+    first = std::min(first, j);
+    last = j;
+  }
+  return last < 0 ? std::pair<Index, Index>{0, 0} : std::pair<Index, Index>{first, last - first + 1};
+}
+
 Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eigen::MatrixXd> P,
                                   const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
                                   double variance) {
@@ -78,29 +92,25 @@ Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eige
   const Index n = x.size();
   const Index k = C.rows();
   if (k == 0) return Status::kOk;
+  const auto [first, width] = column_span(C);
+  const auto c = C.middleCols(first, width);
   auto W = W_.topLeftCorner(k, n);
   auto v = v_.head(k);
-  W.noalias() = C * P;  // = (P C')' for the symmetric P
-  S_.topLeftCorner(k, k).noalias() = W * C.transpose();
+  W.noalias() = c * P.middleRows(first, width);  // = C P = (P C')' for the symmetric P
+  S_.topLeftCorner(k, k).noalias() = W.middleCols(first, width) * c.transpose();
   S_.topLeftCorner(k, k).diagonal().array() += variance;
   v = z;
-  v.noalias() -= C * x;
+  v.noalias() -= c * x.segment(first, width);
   if (!factor(k)) return Status::kNotPositiveDefinite;
   const auto L = S_.topLeftCorner(k, k).triangularView<Eigen::Lower>();
   L.solveInPlace(W);  // W = L^-1 C P
   L.solveInPlace(v);  // v = L^-1 (z - C x)
   if (!W.allFinite() || !v.allFinite()) return Status::kNotFinite;  // overflow of a finite input
   x.noalias() += W.transpose() * v;
-  P.noalias() -= W.transpose() * W;
-  // Symmetrisation: P - W' W inherits any round-off asymmetry of the input P (a filter's time
-  // update leaves some), and a filter wants P+ exactly symmetric.
-  for (Index j = 0; j < n; ++j) {
-    for (Index i = j + 1; i < n; ++i) {
-      const double mean = 0.5 * (P(i, j) + P(j, i));
-      P(i, j) = mean;
-      P(j, i) = mean;
-    }
-  }
+  // P - W' W on the lower triangle (half the products of the full one), mirrored: P+ exactly
+  // symmetric whatever round-off asymmetry the input P had.
+  P.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose(), -1.0);
+  P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
   return Status::kOk;
 }
 

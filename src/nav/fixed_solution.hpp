@@ -11,8 +11,9 @@
 // Computed with the Cholesky factor S = L L': W = L^-1 (P C')' (k x n_x), v = L^-1 (z - C x),
 //   x+ = x + W' v,  P+ = P - W' W,
 // since K = P C' L^-T L^-1. P - W' W is the symmetric form of P - K C P (one triangular solve, the
-// subtracted term symmetric positive semidefinite by construction); the result is symmetrised
-// against round-off. This is the "simple" form the digest's conditional update uses, not the
+// subtracted term symmetric positive semidefinite by construction), computed on the lower
+// triangle and mirrored: P+ is exactly symmetric. Only the columns of C with a non-zero entry
+// enter C P and C x (a fix touches the ambiguity states only: 24 of the filter's 74). This is the "simple" form the digest's conditional update uses, not the
 // Joseph form: with s = 0 the Joseph form (I - K C) P (I - K C)' equals it only when K is the
 // optimal gain, and it costs two n_x^3 products per update; the symmetric downdate keeps P+
 // symmetric, and its positive semidefiniteness is tested (tests/nav/test_fixed_solution.cpp).
@@ -27,6 +28,7 @@
 // create(); apply() and fixed_constraints() allocate nothing.
 
 #include <string_view>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -68,6 +70,7 @@ class FixedSolutionUpdate {
                const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
                double variance) const;
   bool factor(Eigen::Index k);
+  static std::pair<Eigen::Index, Eigen::Index> column_span(const Eigen::Ref<const Eigen::MatrixXd>& C);
 
   Eigen::Index max_states_ = 0;
   Eigen::Index max_constraints_ = 0;

@@ -8,28 +8,28 @@ namespace {
 
 // The Joseph update given u = P h': with w = u - (h u) k, the header's
 //   P+ = (P - k u') - (w - r k) k' = P - k u' - v k',  v = u - (h u + r) k,
-// i.e. P+ = P - (k u' + u k' - c k k'), c = h u + r: a symmetric rank-two change. P is taken as
-// symmetric (every producer keeps it exactly so): its lower triangle is updated column by column
-// (contiguous, so the compiler vectorises it) and mirrored, which keeps P+ exactly symmetric
-// against the round-off (the next update reads P h' as (h P)'). Reading both mirror images per
-// element, as before, made the pass strided: 1.4x slower in the filter's epoch.
-void joseph_rank_one(NavMatrix& P, const NavRow& h, const NavVector& k, double r, const NavVector& u) {
+// i.e. P+ = P - (k u' + u k' - c k k'), c = h u + r: a symmetric rank-two change, applied to the
+// lower triangle only, column by column (contiguous, so the compiler vectorises it). The strict
+// upper triangle is left as it was: see mirror_lower.
+void joseph_rank_one_lower(NavMatrix& P, const NavRow& h, const NavVector& k, double r, const NavVector& u) {
   const double c = (h * u).value() + r;
   for (int j = 0; j < kNavStates; ++j) {
     const int n = kNavStates - j;
     const double a = u(j) - c * k(j);
     P.col(j).tail(n) -= k.tail(n) * a + u.tail(n) * k(j);
   }
-  P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
 }
 
 // u = P h' over the non-zero entries of h only: a GPS scalar touches ~20 of the 74 states
 // (positions, clocks, phase centres, one or two ambiguities), so the product is a sum of ~20
-// columns of P instead of the whole matrix-vector product.
-void sparse_product(const NavMatrix& P, const NavRow& h, NavVector& u) {
+// columns of P instead of the whole matrix-vector product. Reads the lower triangle only: column
+// i of the symmetric P is P(i:, i) below the diagonal and row P(i, :i) above it.
+void sparse_product_lower(const NavMatrix& P, const NavRow& h, NavVector& u) {
   u.setZero();
   for (int i = 0; i < kNavStates; ++i) {
-    if (h(i) != 0.0) u.noalias() += P.col(i) * h(i);
+    if (h(i) == 0.0) continue;
+    u.tail(kNavStates - i).noalias() += P.col(i).tail(kNavStates - i) * h(i);
+    u.head(i).noalias() += P.row(i).head(i).transpose() * h(i);
   }
 }
 
@@ -53,12 +53,13 @@ bool joseph_update(NavMatrix& P, const NavRow& h, const NavVector& gain, double 
   workspace.noalias() = P * h.transpose();
   // A NaN or infinity anywhere in P reaches u: Inf * 0 and NaN * 0 are NaN.
   if (!workspace.allFinite()) return false;
-  joseph_rank_one(P, h, gain, variance, workspace);
+  joseph_rank_one_lower(P, h, gain, variance, workspace);
+  mirror_lower(P);
   return true;
 }
 
-ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
-                                 double gate_sigmas, ScalarUpdateWorkspace& workspace) {
+ScalarUpdateResult scalar_update_lower(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
+                                       double gate_sigmas, ScalarUpdateWorkspace& workspace) {
   ScalarUpdateResult result;
   result.innovation = innovation;
   if (!finite_scalars(innovation, variance, gate_sigmas) || !(variance > 0.0) || !(gate_sigmas > 0.0) ||
@@ -66,7 +67,7 @@ ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, do
     return result;
   }
   NavVector& u = workspace.ph;
-  sparse_product(P, h, u);
+  sparse_product_lower(P, h, u);
   if (!u.allFinite()) return result;  // a non-finite P (see joseph_update)
   const double s = (h * u).value() + variance;
   if (!std::isfinite(s) || !(s > 0.0)) return result;  // P not positive semidefinite along h
@@ -81,9 +82,18 @@ ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, do
   k = u / s;
   if (!k.allFinite()) return result;  // overflow of a finite input (s subnormal)
   x.noalias() += k * innovation;
-  joseph_rank_one(P, h, k, variance, u);
+  joseph_rank_one_lower(P, h, k, variance, u);
   result.status = ScalarUpdateStatus::kAccepted;
   return result;
 }
+
+ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
+                                 double gate_sigmas, ScalarUpdateWorkspace& workspace) {
+  const ScalarUpdateResult result = scalar_update_lower(x, P, h, innovation, variance, gate_sigmas, workspace);
+  if (result.status == ScalarUpdateStatus::kAccepted) mirror_lower(P);
+  return result;
+}
+
+void mirror_lower(NavMatrix& P) { P.triangularView<Eigen::StrictlyUpper>() = P.transpose(); }
 
 }  // namespace visors::nav

@@ -60,6 +60,16 @@ struct ScalarUpdateWorkspace {
 ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
                                  double gate_sigmas, ScalarUpdateWorkspace& workspace);
 
+/// The same update reading and writing only the lower triangle of P (the strict upper triangle is
+/// left stale), for a run of updates: mirror_lower(P) once after the run, before anything reads
+/// the whole matrix. Mirroring after every scalar, as scalar_update does, is a strided pass over
+/// half the matrix per scalar (bench_nav filter epoch: 88 us with it, 80 us without).
+ScalarUpdateResult scalar_update_lower(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
+                                       double gate_sigmas, ScalarUpdateWorkspace& workspace);
+
+/// Copies the lower triangle of P onto its upper one: P exactly symmetric.
+void mirror_lower(NavMatrix& P);
+
 /// The Joseph covariance update alone, for a given gain k (optimal or not):
 /// P <- (I - k h) P (I - k h)' + k r k', by the rank-one updates above, symmetrised. False, with
 /// P untouched, when h, k, r or P h' is not finite or r < 0. workspace: one caller-owned vector.

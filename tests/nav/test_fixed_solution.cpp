@@ -127,6 +127,36 @@ TEST(FixedSolution, ExactUpdateLeavesNoVarianceAlongTheConstraints) {
   EXPECT_LT(max_abs(CPC), 1e-10 * max_abs(p.C * p.prior.P * p.C.transpose()));  // C P+ C' = 0
 }
 
+// Constraints on a middle block of states only, like an ambiguity fix (the filter's C has
+// entries in its 24 SDCP ambiguity columns of 74): the update restricted to C's non-zero columns
+// must still give the whole conditional, including the states C does not touch.
+Problem block_problem(std::uint64_t seed) {
+  Problem p = random_problem(12, 3, seed);
+  p.C.leftCols(4).setZero();
+  p.C.rightCols(3).setZero();
+  return p;
+}
+
+TEST(FixedSolution, BlockConstraintMeanEqualsConstrainedLeastSquares) {
+  const Problem p = block_problem(31);
+  const Gaussian expected = constrained_least_squares(p.prior, p.C, p.z);  // KKT, dense LU
+  EXPECT_LT(max_abs(updated(p, 0.0).x - expected.x), 1e-10 * (1.0 + max_abs(expected.x)));
+}
+
+TEST(FixedSolution, BlockConstraintCovarianceEqualsConstrainedLeastSquares) {
+  const Problem p = block_problem(32);
+  const Gaussian expected = constrained_least_squares(p.prior, p.C, p.z);  // KKT inverse block
+  EXPECT_LT(max_abs(updated(p, 0.0).P - expected.P), 1e-10 * max_abs(p.prior.P));
+}
+
+TEST(FixedSolution, AllZeroConstraintIsNotPositiveDefinite) {
+  Problem p = random_problem(6, 2, 33);
+  p.C.setZero();  // C P C' = 0: nothing to condition on
+  Status status = Status::kOk;
+  updated(p, 0.0, &status);
+  EXPECT_EQ(status, Status::kNotPositiveDefinite);
+}
+
 TEST(FixedSolution, HoldUpdateMeanEqualsInformationForm) {
   const Problem p = random_problem(10, 4, 6);
   const double s = 1e-3;  // RTKLIB VAR_HOLDAMB [cycles^2], digest 6.5 option B

@@ -9,6 +9,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -307,6 +308,61 @@ TEST(ScalarUpdate, SequentialScalarsEqualOneBatchUpdate) {
   }
   EXPECT_LT(relative_difference(f.x, x_batch), 1e-10);
   EXPECT_LT(relative_difference(f.P, P_batch), 1e-10);
+}
+
+// A run of scalar_update_lower with one mirror_lower at the end: the batch update as above, with
+// the strict upper triangle of P poisoned with NaN before the run (so a read of it anywhere, in
+// P h' or the Joseph change, would put NaN into x or the lower triangle).
+struct LowerRun {
+  Filter batch;
+  Filter run;
+};
+
+LowerRun lower_run_against_batch(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  LowerRun out;
+  const Filter prior = random_filter(rng);
+  constexpr int m = 12;
+  MatrixXd H(m, kNavStates);
+  VectorXd r(m), z(m);
+  std::uniform_real_distribution<double> variance(0.1, 1.0);
+  std::normal_distribution<double> gauss;
+  for (int i = 0; i < m; ++i) {
+    H.row(i) = random_row(rng);
+    for (int j = 0; j < kNavStates; ++j) {
+      if (gauss(rng) > 0.5) H(i, j) = 0.0;  // sparse rows, like the GPS scalars', exercise both halves
+    }
+    r(i) = variance(rng);
+    z(i) = (H.row(i) * prior.x).value() + std::sqrt(r(i)) * gauss(rng);
+  }
+  const MatrixXd K = prior.P * H.transpose() * (H * prior.P * H.transpose() + MatrixXd(r.asDiagonal())).inverse();
+  out.batch.x = prior.x + K * (z - H * prior.x);
+  out.batch.P = (MatrixXd::Identity(kNavStates, kNavStates) - K * H) * prior.P;
+  out.run = prior;
+  out.run.P.triangularView<Eigen::StrictlyUpper>().setConstant(std::numeric_limits<double>::quiet_NaN());
+  ScalarUpdateWorkspace ws;
+  for (int i = 0; i < m; ++i) {
+    const NavRow h = H.row(i);
+    (void)scalar_update_lower(out.run.x, out.run.P, h, z(i) - (h * out.run.x).value(), r(i), kWideGate, ws);
+  }
+  mirror_lower(out.run.P);
+  return out;
+}
+
+TEST(ScalarUpdate, LowerTriangleRunGivesTheBatchState) {
+  const LowerRun r = lower_run_against_batch(11);
+  EXPECT_LT(relative_difference(r.run.x, r.batch.x), 1e-10);
+}
+
+TEST(ScalarUpdate, LowerTriangleRunThenMirrorGivesTheBatchCovariance) {
+  const LowerRun r = lower_run_against_batch(11);
+  ASSERT_TRUE(r.run.P.allFinite());
+  EXPECT_LT(relative_difference(r.run.P, r.batch.P), 1e-10);
+}
+
+TEST(ScalarUpdate, MirrorLowerMakesPExactlySymmetric) {
+  const LowerRun r = lower_run_against_batch(12);
+  EXPECT_EQ(r.run.P, r.run.P.transpose());
 }
 
 }  // namespace
