@@ -98,6 +98,11 @@ int main(int argc, char** argv) {
   run->add_option("scenario", run_scenario, "scenario TOML (a path, or relative to VISORS_DATA_PATH and data/)")
       ->capture_default_str();
   run->add_option("--out", run_out, "run directory")->capture_default_str();
+  int run_threads = 2;
+  run->add_option("--threads", run_threads,
+                  "1: step the two flight components one after the other; 2: side by side (same results)")
+      ->check(CLI::Range(1, 2))
+      ->capture_default_str();
 
   std::string gnss_scenario = "scenarios/gnss_sim.toml";
   std::string gnss_out = "out/gnss";
@@ -167,7 +172,7 @@ int main(int argc, char** argv) {
   if (propagate->parsed()) {
     return visors::propagate::run_propagate_command(propagate_scenario, propagate_out);
   }
-  if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out);
+  if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out, run_threads);
   if (baseline->parsed()) return visors::baseline_app::run_baseline_command(baseline_options);
   if (nav->parsed()) return visors::nav_app::run_nav_command(nav_options);
   if (report->parsed()) return visors::report::run_report_command(report_dir);

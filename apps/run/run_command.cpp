@@ -67,12 +67,13 @@ void print_warnings(const std::filesystem::path& dir) {
   }
 }
 
-int run_campaign_command(const std::string& scenario_path, const std::string& out_dir) {
+int run_campaign_command(const std::string& scenario_path, const std::string& out_dir, int threads) {
   const auto scenario = load_scenario(scenario_path, "visors run");
   if (!scenario) return kExitBadInput;
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   auto result = sim::run_campaign(*scenario, out_dir, terminal ? std::function<void(const sim::RunProgress&)>(show_progress)
-                                                               : std::function<void(const sim::RunProgress&)>());
+                                                               : std::function<void(const sim::RunProgress&)>(),
+                                 sim::RunOptions{.parallel_components = threads >= 2});
   if (terminal) fmt::print(stderr, "\n");
   if (!result.ok()) {
     fmt::print(stderr, "visors run: {}\n", result.error().describe());

@@ -17,6 +17,7 @@ std::optional<sim::CampaignScenario> load_scenario(const std::string& scenario_p
 int run_gnss_sim_command(const std::string& scenario_path, const std::string& out_dir);
 
 /// Returns the process exit code: 0 on success, 2 on bad input, 1 when the simulation fails.
-int run_campaign_command(const std::string& scenario_path, const std::string& out_dir);
+/// threads: 2 steps the two flight components side by side (sim::RunOptions), 1 in turn.
+int run_campaign_command(const std::string& scenario_path, const std::string& out_dir, int threads = 2);
 
 }  // namespace visors::run

@@ -17,6 +17,7 @@
 #include "core/files/data_path.hpp"
 #include "core/rtn_frame.hpp"
 #include "sim/formation_initial_state.hpp"
+#include "sim/host_records.hpp"
 
 namespace visors::sim {
 
@@ -64,37 +65,6 @@ std::int64_t step_at(double t_s, double step_s) {
   return t_s >= 0.0 ? static_cast<std::int64_t>(std::llround(t_s / step_s)) : -1;
 }
 
-// The step's input records of one spacecraft as its host writes them: each message encoded with
-// the host's next sequence number of its channel; crosslink records forwarded as received.
-template <class Message>
-constexpr gnc::Channel channel_for() {
-  if constexpr (std::is_same_v<Message, gnc::TimeAtTone>) return gnc::Channel::kTimeAtTone;
-  else if constexpr (std::is_same_v<Message, gnc::NavigationSolution>) return gnc::Channel::kNavigation;
-  else if constexpr (std::is_same_v<Message, gnc::GroundCommand>) return gnc::Channel::kGroundCommand;
-  else if constexpr (std::is_same_v<Message, gnc::PropulsionTelemetry>) return gnc::Channel::kPropulsion;
-  else if constexpr (std::is_same_v<Message, gnc::GpsMessage>) return gnc::Channel::kGps;
-  else return gnc::Channel::kLaserRange;
-}
-
-class HostRecords {
- public:
-  template <class Message>
-  void add(SimulatedSpacecraft& v, const Message& message) {
-    gnc::OutputRecords::Record& r = records_.emplace_back();
-    r.size = gnc::encode(message, v.sequence[static_cast<std::size_t>(channel_for<Message>())]++, r.bytes);
-  }
-  void forward(const gnc::OutputRecords::Record& record) { records_.push_back(record); }
-  std::span<const gnc::RecordView> views() {
-    views_.clear();
-    for (const auto& r : records_) views_.push_back(r.view());
-    return views_;
-  }
-
- private:
-  std::vector<gnc::OutputRecords::Record> records_;
-  std::vector<gnc::RecordView> views_;
-};
-
 // A burst of the garbage fault on every input channel: a record of random bytes behind a valid
 // header (refused: bad checksum), and an intact record of NaN or out-of-range values (admitted,
 // its values refused by validation).
@@ -131,8 +101,8 @@ void add_garbage(SimulatedSpacecraft& v, core::GpsTime t, RandomStream& rng, Hos
 
 }  // namespace
 
-CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder)
-    : scenario_(scenario), recorder_(&recorder) {
+CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder, const RunOptions& options)
+    : scenario_(scenario), recorder_(&recorder), components_(std::make_unique<PairedWorker>(options.parallel_components)) {
   const CampaignScenario& s = scenario_;
   vehicles_[0].id = Spacecraft::kDsc;
   vehicles_[0].name = "dsc";
@@ -147,11 +117,12 @@ CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunReco
   non_gnc_fault_step_ = step_at(s.fault.non_gnc_fault_t_s, s.step_s);
 }
 
-core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenario& scenario, RunRecorder& recorder) {
+core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenario& scenario, RunRecorder& recorder,
+                                                           const RunOptions& options) {
   // Initial states: chief mean elements, deputy from the initial mean ROE.
   const auto initial = initial_formation_state(scenario);
   if (!initial.ok()) return initial.error();
-  CampaignSimulation sim(scenario, recorder);
+  CampaignSimulation sim(scenario, recorder, options);
   if (scenario.navigation_mode == NavigationMode::kCdgps) {
     if (core::files::find_data_file(scenario.gnss.nav_file)) {
       if (auto ok = sim.set_up_gps(); !ok) return ok.error();
@@ -262,8 +233,13 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
   const EpochFrame frame = gps_ ? epoch_frame(*gps_, t, earth_frame_) : EpochFrame{};
   open_fault_windows(t);
   close_fault_windows(t);
+  // 1. Each component's input records (sensors, crosslink, commands): in order, since the
+  //    sensors share the simulator's state (the constellation's caches, the scores, the events).
+  std::array<bool, 2> stepped{};
   for (std::size_t k = 0; k < vehicles_.size(); ++k) {
     SimulatedSpacecraft& v = vehicles_[k];
+    HostRecords& records = host_records_[k];
+    records.clear();
     if (in_window(scenario_.fault.safe_mode, safe_mode_victim_, k)) {
       // Bus safe mode: the component is not stepped; nothing comes out of it.
       v.out.maneuver.reset();
@@ -271,7 +247,7 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
       v.crosslink_out.size = 0;
       continue;
     }
-    HostRecords records;
+    stepped[k] = true;
     records.add(v, gnc::TimeAtTone{t, v.q_body_to_gcrf});
     if (gps_) {
       if (in_window(scenario_.fault.gps_outage, gps_outage_victim_, k)) {
@@ -292,19 +268,27 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
     v.command = v.command_after;
     v.command_after.reset();
     v.telemetry.reset();
-    const Mode before = v.out.mode;
-    const auto views = records.views();
+  }
+  // 2. The two flight components' steps, side by side (each owns all it touches).
+  std::array<const gnc::OutputRecords*, 2> outputs{};
+  const auto step = [&](std::size_t k) {
+    if (!stepped[k]) return;
+    const auto views = host_records_[k].views();
     const auto start = std::chrono::steady_clock::now();
-    const gnc::OutputRecords& out = v.gnc->step(t, views);
+    outputs[k] = &vehicles_[k].gnc->step(t, views);
     step_us_[k].push_back(static_cast<float>(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count()));
-    read_outputs(v, out);
+  };
+  components_->run([&] { step(0); }, [&] { step(1); });
+  // 3. Their outputs, in order.
+  for (std::size_t k = 0; k < vehicles_.size(); ++k) {
+    if (!stepped[k]) continue;
+    SimulatedSpacecraft& v = vehicles_[k];
+    const Mode before = v.out.mode;
+    read_outputs(v, *outputs[k]);
     if (v.out.mode != before) recorder_->event(ts_, v.name, "mode", fmt::format("{} -> {}", to_string(before), to_string(v.out.mode)));
   }
 }
 
-// The host's side of the binary channels: the component's output records decoded into what the
-// host routes (GncOutputs: the discrete outputs are in the telemetry record); the crosslink
-// record kept as bytes, to be forwarded as is.
 void CampaignSimulation::read_outputs(SimulatedSpacecraft& v, const gnc::OutputRecords& out) {
   gnc::GncOutputs decoded;
   gnc::RecordHeader header;
@@ -768,13 +752,13 @@ nlohmann::json CampaignSimulation::navigation_summary() const {
 }
 
 core::Result<RunResult> run_campaign(const CampaignScenario& scenario, const std::filesystem::path& out_dir,
-                                     const std::function<void(const RunProgress&)>& progress) {
+                                     const std::function<void(const RunProgress&)>& progress, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   const auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
   auto opened = RunRecorder::open(out_dir, campaign_to_toml(scenario));
   if (!opened.ok()) return opened.error();
   RunRecorder recorder = std::move(opened).value();
-  auto created = CampaignSimulation::create(scenario, recorder);
+  auto created = CampaignSimulation::create(scenario, recorder, options);
   if (!created.ok()) return created.error();
   CampaignSimulation sim = std::move(created).value();
   for (std::int64_t steps = 0;; ++steps) {

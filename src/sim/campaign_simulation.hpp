@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -28,7 +29,9 @@
 #include "sim/alignment_metrics.hpp"
 #include "sim/campaign_scenario.hpp"
 #include "sim/gps_world.hpp"
+#include "sim/host_records.hpp"
 #include "sim/navigation_score.hpp"
+#include "sim/paired_worker.hpp"
 #include "sim/run_recorder.hpp"
 #include "sim/simulated_spacecraft.hpp"
 
@@ -38,6 +41,14 @@ struct RunProgress {
   double simulated_s = 0.0;
   double total_s = 0.0;  // the current end of the campaign (max_duration_s until it is known)
   double wall_s = 0.0;
+};
+
+/// How a run uses the host (not part of the scenario: the results are the same bit for bit).
+struct RunOptions {
+  /// Step the two flight components on two threads (sim/paired_worker.hpp) when the host has two
+  /// cores or more (`visors run --threads 2`, its default). Off by default here: the test suite
+  /// and a Monte Carlo campaign run one simulation per core instead.
+  bool parallel_components = false;
 };
 
 struct RunResult {
@@ -50,7 +61,8 @@ class CampaignSimulation {
   /// Sets up both spacecraft at the scenario's initial formation (the scenario is copied);
   /// events (data-file fallbacks first) go to `recorder`, which must outlive the simulation.
   /// Errors name the scenario field.
-  static core::Result<CampaignSimulation> create(const CampaignScenario& scenario, RunRecorder& recorder);
+  static core::Result<CampaignSimulation> create(const CampaignScenario& scenario, RunRecorder& recorder,
+                                                 const RunOptions& options = {});
 
   /// Runs the step at the current time and advances the truth to the next one. Returns false,
   /// without doing anything, once the campaign has ended. Errors: a truth state that fails.
@@ -71,7 +83,7 @@ class CampaignSimulation {
     bool done = false;
   };
 
-  CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder);
+  CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder, const RunOptions& options);
   core::Result<bool> set_up_gps();
   [[nodiscard]] nlohmann::json navigation_summary() const;
   SimulatedSpacecraft& active();
@@ -131,12 +143,15 @@ class CampaignSimulation {
   int gps_outage_victim_ = -1, safe_mode_victim_ = -1, thruster_victim_ = -1;
   std::optional<RandomStream> garbage_rng_;
   std::array<std::vector<float>, 2> step_us_;  // wall time of each component step [us]
+  std::array<HostRecords, 2> host_records_;    // this step's input records of each component
+  std::unique_ptr<PairedWorker> components_;   // steps the two components (a pointer: movable)
 };
 
 /// Runs `scenario`, writing the run directory `out_dir`. `progress` (optional) is called about
 /// every simulated minute. Errors: model set-up (named field), output files, a truth state
 /// that fails (re-entry).
 core::Result<RunResult> run_campaign(const CampaignScenario& scenario, const std::filesystem::path& out_dir,
-                                     const std::function<void(const RunProgress&)>& progress = {});
+                                     const std::function<void(const RunProgress&)>& progress = {},
+                                     const RunOptions& options = {});
 
 }  // namespace visors::sim

@@ -240,8 +240,9 @@ TEST_F(ScienceLegWithGps, WritesTheNavigationTimeSeries) {
   EXPECT_GT(std::count(navigation_csv_.begin(), navigation_csv_.end(), '\n'), 1000);
 }
 
-// Same seed, same bits, with the receivers and the filters in the loop.
-TEST(CampaignRunWithGps, SameSeedSameResultsBitForBit) {
+// Same seed, same bits, with the receivers and the filters in the loop, and whether the two flight
+// components step side by side on two threads (run a) or in turn on one (run b).
+TEST(CampaignRunWithGps, SameSeedSameResultsBitForBitOnOneOrTwoThreads) {
   if (!have_gps_constellation()) GTEST_SKIP() << "the GPS navigation file is not in the data search path";
   constexpr const char* kShort = R"(
 [campaign]
@@ -253,10 +254,11 @@ mode = "cdgps"
 )";
   const auto scenario = campaign_from_toml(kShort).value();
   const auto a = run_dir("gps_det_a"), b = run_dir("gps_det_b");
-  ASSERT_TRUE(run_campaign(scenario, a).ok());
-  ASSERT_TRUE(run_campaign(scenario, b).ok());
+  ASSERT_TRUE(run_campaign(scenario, a, {}, visors::sim::RunOptions{.parallel_components = true}).ok());
+  ASSERT_TRUE(run_campaign(scenario, b, {}, visors::sim::RunOptions{.parallel_components = false}).ok());
   const std::string nav = read(a / "navigation.csv");
-  const bool same = nav == read(b / "navigation.csv") && read(a / "timeseries.csv") == read(b / "timeseries.csv");
+  const bool same = nav == read(b / "navigation.csv") && read(a / "timeseries.csv") == read(b / "timeseries.csv") &&
+                    read(a / "events.csv") == read(b / "events.csv");
   std::filesystem::remove_all(a);
   std::filesystem::remove_all(b);
   EXPECT_GT(nav.size(), 1000U);
