@@ -187,6 +187,32 @@ core::Result<bool> read_propulsion(const toml::table& root, CampaignScenario& s)
   return true;
 }
 
+// [geometry]: the truth geometry errors (sim/spacecraft_geometry.hpp), lengths in m, the pointing
+// error in arcsec.
+core::Result<bool> read_geometry(const toml::table& root, CampaignScenario& s) {
+  const toml::table* t = table_at(root, "geometry");
+  if (t == nullptr) return true;
+  const std::string sec = "geometry";
+  if (auto e = check_keys(*t, sec, {"com_variation_sigma_m", "com_knowledge_error_m", "payload_position_sigma_m",
+                                    "payload_pointing_sigma_arcsec"})) {
+    return *e;
+  }
+  GeometrySettings& g = s.geometry;
+  VISORS_TRY(variation, number_at(*t, sec, "com_variation_sigma_m", g.com_sigma_m));
+  VISORS_TRY(knowledge, number_at(*t, sec, "com_knowledge_error_m", g.com_knowledge_error_m));
+  VISORS_TRY(payload, number_at(*t, sec, "payload_position_sigma_m", g.payload_position_sigma_m));
+  VISORS_TRY(pointing, number_at(*t, sec, "payload_pointing_sigma_arcsec", g.payload_pointing_sigma_rad / core::kArcsecToRad));
+  if (auto ok = in_range(variation, 0.0, 1.0, "geometry.com_variation_sigma_m"); !ok) return ok.error();
+  if (auto ok = in_range(knowledge, 0.0, 1.0, "geometry.com_knowledge_error_m"); !ok) return ok.error();
+  if (auto ok = in_range(payload, 0.0, 1.0, "geometry.payload_position_sigma_m"); !ok) return ok.error();
+  if (auto ok = in_range(pointing, 0.0, 3600.0, "geometry.payload_pointing_sigma_arcsec"); !ok) return ok.error();
+  g.com_sigma_m = variation;
+  g.com_knowledge_error_m = knowledge;
+  g.payload_position_sigma_m = payload;
+  g.payload_pointing_sigma_rad = pointing * core::kArcsecToRad;
+  return true;
+}
+
 core::Result<bool> read_spacecraft(const toml::table& root, const std::string& sec, SpacecraftSettings& v) {
   const toml::table* t = table_at(root, sec);
   if (t == nullptr) return true;
@@ -307,7 +333,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (!parsed.ok()) return parsed.error();
   const toml::table& root = parsed.value();
   if (auto e = check_keys(root, "", {"name", "seed", "time", "chief", "formation", "campaign", "navigation", "propulsion",
-                                     "dsc", "osc", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
+                                     "dsc", "osc", "geometry", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
     return *e;
   }
   CampaignScenario s = default_campaign();
@@ -317,7 +343,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   s.name = name;
   s.seed = static_cast<std::uint64_t>(seed);
   for (auto* reader : {&read_time, &read_chief, &read_campaign, &read_navigation, &read_nav_tunables, &read_propulsion,
-                       &read_links_and_faults, &read_gnc}) {
+                       &read_geometry, &read_links_and_faults, &read_gnc}) {
     if (auto ok = reader(root, s); !ok) return ok.error();
   }
   if (auto ok = read_spacecraft(root, "dsc", s.dsc); !ok) return ok.error();
@@ -359,6 +385,9 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      p.magnitude_sigma, deg(p.direction_sigma_rad), p.isp_s, p.isp_sigma_s);
   out += spacecraft("dsc", s.dsc);
   out += spacecraft("osc", s.osc);
+  out += fmt::format("[geometry]\ncom_variation_sigma_m = {:.17g}\ncom_knowledge_error_m = {:.17g}\npayload_position_sigma_m = {:.17g}\npayload_pointing_sigma_arcsec = {:.17g}\n\n",
+                     s.geometry.com_sigma_m, s.geometry.com_knowledge_error_m, s.geometry.payload_position_sigma_m,
+                     s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad);
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
   out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\n\n",
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,

@@ -18,6 +18,7 @@
 #include "gnc/gnc_config.hpp"
 #include "sim/gnss_settings.hpp"
 #include "sim/propulsion.hpp"
+#include "sim/spacecraft_geometry.hpp"
 
 namespace visors::sim {
 
@@ -97,6 +98,9 @@ struct CampaignScenario {
   PropulsionSettings propulsion;
   SpacecraftSettings dsc;
   SpacecraftSettings osc;
+  /// Truth geometry errors of both spacecraft ([geometry]; the nominal points are not scenario
+  /// keys): centre-of-mass variation and knowledge error, payload mounting and pointing.
+  GeometrySettings geometry;
   double crosslink_delay_s = 0.5;
   double crosslink_drop_probability = 0.0;
   dynamics::ForceModelConfig forces = dynamics::ForceModelConfig::truth();

@@ -66,7 +66,7 @@ core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftS
   c.truth = std::move(truth).value();
   c.x_gcrf = x0;
   RandomStream geometry_rng(s.seed, c.name + ".geometry");  // the same draw as `visors run`
-  c.geometry.emplace(SpacecraftGeometry::draw(GeometrySettings{}, geometry_rng));
+  c.geometry.emplace(SpacecraftGeometry::draw(s.geometry, geometry_rng));
   GpsReceiverSettings settings = s.gnss.receiver;
   settings.klobuchar = ionosphere;
   settings.epoch_interval_s = s.step_s;  // clock_step_sigma_m is per epoch

@@ -25,7 +25,7 @@ core::Result<bool> set_up_truth(SimulatedSpacecraft& v, const CampaignScenario& 
   if (!attitude.ok()) return core::Error{"gnc.science." + attitude.error().field, attitude.error().message};
   v.attitude.emplace(std::move(attitude).value());
   RandomStream geometry_rng(s.seed, prefix + ".geometry");
-  v.geometry.emplace(SpacecraftGeometry::draw(GeometrySettings{}, geometry_rng));
+  v.geometry.emplace(SpacecraftGeometry::draw(s.geometry, geometry_rng));
   return true;
 }
 

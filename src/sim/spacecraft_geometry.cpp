@@ -31,6 +31,7 @@ Eigen::Vector3d tilted_axis(const Eigen::Vector3d& axis, double t1, double t2) {
 core::Result<bool> GeometrySettings::validate() const {
   if (!com_nominal_body_m.allFinite()) return core::Error{"com_nominal_body_m", "must be finite"};
   if (!valid_sigma(com_sigma_m)) return core::Error{"com_sigma_m", "must be finite and >= 0 m"};
+  if (!valid_sigma(com_knowledge_error_m)) return core::Error{"com_knowledge_error_m", "must be finite and >= 0 m"};
   if (!payload_nominal_body_m.allFinite()) return core::Error{"payload_nominal_body_m", "must be finite"};
   if (!valid_sigma(payload_position_sigma_m)) {
     return core::Error{"payload_position_sigma_m", "must be finite and >= 0 m"};
@@ -54,6 +55,9 @@ SpacecraftGeometry SpacecraftGeometry::draw(const GeometrySettings& settings, Ra
   const double t1 = rng.normal(settings.payload_pointing_sigma_rad);
   const double t2 = rng.normal(settings.payload_pointing_sigma_rad);
   g.payload_axis_body_ = tilted_axis(g.payload_axis_nominal_body_, t1, t2);
+  const Eigen::Vector3d direction = normal_vector(rng, 1.0);  // isotropic: a normal vector's direction
+  const double norm = direction.norm();
+  if (norm > 0.0) g.com_body_m_ += settings.com_knowledge_error_m / norm * direction;
   return g;
 }
 

@@ -13,7 +13,11 @@
 // e1, e2 normal to the nominal payload axis (right-handed (e1, e2, axis), e1 = axis x the
 // coordinate axis least aligned with it). The true axis is the nominal one rotated by the rotation
 // vector t1 e1 + t2 e2: a per-axis 1-sigma tilt, so the total misalignment has RMS sqrt(2) sigma.
-// Eight numbers are drawn whatever the sigmas, so zero-sigma runs keep the stream aligned.
+// Eight numbers are drawn whatever the sigmas, so zero-sigma runs keep the stream aligned. Then
+// the static error in the knowledge of the centre of mass (mission paper, sensitivity figure: the
+// on-board centre of mass is off the true one by this much, whatever its variation): a vector of
+// length com_knowledge_error_m along a uniformly random direction (three more normal draws,
+// normalised; drawn whatever the length), added to the true centre of mass.
 
 #include <Eigen/Core>
 
@@ -26,6 +30,7 @@ namespace visors::sim {
 struct GeometrySettings {
   Eigen::Vector3d com_nominal_body_m = Eigen::Vector3d::Zero();  // known centre of mass [m]
   double com_sigma_m = 3.0e-3;  // 1-sigma centre-of-mass variation per axis [m] (issue)
+  double com_knowledge_error_m = 0.0;  // length of the centre-of-mass knowledge error [m] (3D)
   /// Known payload reference point [m]; default on the +X face (issue).
   Eigen::Vector3d payload_nominal_body_m = Eigen::Vector3d(0.15, 0.0, 0.0);
   double payload_position_sigma_m = 0.5e-3;  // 1-sigma mounting error per axis [m] (issue)

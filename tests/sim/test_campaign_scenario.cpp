@@ -125,6 +125,35 @@ TEST(CampaignScenario, ResolvedScenarioReadsBack) {
   EXPECT_EQ(back.chief_mean.a, s.chief_mean.a);
 }
 
+TEST(CampaignScenario, GeometryKeysAreRead) {
+  const auto s = campaign_from_toml("[geometry]\ncom_knowledge_error_m = 0.01\ncom_variation_sigma_m = 0.002\n").value();
+  EXPECT_EQ(s.geometry.com_knowledge_error_m, 0.01);
+  EXPECT_EQ(s.geometry.com_sigma_m, 0.002);
+}
+
+TEST(CampaignScenario, GeometryDefaultsAreThePapers) {
+  const auto s = campaign_from_toml("").value();  // mission paper: 3 mm CoM variation, 30 arcsec boresight
+  EXPECT_EQ(s.geometry.com_sigma_m, 3e-3);
+  EXPECT_NEAR(s.geometry.payload_pointing_sigma_rad / 4.84813681109536e-6, 30.0, 1e-12);
+}
+
+TEST(CampaignScenario, NegativeKnowledgeErrorIsNamed) {
+  EXPECT_EQ(campaign_from_toml("[geometry]\ncom_knowledge_error_m = -0.01\n").error().field, "geometry.com_knowledge_error_m");
+}
+
+TEST(CampaignScenario, UnknownGeometryKeyIsNamed) {
+  EXPECT_EQ(campaign_from_toml("[geometry]\ncom_error = 0.01\n").error().field, "geometry.com_error");
+}
+
+TEST(CampaignScenario, ResolvedGeometryReadsBack) {
+  auto s = default_campaign();
+  s.geometry.com_knowledge_error_m = 0.0125;
+  s.geometry.payload_pointing_sigma_rad = 1e-5;
+  const auto back = campaign_from_toml(campaign_to_toml(s)).value();
+  EXPECT_EQ(back.geometry.com_knowledge_error_m, 0.0125);
+  EXPECT_NEAR(back.geometry.payload_pointing_sigma_rad, 1e-5, 1e-20);
+}
+
 TEST(CampaignScenario, ResolvedForcesTableReadsBack) {
   const auto s = campaign_from_toml("[forces]\npreset = \"onboard\"\n[forces.gravity]\ndegree = 8\norder = 8\n").value();
   const auto back = campaign_from_toml(campaign_to_toml(s)).value();
