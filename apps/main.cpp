@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "baseline/baseline_command.hpp"
+#include "mc/mc_command.hpp"
 #include "nav/nav_command.hpp"
 #include "preview/preview_command.hpp"
 #include "propagate/propagate_command.hpp"
@@ -159,6 +160,22 @@ int main(int argc, char** argv) {
       "report", "render DIR/report.html (self-contained HTML, inline SVG) from a run directory");
   report->add_option("dir", report_dir, "run directory written by 'visors run'")->required();
 
+  visors::mc_app::McOptions mc_options;
+  auto* mc = app.add_subcommand("mc", "a Monte Carlo campaign or parameter sweep (CAMPAIGN.toml) into DIR/results.sqlite");
+  mc->add_option("campaign", mc_options.campaign, "campaign TOML (a path, or relative to VISORS_DATA_PATH and data/)");
+  mc->add_option("--out", mc_options.out, "output folder (default out/mc/<campaign name>)");
+  mc->add_option("--threads", mc_options.threads, "runs at a time, each in its own process (0: one per core)")
+      ->check(CLI::Range(0, 4096))
+      ->capture_default_str();
+  mc->add_flag("--resume", mc_options.resume, "go on with the results database in the output folder");
+  mc->add_flag("--keep-runs", mc_options.keep_runs, "keep each run's directory (DIR/runs/runNNNNNN)");
+  std::string mc_database, mc_out;
+  std::int64_t mc_run = 0;
+  auto* mc_rerun = mc->add_subcommand("rerun", "one run of a stored campaign again, with its run directory and report");
+  mc_rerun->add_option("database", mc_database, "results.sqlite of the campaign")->required();
+  mc_rerun->add_option("run", mc_run, "the run's index")->required();
+  mc_rerun->add_option("--out", mc_out, "run directory (default out/mc-rerun/runNNNNNN)");
+
   app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors 0.1.0\n"); });
 
   try {
@@ -173,6 +190,14 @@ int main(int argc, char** argv) {
     return visors::propagate::run_propagate_command(propagate_scenario, propagate_out);
   }
   if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out, run_threads);
+  if (mc_rerun->parsed()) return visors::mc_app::run_mc_rerun_command(mc_database, mc_run, mc_out);
+  if (mc->parsed()) {
+    if (mc_options.campaign.empty()) {
+      fmt::print(stderr, "visors mc: a campaign file is required (or: mc rerun DB RUN)\n");
+      return kExitBadInput;
+    }
+    return visors::mc_app::run_mc_command(mc_options);
+  }
   if (baseline->parsed()) return visors::baseline_app::run_baseline_command(baseline_options);
   if (nav->parsed()) return visors::nav_app::run_nav_command(nav_options);
   if (report->parsed()) return visors::report::run_report_command(report_dir);

@@ -1,0 +1,155 @@
+#include "mc/mc_command.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <thread>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+#include "mc/campaign_file.hpp"
+#include "mc/campaign_runner.hpp"
+#include "mc/results_store.hpp"
+#include "mc/run_plan.hpp"
+#include "report/report.hpp"
+#include "sim/campaign_simulation.hpp"
+
+namespace visors::mc_app {
+namespace {
+
+constexpr int kExitBadInput = 2;
+constexpr int kExitFailed = 1;
+
+void print_progress(const mc::PoolProgress& p, bool terminal) {
+  const double per_minute = p.wall_s > 0.0 ? 60.0 * static_cast<double>(p.finished) / p.wall_s : 0.0;
+  const double eta_s = per_minute > 0.0 ? 60.0 * static_cast<double>(p.total - p.finished) / per_minute : 0.0;
+  const std::string line = fmt::format("  runs {}/{} done, {} running, {} failed; {:.1f} runs/min; ETA {:.0f} min", p.finished,
+                                       p.total, p.running, p.failed, per_minute, eta_s / 60.0);
+  if (terminal) fmt::print(stderr, "\r{}   ", line);
+}
+
+// Success per sweep value over the stored runs (the figure's lower panel), on the terminal.
+void print_results(mc::ResultsStore& store) {
+  auto runs = store.runs();
+  if (!runs.ok()) return;
+  std::map<std::pair<std::string, std::string>, std::pair<long, long>> attempts;  // (key, value) -> (successes, attempts)
+  long failed = 0;
+  for (const mc::StoredRun& r : *runs) {
+    if (!r.ok) {
+      ++failed;
+      continue;
+    }
+    auto& [ok, all] = attempts[{r.sweep_key, r.sweep_value_text}];
+    for (const auto& o : r.summary.value("observations", nlohmann::json::array())) {
+      ok += o.value("success", false) ? 1 : 0;
+      ++all;
+    }
+  }
+  fmt::print("  {} runs stored, {} failed\n", runs->size(), failed);
+  for (const auto& [key, counts] : attempts) {
+    const std::string what = key.first.empty() ? std::string("all runs") : fmt::format("{} = {}", key.first, key.second);
+    fmt::print("  {}: {} of {} attempts succeeded ({:.0f} %)\n", what, counts.first, counts.second,
+               counts.second > 0 ? 100.0 * static_cast<double>(counts.first) / static_cast<double>(counts.second) : 0.0);
+  }
+}
+
+}  // namespace
+
+int run_mc_command(const McOptions& o) {
+  auto campaign = mc::load_campaign(o.campaign);
+  if (!campaign.ok()) {
+    fmt::print(stderr, "visors mc: {}: {}\n", o.campaign, campaign.error().describe());
+    return kExitBadInput;
+  }
+  const std::filesystem::path out = o.out.empty() ? std::filesystem::path("out/mc") / campaign->name : std::filesystem::path(o.out);
+  const std::filesystem::path database = out / "results.sqlite";
+  if (std::filesystem::exists(database) && !o.resume) {
+    fmt::print(stderr, "visors mc: {} exists: --resume to go on with it, or another --out\n", database.string());
+    return kExitBadInput;
+  }
+  std::filesystem::create_directories(out);
+  auto opened = mc::ResultsStore::open(database);
+  if (!opened.ok()) {
+    fmt::print(stderr, "visors mc: {}\n", opened.error().describe());
+    return kExitFailed;
+  }
+  mc::ResultsStore store = std::move(opened).value();
+  mc::PoolOptions pool;
+  pool.workers = o.threads > 0 ? o.threads : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  pool.scratch = out / "runs";
+  pool.keep_runs = o.keep_runs;
+  fmt::print("visors mc: {} ({}), {} runs on {} processes, results {}\n", campaign->name, o.campaign, campaign->total_runs(),
+             pool.workers, database.string());
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  mc::RunnerHooks hooks;
+  hooks.progress = [&](const mc::PoolProgress& p) { print_progress(p, terminal); };
+  hooks.stored = [&](const mc::RunSpec& spec, const mc::RunRecord& record) {
+    if (record.ok) return;
+    if (terminal) fmt::print(stderr, "\r");
+    fmt::print("  run {} failed: {}\n", spec.index, record.error);
+  };
+  auto ran = mc::run_into_store(*campaign, store, pool, hooks);
+  if (terminal) fmt::print(stderr, "\n");
+  if (!ran.ok()) {
+    fmt::print(stderr, "visors mc: {}\n", ran.error().describe());
+    return ran.error().field == "results" ? kExitBadInput : kExitFailed;
+  }
+  fmt::print("  {} runs run this time\n", *ran);
+  print_results(store);
+  fmt::print("  results {}\n", database.string());
+  return 0;
+}
+
+int run_mc_rerun_command(const std::string& database, std::int64_t run, const std::string& out_dir) {
+  if (!std::filesystem::exists(database)) {
+    fmt::print(stderr, "visors mc rerun: {}: no such results database\n", database);
+    return kExitBadInput;
+  }
+  auto opened = mc::ResultsStore::open(database);
+  if (!opened.ok()) {
+    fmt::print(stderr, "visors mc rerun: {}: {}\n", database, opened.error().describe());
+    return kExitFailed;
+  }
+  mc::ResultsStore store = std::move(opened).value();
+  auto file = store.campaign_file();
+  if (!file.ok()) {
+    fmt::print(stderr, "visors mc rerun: {}: {}\n", database, file.error().describe());
+    return kExitFailed;
+  }
+  auto campaign = mc::campaign_from_toml(file->first, {}, file->second);
+  if (!campaign.ok()) {
+    fmt::print(stderr, "visors mc rerun: the recorded campaign: {}\n", campaign.error().describe());
+    return kExitBadInput;
+  }
+  if (run < 0 || run >= campaign->total_runs()) {
+    fmt::print(stderr, "visors mc rerun: RUN: must be in [0, {}]\n", campaign->total_runs() - 1);
+    return kExitBadInput;
+  }
+  const mc::RunSpec spec = mc::run_spec(*campaign, run);
+  auto scenario = mc::scenario_for(*campaign, spec);
+  if (!scenario.ok()) {
+    fmt::print(stderr, "visors mc rerun: {}\n", scenario.error().describe());
+    return kExitBadInput;
+  }
+  const std::string out = out_dir.empty() ? fmt::format("out/mc-rerun/run{:06d}", run) : out_dir;
+  fmt::print("visors mc rerun: run {} of {} (seed {})\n", run, campaign->name, spec.seed);
+  auto result = sim::run_campaign(*scenario, out, {}, sim::RunOptions{.parallel_components = true});
+  if (!result.ok()) {
+    fmt::print(stderr, "visors mc rerun: {}\n", result.error().describe());
+    return kExitFailed;
+  }
+  auto report = report::write_report(result->dir);
+  fmt::print("  success rate {:.0f} %\n", 100.0 * result->summary.value("success_rate", 0.0));
+  if (auto runs = store.runs(); runs.ok()) {
+    const auto stored = std::find_if(runs->begin(), runs->end(), [&](const mc::StoredRun& r) { return r.run == run; });
+    if (stored == runs->end()) fmt::print("  not in the results database yet\n");
+    else if (!stored->ok) fmt::print("  stored as failed: {}\n", stored->error);
+    else fmt::print("  same results as stored: {}\n", mc::without_timings(result->summary) == stored->summary ? "yes" : "NO");
+  }
+  fmt::print("  run directory {}\n", result->dir.string());
+  if (report.ok()) fmt::print("  report {}\n", report->string());
+  return 0;
+}
+
+}  // namespace visors::mc_app

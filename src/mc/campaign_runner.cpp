@@ -1,0 +1,40 @@
+#include "mc/campaign_runner.hpp"
+
+#include <algorithm>
+
+#include "core/files/data_path.hpp"
+
+namespace visors::mc {
+
+std::vector<DataFileUse> data_files_of(const sim::CampaignScenario& s) {
+  std::vector<DataFileUse> out;
+  for (const std::string& name : {s.gnss.nav_file, s.forces.gravity.model, s.forces.drag.space_weather, s.forces.earth_frame.eop}) {
+    if (name.empty()) continue;
+    const auto path = core::files::find_data_file(name);
+    if (!path) continue;
+    if (auto use = describe_data_file(*path); use.ok()) out.push_back(*use);
+  }
+  return out;
+}
+
+core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore& store, const PoolOptions& options,
+                                          const RunnerHooks& hooks) {
+  auto base = base_scenario(campaign);
+  if (!base.ok()) return base.error();
+  if (auto ok = store.record_campaign(campaign, sim::campaign_to_toml(*base), data_files_of(*base)); !ok) return ok.error();
+  auto stored = store.stored_runs();
+  if (!stored.ok()) return stored.error();
+  std::vector<std::int64_t> todo;
+  for (std::int64_t i = 0; i < campaign.total_runs(); ++i) {
+    if (!std::binary_search(stored->begin(), stored->end(), i)) todo.push_back(i);
+  }
+  const auto sink = [&](const RunSpec& spec, const RunRecord& record) -> core::Result<bool> {
+    if (auto ok = store.store(spec, record); !ok) return ok;
+    if (hooks.stored) hooks.stored(spec, record);
+    return true;
+  };
+  if (auto ran = run_local(campaign, todo, options, sink, hooks.progress); !ran.ok()) return ran.error();
+  return static_cast<std::int64_t>(todo.size());
+}
+
+}  // namespace visors::mc

@@ -1,0 +1,28 @@
+#pragma once
+// A campaign into its results store: the campaign recorded (or checked to be the stored one),
+// then every run the store does not hold yet run on the local pool and stored as it ends. A fresh
+// store and a resumed one go the same way; the stored content depends only on the campaign.
+
+#include <functional>
+
+#include "core/status.hpp"
+#include "mc/campaign_file.hpp"
+#include "mc/local_pool.hpp"
+#include "mc/results_store.hpp"
+
+namespace visors::mc {
+
+struct RunnerHooks {
+  std::function<void(const PoolProgress&)> progress;
+  std::function<void(const RunSpec&, const RunRecord&)> stored;  // after each run is stored
+};
+
+/// The number of runs still to do when it started (0 when the store was complete).
+core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore& store, const PoolOptions& options,
+                                          const RunnerHooks& hooks = {});
+
+/// The data files the scenario reads, found on the data search path (the missing ones are the
+/// embedded defaults each run warns about).
+std::vector<DataFileUse> data_files_of(const sim::CampaignScenario& scenario);
+
+}  // namespace visors::mc

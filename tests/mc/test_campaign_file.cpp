@@ -1,0 +1,93 @@
+// mc/campaign_file: the campaign TOML, its checks against the base scenario, errors naming the
+// field.
+#include "mc/campaign_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include "mc_test_campaign.hpp"
+
+namespace visors::mc {
+namespace {
+
+core::Result<Campaign> parse(const std::string& text) {
+  return campaign_from_toml(text, {}, std::string(test::kBaseScenario));
+}
+
+TEST(CampaignFile, TinyCampaignReads) { EXPECT_TRUE(parse(test::kTinyCampaign).ok()); }
+
+TEST(CampaignFile, RunsAreValuesTimesRunsPerValue) { EXPECT_EQ(parse(test::kTinyCampaign)->total_runs(), 4); }
+
+TEST(CampaignFile, WithoutSweepsRunsIsTheCount) { EXPECT_EQ(parse("runs = 5\n")->total_runs(), 5); }
+
+TEST(CampaignFile, UnknownTopLevelKeyIsNamed) { EXPECT_EQ(parse("run = 5\n").error().field, "run"); }
+
+TEST(CampaignFile, UnknownScenarioKeyInASweepIsNamed) {
+  const auto c = parse("[[sweep]]\nkey = \"propulsion.isp\"\nvalues = [40.0]\n");
+  EXPECT_EQ(c.error().field, "sweep[0].values");
+}
+
+TEST(CampaignFile, TheScenarioReadersComplaintIsKept) {
+  const auto c = parse("[[sweep]]\nkey = \"propulsion.isp\"\nvalues = [40.0]\n");
+  EXPECT_NE(c.error().message.find("propulsion.isp: is not a recognised key"), std::string::npos);
+}
+
+TEST(CampaignFile, AFloatForAnIntegerKeyIsRefused) {
+  EXPECT_EQ(parse("[[sweep]]\nkey = \"campaign.observations\"\nvalues = [2.5]\n").error().field, "sweep[0].values");
+}
+
+TEST(CampaignFile, ADispersionBeyondTheKeysRangeAtThreeSigmaIsRefused) {
+  // isp_sigma_s must be >= 0: mean 0.5, sigma 1 reaches -2.5 at 3 sigma.
+  const auto c = parse("[dispersions]\n\"propulsion.isp_sigma_s\" = { normal = { mean = 0.5, sigma = 1.0 } }\n");
+  EXPECT_EQ(c.error().field, "dispersions.\"propulsion.isp_sigma_s\"");
+}
+
+TEST(CampaignFile, UnknownDistributionIsNamed) {
+  const auto c = parse("[dispersions]\n\"propulsion.isp_s\" = { gamma = { k = 1.0 } }\n");
+  EXPECT_EQ(c.error().field, "dispersions.\"propulsion.isp_s\"");
+}
+
+TEST(CampaignFile, NegativeSigmaIsNamed) {
+  const auto c = parse("[dispersions]\n\"propulsion.isp_s\" = { normal = { mean = 44.0, sigma = -1.0 } }\n");
+  EXPECT_EQ(c.error().field, "dispersions.\"propulsion.isp_s\".normal.sigma");
+}
+
+TEST(CampaignFile, UniformWithMaxBelowMinIsNamed) {
+  const auto c = parse("[dispersions]\n\"propulsion.isp_s\" = { uniform = { min = 44.0, max = 40.0 } }\n");
+  EXPECT_EQ(c.error().field, "dispersions.\"propulsion.isp_s\".uniform.max");
+}
+
+TEST(CampaignFile, BadChoiceIsNamed) {
+  const auto c = parse("[dispersions]\n\"navigation.mode\" = { choice = [\"ideal\", \"perfect\"] }\n");
+  EXPECT_EQ(c.error().field, "dispersions.\"navigation.mode\"");
+}
+
+TEST(CampaignFile, SettingTheSeedIsRefused) { EXPECT_EQ(parse("[set]\nseed = 3\n").error().field, "set.\"seed\""); }
+
+TEST(CampaignFile, RunsWithSweepsIsRefused) {
+  EXPECT_EQ(parse("runs = 3\n[[sweep]]\nkey = \"crosslink.delay_s\"\nvalues = [0.5]\n").error().field, "runs");
+}
+
+TEST(CampaignFile, EmptySweepValuesAreRefused) {
+  EXPECT_EQ(parse("[[sweep]]\nkey = \"crosslink.delay_s\"\nvalues = []\n").error().field, "sweep[0].values");
+}
+
+TEST(CampaignFile, MissingBaseScenarioIsNamed) {
+  EXPECT_EQ(campaign_from_toml("scenario = \"nowhere/absent.toml\"\n", "/nonexistent").error().field, "scenario");
+}
+
+TEST(CampaignFile, BaseScenarioIsFoundBesideTheCampaign) {
+  const auto dir = test::campaign_folder("beside");
+  const auto c = load_campaign((dir / "campaign.toml").string());
+  std::filesystem::remove_all(dir);
+  ASSERT_TRUE(c.ok()) << c.error().describe();
+  EXPECT_EQ(c->scenario_path.filename(), "base.toml");
+}
+
+TEST(CampaignFile, ShippedSensitivityCampaignIsValid) {
+  const auto c = load_campaign("campaigns/paper_sensitivity.toml");
+  ASSERT_TRUE(c.ok()) << c.error().describe();
+  EXPECT_EQ(c->sweeps.size(), 3U);  // CoM knowledge, magnitude error, direction error (the paper's figure)
+}
+
+}  // namespace
+}  // namespace visors::mc
