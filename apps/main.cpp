@@ -175,6 +175,10 @@ int main(int argc, char** argv) {
   mc_rerun->add_option("database", mc_database, "results.sqlite of the campaign")->required();
   mc_rerun->add_option("run", mc_run, "the run's index")->required();
   mc_rerun->add_option("--out", mc_out, "run directory (default out/mc-rerun/runNNNNNN)");
+  std::string mc_report_database, mc_report_out;
+  auto* mc_report = mc->add_subcommand("report", "the campaign's HTML report (sensitivity figures, failed runs, provenance)");
+  mc_report->add_option("database", mc_report_database, "results.sqlite of the campaign")->required();
+  mc_report->add_option("--out", mc_report_out, "output folder (default: the database's)");
 
   app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors 0.1.0\n"); });
 
@@ -191,6 +195,7 @@ int main(int argc, char** argv) {
   }
   if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out, run_threads);
   if (mc_rerun->parsed()) return visors::mc_app::run_mc_rerun_command(mc_database, mc_run, mc_out);
+  if (mc_report->parsed()) return visors::mc_app::run_mc_report_command(mc_report_database, mc_report_out);
   if (mc->parsed()) {
     if (mc_options.campaign.empty()) {
       fmt::print(stderr, "visors mc: a campaign file is required (or: mc rerun DB RUN)\n");

@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev liberfa-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgeographiclib-dev libsqlite3-dev
+  openmpi-bin libopenmpi-dev
   python3 python3-cvxopt python3-numpy universal-ctags
   chromium
 )

@@ -1,6 +1,8 @@
 #include "mc/mc_command.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <memory>
 #include <filesystem>
 #include <map>
 #include <thread>
@@ -9,7 +11,9 @@
 #include <fmt/core.h>
 
 #include "mc/campaign_file.hpp"
+#include "mc/campaign_report.hpp"
 #include "mc/campaign_runner.hpp"
+#include "mc/mpi_campaign.hpp"
 #include "mc/results_store.hpp"
 #include "mc/run_plan.hpp"
 #include "report/report.hpp"
@@ -54,33 +58,65 @@ void print_results(mc::ResultsStore& store) {
   }
 }
 
-}  // namespace
+// A rank > 0 of an MPI campaign: the campaign from rank 0, then runs until told to stop.
+int serve_rank(const mc::MpiSession& mpi, const McOptions& o) {
+  std::string campaign_text, scenario_text;
+  mpi.share_campaign(campaign_text, scenario_text);
+  if (campaign_text.empty()) return kExitBadInput;  // rank 0 said why
+  auto campaign = mc::campaign_from_toml(campaign_text, {}, scenario_text);
+  mc::PoolOptions pool;
+  pool.workers = 1;
+  pool.scratch = std::filesystem::temp_directory_path() / fmt::format("visors-mc-rank{}-{}", mpi.rank(), ::getpid());
+  pool.keep_runs = o.keep_runs;
+  mc::serve_as_worker(mpi, [&](std::int64_t index) {
+    if (campaign.ok()) return mc::run_isolated(*campaign, mc::run_spec(*campaign, index), pool);
+    mc::RunRecord failed;  // not expected: rank 0 read the same texts
+    failed.run = index;
+    failed.error = fmt::format("rank {}: {}", mpi.rank(), campaign.error().describe());
+    return failed;
+  });
+  std::error_code ignored;
+  if (!o.keep_runs) std::filesystem::remove_all(pool.scratch, ignored);
+  return 0;
+}
 
-int run_mc_command(const McOptions& o) {
+// Rank 0 (or the only process): the campaign into its store, with the other ranks when any.
+int coordinate(const McOptions& o, const mc::MpiSession* mpi) {
+  std::string shared_campaign, shared_scenario;  // stay empty on an error: the other ranks stop
+  const auto share = [&] {
+    if (mpi != nullptr) mpi->share_campaign(shared_campaign, shared_scenario);
+  };
   auto campaign = mc::load_campaign(o.campaign);
   if (!campaign.ok()) {
     fmt::print(stderr, "visors mc: {}: {}\n", o.campaign, campaign.error().describe());
+    share();
     return kExitBadInput;
   }
   const std::filesystem::path out = o.out.empty() ? std::filesystem::path("out/mc") / campaign->name : std::filesystem::path(o.out);
   const std::filesystem::path database = out / "results.sqlite";
   if (std::filesystem::exists(database) && !o.resume) {
     fmt::print(stderr, "visors mc: {} exists: --resume to go on with it, or another --out\n", database.string());
+    share();
     return kExitBadInput;
   }
   std::filesystem::create_directories(out);
   auto opened = mc::ResultsStore::open(database);
   if (!opened.ok()) {
     fmt::print(stderr, "visors mc: {}\n", opened.error().describe());
+    share();
     return kExitFailed;
   }
+  shared_campaign = campaign->text;
+  shared_scenario = campaign->scenario_text;
+  share();
   mc::ResultsStore store = std::move(opened).value();
   mc::PoolOptions pool;
   pool.workers = o.threads > 0 ? o.threads : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
   pool.scratch = out / "runs";
   pool.keep_runs = o.keep_runs;
-  fmt::print("visors mc: {} ({}), {} runs on {} processes, results {}\n", campaign->name, o.campaign, campaign->total_runs(),
-             pool.workers, database.string());
+  const int ranks = mpi != nullptr ? mpi->size() : 1;
+  fmt::print("visors mc: {} ({}), {} runs on {} processes{}, results {}\n", campaign->name, o.campaign, campaign->total_runs(),
+             pool.workers, ranks > 1 ? fmt::format(" here and {} more MPI ranks", ranks - 1) : "", database.string());
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   mc::RunnerHooks hooks;
   hooks.progress = [&](const mc::PoolProgress& p) { print_progress(p, terminal); };
@@ -89,16 +125,36 @@ int run_mc_command(const McOptions& o) {
     if (terminal) fmt::print(stderr, "\r");
     fmt::print("  run {} failed: {}\n", spec.index, record.error);
   };
-  auto ran = mc::run_into_store(*campaign, store, pool, hooks);
+  const auto remote = ranks > 1 ? mc::mpi_remote_workers(*mpi) : nullptr;
+  const auto start = std::chrono::steady_clock::now();
+  auto ran = mc::run_into_store(*campaign, store, pool, hooks, remote.get());
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (terminal) fmt::print(stderr, "\n");
   if (!ran.ok()) {
     fmt::print(stderr, "visors mc: {}\n", ran.error().describe());
     return ran.error().field == "results" ? kExitBadInput : kExitFailed;
   }
-  fmt::print("  {} runs run this time\n", *ran);
+  fmt::print("  {} runs run this time in {:.1f} s ({:.0f} runs per hour)\n", *ran, wall_s,
+             wall_s > 0.0 ? 3600.0 * static_cast<double>(*ran) / wall_s : 0.0);
   print_results(store);
   fmt::print("  results {}\n", database.string());
   return 0;
+}
+
+}  // namespace
+
+int run_mc_command(const McOptions& o) {
+  std::unique_ptr<mc::MpiSession> mpi;
+  if (mc::launched_by_mpi()) {
+    auto session = mc::MpiSession::start();
+    if (!session.ok()) {
+      fmt::print(stderr, "visors mc: {}\n", session.error().describe());
+      return kExitBadInput;
+    }
+    mpi = std::move(session).value();
+    if (mpi->rank() > 0) return serve_rank(*mpi, o);
+  }
+  return coordinate(o, mpi.get());
 }
 
 int run_mc_rerun_command(const std::string& database, std::int64_t run, const std::string& out_dir) {
@@ -149,6 +205,27 @@ int run_mc_rerun_command(const std::string& database, std::int64_t run, const st
   }
   fmt::print("  run directory {}\n", result->dir.string());
   if (report.ok()) fmt::print("  report {}\n", report->string());
+  return 0;
+}
+
+int run_mc_report_command(const std::string& database, const std::string& out_dir) {
+  if (!std::filesystem::exists(database)) {
+    fmt::print(stderr, "visors mc report: {}: no such results database\n", database);
+    return kExitBadInput;
+  }
+  auto opened = mc::ResultsStore::open(database);
+  if (!opened.ok()) {
+    fmt::print(stderr, "visors mc report: {}: {}\n", database, opened.error().describe());
+    return kExitFailed;
+  }
+  mc::ResultsStore store = std::move(opened).value();
+  const std::filesystem::path out = out_dir.empty() ? std::filesystem::path(database).parent_path() : std::filesystem::path(out_dir);
+  auto written = mc::write_campaign_report(store, out);
+  if (!written.ok()) {
+    fmt::print(stderr, "visors mc report: {}\n", written.error().describe());
+    return kExitFailed;
+  }
+  fmt::print("visors mc report: {}\n", written->string());
   return 0;
 }
 

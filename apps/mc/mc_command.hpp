@@ -20,5 +20,6 @@ struct McOptions {
 
 int run_mc_command(const McOptions& options);
 int run_mc_rerun_command(const std::string& database, std::int64_t run, const std::string& out);
+int run_mc_report_command(const std::string& database, const std::string& out);
 
 }  // namespace visors::mc_app

@@ -18,7 +18,7 @@ std::vector<DataFileUse> data_files_of(const sim::CampaignScenario& s) {
 }
 
 core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore& store, const PoolOptions& options,
-                                          const RunnerHooks& hooks) {
+                                          const RunnerHooks& hooks, RemoteWorkers* remote) {
   auto base = base_scenario(campaign);
   if (!base.ok()) return base.error();
   if (auto ok = store.record_campaign(campaign, sim::campaign_to_toml(*base), data_files_of(*base)); !ok) return ok.error();
@@ -33,7 +33,7 @@ core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore
     if (hooks.stored) hooks.stored(spec, record);
     return true;
   };
-  if (auto ran = run_local(campaign, todo, options, sink, hooks.progress); !ran.ok()) return ran.error();
+  if (auto ran = run_local(campaign, todo, options, sink, hooks.progress, remote); !ran.ok()) return ran.error();
   return static_cast<std::int64_t>(todo.size());
 }
 

@@ -18,8 +18,9 @@ struct RunnerHooks {
 };
 
 /// The number of runs still to do when it started (0 when the store was complete).
+/// `remote` (optional): other ranks sharing the runs (mc/mpi_campaign.hpp).
 core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore& store, const PoolOptions& options,
-                                          const RunnerHooks& hooks = {});
+                                          const RunnerHooks& hooks = {}, RemoteWorkers* remote = nullptr);
 
 /// The data files the scenario reads, found on the data search path (the missing ones are the
 /// embedded defaults each run warns about).

@@ -115,57 +115,114 @@ void kill_all(std::vector<Child>& children) {
   children.clear();
 }
 
+// Starts children for queued runs while fewer than `workers` run.
+core::Result<bool> fill(const Campaign& campaign, const PoolOptions& options, const std::function<std::optional<std::int64_t>()>& next,
+                        std::vector<Child>& children) {
+  while (static_cast<int>(children.size()) < std::max(1, options.workers)) {
+    const auto index = next();
+    if (!index) return true;
+    auto child = start(campaign, run_spec(campaign, *index), options);
+    if (!child.ok()) return child.error();
+    fcntl(child->fd, F_SETFL, O_NONBLOCK);
+    children.push_back(std::move(child).value());
+  }
+  return true;
+}
+
+// One pass over the children: stops those past their time limit, collects those that ended.
+core::Result<bool> collect(const Campaign& campaign, std::vector<Child>& children, const std::vector<pollfd>& fds,
+                           const std::function<core::Result<bool>(const RunSpec&, const RunRecord&)>& finished) {
+  const auto now = Clock::now();
+  for (std::size_t i = children.size(); i-- > 0;) {
+    Child& c = children[i];
+    if (!c.timed_out && std::chrono::duration<double>(now - c.start).count() > campaign.time_limit_s) {
+      kill(c.pid, SIGKILL);  // its pipe then reaches end of file
+      c.timed_out = true;
+    }
+    if ((fds[i].revents & (POLLIN | POLLHUP | POLLERR)) == 0 || !drain(c)) continue;
+    const RunRecord record = finish(c, campaign.time_limit_s);
+    const RunSpec spec = c.spec;
+    children.erase(children.begin() + static_cast<std::ptrdiff_t>(i));
+    if (auto ok = finished(spec, record); !ok) return ok;
+  }
+  return true;
+}
+
+std::vector<pollfd> wait_for_children(const std::vector<Child>& children, int timeout_ms) {
+  std::vector<pollfd> fds;
+  for (const Child& c : children) fds.push_back(pollfd{c.fd, POLLIN, 0});
+  (void)poll(fds.data(), fds.size(), timeout_ms);
+  return fds;
+}
+
 }  // namespace
 
+RunRecord run_isolated(const Campaign& campaign, const RunSpec& spec, const PoolOptions& options) {
+  std::vector<Child> children;
+  bool given = false;
+  const auto next = [&]() -> std::optional<std::int64_t> {
+    if (given) return std::nullopt;
+    given = true;
+    return spec.index;
+  };
+  RunRecord out;
+  out.run = spec.index;
+  if (auto ok = fill(campaign, options, next, children); !ok) {
+    out.error = ok.error().describe();
+    return out;
+  }
+  while (!children.empty()) {
+    const auto fds = wait_for_children(children, 200);
+    (void)collect(campaign, children, fds, [&](const RunSpec&, const RunRecord& r) -> core::Result<bool> {
+      out = r;
+      return true;
+    });
+  }
+  return out;
+}
+
 core::Result<bool> run_local(const Campaign& campaign, const std::vector<std::int64_t>& runs, const PoolOptions& options,
-                             const RunSink& on_finished, const std::function<void(const PoolProgress&)>& progress) {
+                             const RunSink& on_finished, const std::function<void(const PoolProgress&)>& progress,
+                             RemoteWorkers* remote) {
   const auto t0 = Clock::now();
-  const int workers = std::max(1, options.workers);
   PoolProgress p;
   p.total = static_cast<std::int64_t>(runs.size());
   std::vector<Child> children;
-  std::size_t next = 0;
+  std::size_t queued = 0;
+  const auto next = [&]() -> std::optional<std::int64_t> {
+    if (queued == runs.size()) return std::nullopt;
+    return runs[queued++];
+  };
+  const auto finished = [&](const RunSpec& spec, const RunRecord& record) -> core::Result<bool> {
+    ++p.finished;
+    if (!record.ok) ++p.failed;
+    return on_finished(spec, record);
+  };
+  const auto stop = [&](const core::Error& e) -> core::Result<bool> {
+    kill_all(children);
+    if (remote != nullptr) remote->finish();
+    return e;
+  };
   auto last_report = t0;
-  while (next < runs.size() || !children.empty()) {
-    while (static_cast<int>(children.size()) < workers && next < runs.size()) {
-      auto child = start(campaign, run_spec(campaign, runs[next]), options);
-      if (!child.ok()) {
-        kill_all(children);
-        return child.error();
-      }
-      fcntl(child->fd, F_SETFL, O_NONBLOCK);
-      children.push_back(std::move(child).value());
-      ++next;
+  for (;;) {
+    if (auto ok = fill(campaign, options, next, children); !ok) return stop(ok.error());
+    if (remote != nullptr) {
+      const auto done = [&](const RunRecord& r) { return finished(run_spec(campaign, r.run), r); };
+      if (auto ok = remote->serve(next, done); !ok) return stop(ok.error());
     }
-    std::vector<pollfd> fds;
-    for (const Child& c : children) fds.push_back(pollfd{c.fd, POLLIN, 0});
-    (void)poll(fds.data(), fds.size(), 200);
-    const auto now = Clock::now();
-    for (std::size_t i = children.size(); i-- > 0;) {
-      Child& c = children[i];
-      if (!c.timed_out && std::chrono::duration<double>(now - c.start).count() > campaign.time_limit_s) {
-        kill(c.pid, SIGKILL);  // its pipe then reaches end of file
-        c.timed_out = true;
-      }
-      if ((fds[i].revents & (POLLIN | POLLHUP | POLLERR)) == 0 || !drain(c)) continue;
-      const RunRecord record = finish(c, campaign.time_limit_s);
-      const RunSpec spec = c.spec;
-      children.erase(children.begin() + static_cast<std::ptrdiff_t>(i));
-      ++p.finished;
-      if (!record.ok) ++p.failed;
-      if (auto ok = on_finished(spec, record); !ok) {
-        kill_all(children);
-        return ok.error();
-      }
-      last_report = {};  // report this one
-    }
-    p.running = static_cast<std::int64_t>(children.size());
+    const std::int64_t away = remote != nullptr ? remote->outstanding() : 0;
+    if (children.empty() && away == 0 && queued == runs.size()) break;
+    // Short waits while remote ranks may be asking: their requests are answered between polls.
+    const auto fds = wait_for_children(children, remote != nullptr ? 5 : 200);
+    if (auto ok = collect(campaign, children, fds, finished); !ok) return stop(ok.error());
+    p.running = static_cast<std::int64_t>(children.size()) + away;
     p.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
     if (progress && Clock::now() - last_report > std::chrono::seconds(1)) {
       progress(p);
       last_report = Clock::now();
     }
   }
+  if (remote != nullptr) remote->finish();
   if (progress) progress(p);
   return true;
 }

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/status.hpp"
@@ -35,10 +36,30 @@ struct PoolProgress {
 
 using RunSink = std::function<core::Result<bool>(const RunSpec&, const RunRecord&)>;
 
+/// Runs handed to other processes (the MPI ranks of mc/mpi_campaign.hpp) from the same queue as
+/// the local children: run_local calls serve() in its loop (non-blocking) and finish() at the end.
+class RemoteWorkers {
+ public:
+  virtual ~RemoteWorkers() = default;
+  using Next = std::function<std::optional<std::int64_t>()>;  // the next run to hand out, if any
+  using Done = std::function<core::Result<bool>(const RunRecord&)>;
+  /// Answers the requests that arrived: takes finished runs into `done`, hands out `next` ones.
+  virtual core::Result<bool> serve(const Next& next, const Done& done) = 0;
+  /// Runs handed out and not returned yet.
+  [[nodiscard]] virtual std::int64_t outstanding() const = 0;
+  /// Once no run is left: tells every remote worker to stop.
+  virtual void finish() = 0;
+};
+
+/// Runs one run in a child process (time limit, crash isolation) and waits for it: the worker
+/// side of a remote rank.
+RunRecord run_isolated(const Campaign& campaign, const RunSpec& spec, const PoolOptions& options);
+
 /// Runs the given run indices of `campaign` (time limit: campaign.time_limit_s each). Returns an
 /// error only when `on_finished` does (the children still running are then killed) or a process
 /// cannot be started. `progress` (optional) is called after each run and about once a second.
 core::Result<bool> run_local(const Campaign& campaign, const std::vector<std::int64_t>& runs, const PoolOptions& options,
-                             const RunSink& on_finished, const std::function<void(const PoolProgress&)>& progress = {});
+                             const RunSink& on_finished, const std::function<void(const PoolProgress&)>& progress = {},
+                             RemoteWorkers* remote = nullptr);
 
 }  // namespace visors::mc

@@ -55,6 +55,9 @@ CREATE TABLE IF NOT EXISTS observations (
   lateral_error_m REAL,
   lateral_velocity_mps REAL,
   focus_error_m REAL,
+  lateral_x_m REAL,
+  lateral_y_m REAL,
+  focus_signed_m REAL,
   success INTEGER NOT NULL,
   PRIMARY KEY (run, attempt));
 CREATE TABLE IF NOT EXISTS summaries (
@@ -167,11 +170,13 @@ core::Result<bool> ResultsStore::insert_run(const RunSpec& spec, const RunRecord
 core::Result<bool> ResultsStore::insert_observations(const RunRecord& r) {
   const auto it = r.summary.find("observations");
   if (it == r.summary.end() || !it->is_array()) return true;
-  VISORS_MC_TAKE(s, db_.prepare("INSERT INTO observations VALUES (?, ?, ?, ?, ?, ?, ?)"));
+  VISORS_MC_TAKE(s, db_.prepare("INSERT INTO observations VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"));
   for (const auto& o : *it) {
     s.bind(1, r.run).bind(2, o.value("index", std::int64_t{0})).bind(3, number_or_null(o, "t_s"));
     s.bind(4, number_or_null(o, "lateral_error_m")).bind(5, number_or_null(o, "lateral_velocity_mps"));
-    s.bind(6, number_or_null(o, "focus_error_m")).bind(7, std::int64_t{o.value("success", false) ? 1 : 0});
+    s.bind(6, number_or_null(o, "focus_error_m")).bind(7, number_or_null(o, "lateral_x_m"));
+    s.bind(8, number_or_null(o, "lateral_y_m")).bind(9, number_or_null(o, "focus_signed_m"));
+    s.bind(10, std::int64_t{o.value("success", false) ? 1 : 0});
     if (auto ok = run_all(s); !ok) return ok;
   }
   return true;
@@ -206,6 +211,25 @@ core::Result<bool> ResultsStore::store(const RunSpec& spec, const RunRecord& rec
     return Error{fmt::format("run {}", spec.index), stored.error().message};
   }
   return db_.execute("COMMIT");
+}
+
+core::Result<CampaignInfo> ResultsStore::info() {
+  CampaignInfo out;
+  {
+    VISORS_MC_TAKE(s, db_.prepare("SELECT name, program_version, created_utc, total_runs FROM campaign WHERE id = 1"));
+    VISORS_MC_TAKE(row, s.step());
+    if (!row) return Error{"results", "no campaign recorded"};
+    out.name = s.text(0);
+    out.program_version = s.text(1);
+    out.created_utc = s.text(2);
+    out.total_runs = s.integer(3);
+  }
+  VISORS_MC_TAKE(s, db_.prepare("SELECT path, size, checksum FROM data_files ORDER BY path"));
+  for (;;) {
+    VISORS_MC_TAKE(row, s.step());
+    if (!row) return out;
+    out.data_files.push_back(DataFileUse{s.text(0), s.integer(1), s.text(2)});
+  }
 }
 
 core::Result<std::vector<StoredRun>> ResultsStore::runs() {

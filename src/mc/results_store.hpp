@@ -8,7 +8,8 @@
 //   data_files    the data files the base scenario found: path, size, FNV-1a 64 checksum
 //   runs          index, sweep key and value, replicate, seed, drawn parameters (JSON), status,
 //                 error text, wall time and the run's timings (JSON), finish time
-//   observations  per attempt: time, lateral and focus errors, lateral velocity, success
+//   observations  per attempt: time, lateral and focus errors, lateral velocity, the lateral error
+//                 in the detector's frame and the signed focus error, success
 //   summaries     per finished run: success rate, delta-v, separations, safety, navigation, and
 //                 the whole summary.json less its timings
 // Only `runs.wall_s`, `runs.timings` and `runs.finished_utc` depend on the host: the rest is the
@@ -48,6 +49,12 @@ struct StoredRun {
   nlohmann::json summary;      // null for a failed run
 };
 
+struct CampaignInfo {
+  std::string name, program_version, created_utc;
+  std::int64_t total_runs = 0;
+  std::vector<DataFileUse> data_files;
+};
+
 class ResultsStore {
  public:
   static core::Result<ResultsStore> open(const std::filesystem::path& path);
@@ -64,6 +71,7 @@ class ResultsStore {
   /// Stores a finished run (its observations and summary when ok) in one transaction.
   core::Result<bool> store(const RunSpec& spec, const RunRecord& record);
   core::Result<std::vector<StoredRun>> runs();
+  core::Result<CampaignInfo> info();
 
  private:
   explicit ResultsStore(SqlDatabase db) : db_(std::move(db)) {}

@@ -22,7 +22,7 @@ std::string to_text(const ScenarioValue& value) {
   struct Text {
     std::string operator()(std::int64_t v) const { return std::to_string(v); }
     std::string operator()(double v) const {
-      std::string s = fmt::format("{:.17g}", v);
+      std::string s = fmt::format("{}", v);  // the shortest text that reads back to v
       if (s.find_first_of(".en") == std::string::npos) s += ".0";  // stays a TOML float
       return s;
     }

@@ -11,6 +11,9 @@ namespace visors::report {
 /// `text` with & < > " ' replaced by entities: safe in element content and in quoted attributes.
 std::string escape_html(std::string_view text);
 
+/// The reports' stylesheet (run and Monte Carlo reports), inlined into each page.
+std::string_view report_stylesheet();
+
 /// A number for a table cell: `decimals` after the point, or "–" for NaN/inf (a missing value).
 std::string format_fixed(double value, int decimals);
 

@@ -175,6 +175,11 @@ Plot& Plot::y_categories(std::vector<std::pair<double, std::string>> ticks) {
   return *this;
 }
 
+Plot& Plot::x_categories(std::vector<std::pair<double, std::string>> ticks) {
+  x_categories_ = std::move(ticks);
+  return *this;
+}
+
 Plot& Plot::x_range(double lo, double hi) {
   x_range_ = {lo, hi};
   return *this;
@@ -246,13 +251,17 @@ std::string Plot::render_axes(const Box& area, const Ranges& r) const {
   const Map map = make_map(area, r.x_lo, r.x_hi, r.y_lo, r.y_hi);
   std::string out;
   const double bottom = area.y + area.height;
-  const auto x_ticks = nice_ticks(r.x_lo, r.x_hi, std::max(2, static_cast<int>(area.width / 80.0)));
-  const double x_step = x_ticks.size() > 1 ? x_ticks[1] - x_ticks[0] : 1.0;
-  for (const double t : x_ticks) {
+  std::vector<std::pair<double, std::string>> x_ticks = x_categories_;
+  if (x_ticks.empty()) {
+    const auto values = nice_ticks(r.x_lo, r.x_hi, std::max(2, static_cast<int>(area.width / 80.0)));
+    const double x_step = values.size() > 1 ? values[1] - values[0] : 1.0;
+    for (const double v : values) x_ticks.emplace_back(v, tick_label(v, x_step));
+  }
+  for (const auto& [t, label] : x_ticks) {
     const double px = map(t, 0.0).x;
     out += fmt::format("<line class=\"grid\" x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>\n", px,
                        area.y, bottom);
-    out += text_element(px, bottom + 14.0, "middle", tick_label(t, x_step));
+    out += text_element(px, bottom + 14.0, "middle", label);
   }
   std::vector<std::pair<double, std::string>> y_ticks = y_categories_;
   if (y_ticks.empty()) {

@@ -53,6 +53,8 @@ class Plot {
   Plot& band(double x0, double x1, double y0, double y1, std::string colour, std::string label);
   /// Tick labels at given y values instead of numbers (categories).
   Plot& y_categories(std::vector<std::pair<double, std::string>> ticks);
+  /// Tick labels at given x values instead of numbers (a sweep's values drawn side by side).
+  Plot& x_categories(std::vector<std::pair<double, std::string>> ticks);
   Plot& x_range(double lo, double hi);
   Plot& y_range(double lo, double hi);
   /// Same scale on both axes (a trajectory or an e/i-vector plane keeps its shape).
@@ -103,7 +105,7 @@ class Plot {
   std::vector<HLine> hlines_;
   std::vector<VLines> vlines_;
   std::vector<Band> bands_;
-  std::vector<std::pair<double, std::string>> y_categories_;
+  std::vector<std::pair<double, std::string>> y_categories_, x_categories_;
   std::optional<std::pair<double, double>> x_range_, y_range_;
   bool equal_aspect_ = false;
   double left_margin_;

@@ -26,6 +26,10 @@ struct AlignmentResult {
   double lateral_error_m = 0.0;
   double lateral_velocity_mps = 0.0;
   double focus_error_m = 0.0;
+  /// At the worst lateral sample, the lateral error in the detector's frame [m]: z towards the
+  /// Sun, x the local vertical (the DSC's radial direction) projected normal to z, y = z x x.
+  Eigen::Vector2d lateral_detector_m = Eigen::Vector2d::Zero();
+  double focus_signed_m = 0.0;  // at the worst focus sample, separation along z minus focal distance [m]
   int samples = 0;
   [[nodiscard]] bool success(const AlignmentRequirements& req) const {
     return samples > 0 && lateral_error_m <= req.lateral_error_m && lateral_velocity_mps <= req.lateral_velocity_mps &&

@@ -679,7 +679,8 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
     ++attempts;
     list.push_back({{"index", p.result.index}, {"t_s", p.result.t_s}, {"lateral_error_m", p.result.lateral_error_m},
                     {"lateral_velocity_mps", p.result.lateral_velocity_mps}, {"focus_error_m", p.result.focus_error_m},
-                    {"success", ok}});
+                    {"lateral_x_m", p.result.lateral_detector_m.x()}, {"lateral_y_m", p.result.lateral_detector_m.y()},
+                    {"focus_signed_m", p.result.focus_signed_m}, {"success", ok}});
   }
   summary["observations"] = list;
   summary["success_rate"] = attempts > 0 ? static_cast<double>(successes) / attempts : 0.0;

@@ -37,6 +37,32 @@ TEST(AlignmentMetrics, WorstSampleDecides) {
   EXPECT_FALSE(r.success(kReq));
 }
 
+// The detector's frame (alignment_metrics.hpp): DSC at 7000 km along +y, Sun along +x, so x_det =
+// +y (the vertical) and y_det = x_sun x x_det = +z; the OSC offset (40.010, 0.003, -0.004) m reads
+// (0.003, -0.004) m laterally and +10 mm in focus.
+AlignmentResult one_sample_in_orbit() {
+  AlignmentResult r;
+  const Eigen::Vector3d dsc(0.0, 7.0e6, 0.0);
+  add_alignment_sample(r, dsc + Eigen::Vector3d(40.010, 0.003, -0.004), Eigen::Vector3d::Zero(), dsc, Eigen::Vector3d::Zero(),
+                       kSun, kReq);
+  return r;
+}
+
+// loose: bound 1e-9 m, round-off of 7e6 m positions (ulp 9.3e-10 m)
+TEST(AlignmentMetrics, LateralErrorAlongTheVerticalIsTheDetectorsX) {
+  EXPECT_NEAR(one_sample_in_orbit().lateral_detector_m.x(), 0.003, 2e-9);
+}
+
+TEST(AlignmentMetrics, LateralErrorAcrossIsTheDetectorsY) {
+  EXPECT_NEAR(one_sample_in_orbit().lateral_detector_m.y(), -0.004, 2e-9);
+}
+
+TEST(AlignmentMetrics, FocusErrorKeepsItsSign) { EXPECT_NEAR(one_sample_in_orbit().focus_signed_m, 0.010, 2e-9); }
+
+TEST(AlignmentMetrics, DetectorFrameExistsForADscAtTheOrigin) {
+  EXPECT_NEAR(one_sample().lateral_detector_m.norm(), 0.005, 1e-12);  // any vertical: the length is kept
+}
+
 TEST(AlignmentMetrics, NoSampleIsNoSuccess) { EXPECT_FALSE(AlignmentResult{}.success(kReq)); }
 
 }  // namespace

@@ -1,0 +1,65 @@
+// mc/campaign_report from a store filled with made-up runs whose figures are known: the value
+// table counts each value's attempts and successes, failed runs are listed with their reason,
+// and each sweep gets its two figures.
+#include "mc/campaign_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "mc/run_plan.hpp"
+#include "mc_test_campaign.hpp"
+
+namespace visors::mc {
+namespace {
+
+nlohmann::json summary_with(std::initializer_list<std::pair<double, bool>> attempts) {
+  nlohmann::json observations = nlohmann::json::array();
+  int index = 1;
+  for (const auto& [lateral, success] : attempts) {
+    observations.push_back({{"index", index++}, {"lateral_error_m", lateral}, {"lateral_x_m", lateral}, {"lateral_y_m", 0.0},
+                            {"focus_signed_m", 0.0}, {"success", success}});
+  }
+  return {{"observations", observations},
+          {"requirements", {{"lateral_error_m", 0.018}}},
+          {"delta_v_mps", {{"osc", {{"total", 1.0}}}, {"dsc", {{"total", 0.0}}}}}};
+}
+
+std::string report_text() {
+  const auto dir = test::campaign_folder("report");
+  const Campaign c = load_campaign((dir / "campaign.toml").string()).value();
+  auto store = ResultsStore::open(dir / "db.sqlite").value();
+  // Runs 0, 1: value 0.5 (3 of 4 attempts succeed); run 2: value 1.0, 0 of 2; run 3 failed.
+  const RunRecord records[] = {{0, true, 1.0, "", summary_with({{0.005, true}, {0.010, true}})},
+                               {1, true, 1.0, "", summary_with({{0.004, true}, {0.030, false}})},
+                               {2, true, 1.0, "", summary_with({{0.025, false}, {0.040, false}})},
+                               {3, false, 1.0, "crashed: signal 11 (Segmentation fault)", nullptr}};
+  EXPECT_TRUE(store.record_campaign(c, "", {}).ok());
+  for (const RunRecord& r : records) EXPECT_TRUE(store.store(run_spec(c, r.run), r).ok());
+  const auto path = write_campaign_report(store, dir);
+  std::stringstream text;
+  text << std::ifstream(path.value()).rdbuf();
+  std::filesystem::remove_all(dir);
+  return text.str();
+}
+
+TEST(CampaignReport, CountsEachValuesSuccesses) {
+  EXPECT_NE(report_text().find("<td>0.5</td><td>2</td><td>0</td><td>4</td><td>75 %</td>"), std::string::npos);
+}
+
+TEST(CampaignReport, CountsAFailedRunAgainstItsValue) {
+  EXPECT_NE(report_text().find("<td>1.0</td><td>2</td><td>1</td><td>2</td><td>0 %</td>"), std::string::npos);
+}
+
+TEST(CampaignReport, ListsTheFailedRunWithItsReason) {
+  EXPECT_NE(report_text().find("<td>3</td><td>crosslink.delay_s = 1.0</td>"), std::string::npos);
+}
+
+TEST(CampaignReport, DrawsTheSensitivityAndDispersionFiguresOfTheSweep) {
+  const std::string text = report_text();
+  EXPECT_TRUE(text.find("id=\"sensitivity0\"") != std::string::npos && text.find("id=\"dispersion0\"") != std::string::npos);
+}
+
+}  // namespace
+}  // namespace visors::mc
