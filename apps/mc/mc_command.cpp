@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <filesystem>
 #include <map>
 #include <thread>
@@ -68,6 +69,9 @@ int serve_rank(const mc::MpiSession& mpi, const McOptions& o) {
   pool.workers = 1;
   pool.scratch = std::filesystem::temp_directory_path() / fmt::format("visors-mc-rank{}-{}", mpi.rank(), ::getpid());
   pool.keep_runs = o.keep_runs;
+  if (campaign.ok()) {
+    if (auto base = mc::base_scenario(*campaign); base.ok()) mc::warm_caches(*base);
+  }
   mc::serve_as_worker(mpi, [&](std::int64_t index) {
     if (campaign.ok()) return mc::run_isolated(*campaign, mc::run_spec(*campaign, index), pool);
     mc::RunRecord failed;  // not expected: rank 0 read the same texts
@@ -157,17 +161,31 @@ int run_mc_command(const McOptions& o) {
   return coordinate(o, mpi.get());
 }
 
-int run_mc_rerun_command(const std::string& database, std::int64_t run, const std::string& out_dir) {
-  if (!std::filesystem::exists(database)) {
-    fmt::print(stderr, "visors mc rerun: {}: no such results database\n", database);
-    return kExitBadInput;
+namespace {
+
+// The results database at `path`, which must exist; nullopt after saying why, with the exit code.
+std::optional<mc::ResultsStore> open_existing_store(const std::string& path, const char* command, int& exit_code) {
+  if (!std::filesystem::exists(path)) {
+    fmt::print(stderr, "{}: {}: no such results database\n", command, path);
+    exit_code = kExitBadInput;
+    return std::nullopt;
   }
-  auto opened = mc::ResultsStore::open(database);
+  auto opened = mc::ResultsStore::open(path);
   if (!opened.ok()) {
-    fmt::print(stderr, "visors mc rerun: {}: {}\n", database, opened.error().describe());
-    return kExitFailed;
+    fmt::print(stderr, "{}: {}: {}\n", command, path, opened.error().describe());
+    exit_code = kExitFailed;
+    return std::nullopt;
   }
-  mc::ResultsStore store = std::move(opened).value();
+  return std::move(opened).value();
+}
+
+}  // namespace
+
+int run_mc_rerun_command(const std::string& database, std::int64_t run, const std::string& out_dir) {
+  int exit_code = 0;
+  auto opened = open_existing_store(database, "visors mc rerun", exit_code);
+  if (!opened) return exit_code;
+  mc::ResultsStore& store = *opened;
   auto file = store.campaign_file();
   if (!file.ok()) {
     fmt::print(stderr, "visors mc rerun: {}: {}\n", database, file.error().describe());
@@ -209,16 +227,10 @@ int run_mc_rerun_command(const std::string& database, std::int64_t run, const st
 }
 
 int run_mc_report_command(const std::string& database, const std::string& out_dir) {
-  if (!std::filesystem::exists(database)) {
-    fmt::print(stderr, "visors mc report: {}: no such results database\n", database);
-    return kExitBadInput;
-  }
-  auto opened = mc::ResultsStore::open(database);
-  if (!opened.ok()) {
-    fmt::print(stderr, "visors mc report: {}: {}\n", database, opened.error().describe());
-    return kExitFailed;
-  }
-  mc::ResultsStore store = std::move(opened).value();
+  int exit_code = 0;
+  auto opened = open_existing_store(database, "visors mc report", exit_code);
+  if (!opened) return exit_code;
+  mc::ResultsStore& store = *opened;
   const std::filesystem::path out = out_dir.empty() ? std::filesystem::path(database).parent_path() : std::filesystem::path(out_dir);
   auto written = mc::write_campaign_report(store, out);
   if (!written.ok()) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "core/files/data_path.hpp"
+#include "sim/navigation_setup.hpp"
+#include "sim/truth_dynamics.hpp"
 
 namespace visors::mc {
 
@@ -15,6 +17,11 @@ std::vector<DataFileUse> data_files_of(const sim::CampaignScenario& s) {
     if (auto use = describe_data_file(*path); use.ok()) out.push_back(*use);
   }
   return out;
+}
+
+void warm_caches(const sim::CampaignScenario& base) {
+  (void)sim::make_truth_dynamics(base, base.dsc, "dsc");
+  if (base.navigation_mode == sim::NavigationMode::kCdgps) (void)sim::onboard_force_model(base.dsc, "dsc");
 }
 
 core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore& store, const PoolOptions& options,
@@ -33,6 +40,7 @@ core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore
     if (hooks.stored) hooks.stored(spec, record);
     return true;
   };
+  warm_caches(*base);
   if (auto ran = run_local(campaign, todo, options, sink, hooks.progress, remote); !ran.ok()) return ran.error();
   return static_cast<std::int64_t>(todo.size());
 }

@@ -22,6 +22,10 @@ struct RunnerHooks {
 core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore& store, const PoolOptions& options,
                                           const RunnerHooks& hooks = {}, RemoteWorkers* remote = nullptr);
 
+/// Parses the base scenario's gravity fields in this process (dynamics/files/icgem_file.hpp keeps
+/// them), so that the runs forked from it find them parsed: half a run's set-up time.
+void warm_caches(const sim::CampaignScenario& base);
+
 /// The data files the scenario reads, found on the data search path (the missing ones are the
 /// embedded defaults each run warns about).
 std::vector<DataFileUse> data_files_of(const sim::CampaignScenario& scenario);

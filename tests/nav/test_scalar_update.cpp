@@ -278,39 +278,57 @@ TEST(ScalarUpdate, NonPositiveInnovationVarianceIsRefused) {
   EXPECT_EQ(scalar_update(f.x, f.P, h, 0.1, 0.5, 5.0, ws).status, ScalarUpdateStatus::kInvalid);
 }
 
-// m scalars with diagonal R one after another (each innovation against the state updated by the
-// previous ones) equal one batch update K = P H' (H P H' + R)^-1, x+ = x + K (z - H x),
-// P+ = (I - K H) P: the textbook batch form, explicit inverse of the m x m S.
-TEST(ScalarUpdate, SequentialScalarsEqualOneBatchUpdate) {
-  std::mt19937_64 rng(10);
-  const Filter prior = random_filter(rng);
+// m = 12 random scalars with diagonal R (sparse rows when asked, like the GPS scalars', which
+// exercise both halves of P h' on the lower triangle) and the textbook batch update of the prior:
+// K = P H' (H P H' + R)^-1 with the explicit inverse of the m x m S, x+ = x + K (z - H x),
+// P+ = (I - K H) P.
+struct BatchProblem {
+  Filter prior, batch;
+  MatrixXd H;
+  VectorXd r, z;
+};
+
+BatchProblem batch_problem(std::uint64_t seed, bool sparse) {
+  std::mt19937_64 rng(seed);
+  BatchProblem b;
+  b.prior = random_filter(rng);
   constexpr int m = 12;
-  MatrixXd H(m, kNavStates);
-  VectorXd r(m), z(m);
+  b.H.resize(m, kNavStates);
+  b.r.resize(m);
+  b.z.resize(m);
   std::uniform_real_distribution<double> variance(0.1, 1.0);
   std::normal_distribution<double> gauss;
   for (int i = 0; i < m; ++i) {
-    H.row(i) = random_row(rng);
-    r(i) = variance(rng);
-    z(i) = (H.row(i) * prior.x).value() + std::sqrt(r(i)) * gauss(rng);
+    b.H.row(i) = random_row(rng);
+    for (int j = 0; sparse && j < kNavStates; ++j) {
+      if (gauss(rng) > 0.5) b.H(i, j) = 0.0;
+    }
+    b.r(i) = variance(rng);
+    b.z(i) = (b.H.row(i) * b.prior.x).value() + std::sqrt(b.r(i)) * gauss(rng);
   }
-  const MatrixXd P0 = prior.P;
-  const MatrixXd K = P0 * H.transpose() * (H * P0 * H.transpose() + MatrixXd(r.asDiagonal())).inverse();
-  const VectorXd x_batch = prior.x + K * (z - H * prior.x);
-  const MatrixXd P_batch = (MatrixXd::Identity(kNavStates, kNavStates) - K * H) * P0;
-
-  Filter f = prior;
-  ScalarUpdateWorkspace ws;
-  for (int i = 0; i < m; ++i) {
-    const NavRow h = H.row(i);
-    ASSERT_EQ(scalar_update(f.x, f.P, h, z(i) - (h * f.x).value(), r(i), kWideGate, ws).status,
-              ScalarUpdateStatus::kAccepted);
-  }
-  EXPECT_LT(relative_difference(f.x, x_batch), 1e-10);
-  EXPECT_LT(relative_difference(f.P, P_batch), 1e-10);
+  const MatrixXd& P = b.prior.P;
+  const MatrixXd K = P * b.H.transpose() * (b.H * P * b.H.transpose() + MatrixXd(b.r.asDiagonal())).inverse();
+  b.batch.x = b.prior.x + K * (b.z - b.H * b.prior.x);
+  b.batch.P = (MatrixXd::Identity(kNavStates, kNavStates) - K * b.H) * P;
+  return b;
 }
 
-// A run of scalar_update_lower with one mirror_lower at the end: the batch update as above, with
+// The m scalars one after another (each innovation against the state updated by the previous
+// ones) equal the batch update.
+TEST(ScalarUpdate, SequentialScalarsEqualOneBatchUpdate) {
+  const BatchProblem b = batch_problem(10, false);
+  Filter f = b.prior;
+  ScalarUpdateWorkspace ws;
+  for (int i = 0; i < b.H.rows(); ++i) {
+    const NavRow h = b.H.row(i);
+    ASSERT_EQ(scalar_update(f.x, f.P, h, b.z(i) - (h * f.x).value(), b.r(i), kWideGate, ws).status,
+              ScalarUpdateStatus::kAccepted);
+  }
+  EXPECT_LT(relative_difference(f.x, b.batch.x), 1e-10);
+  EXPECT_LT(relative_difference(f.P, b.batch.P), 1e-10);
+}
+
+// A run of scalar_update_lower with one mirror_lower at the end equals the batch update too, with
 // the strict upper triangle of P poisoned with NaN before the run (so a read of it anywhere, in
 // P h' or the Joseph change, would put NaN into x or the lower triangle).
 struct LowerRun {
@@ -319,31 +337,13 @@ struct LowerRun {
 };
 
 LowerRun lower_run_against_batch(std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  LowerRun out;
-  const Filter prior = random_filter(rng);
-  constexpr int m = 12;
-  MatrixXd H(m, kNavStates);
-  VectorXd r(m), z(m);
-  std::uniform_real_distribution<double> variance(0.1, 1.0);
-  std::normal_distribution<double> gauss;
-  for (int i = 0; i < m; ++i) {
-    H.row(i) = random_row(rng);
-    for (int j = 0; j < kNavStates; ++j) {
-      if (gauss(rng) > 0.5) H(i, j) = 0.0;  // sparse rows, like the GPS scalars', exercise both halves
-    }
-    r(i) = variance(rng);
-    z(i) = (H.row(i) * prior.x).value() + std::sqrt(r(i)) * gauss(rng);
-  }
-  const MatrixXd K = prior.P * H.transpose() * (H * prior.P * H.transpose() + MatrixXd(r.asDiagonal())).inverse();
-  out.batch.x = prior.x + K * (z - H * prior.x);
-  out.batch.P = (MatrixXd::Identity(kNavStates, kNavStates) - K * H) * prior.P;
-  out.run = prior;
+  const BatchProblem b = batch_problem(seed, true);
+  LowerRun out{b.batch, b.prior};
   out.run.P.triangularView<Eigen::StrictlyUpper>().setConstant(std::numeric_limits<double>::quiet_NaN());
   ScalarUpdateWorkspace ws;
-  for (int i = 0; i < m; ++i) {
-    const NavRow h = H.row(i);
-    (void)scalar_update_lower(out.run.x, out.run.P, h, z(i) - (h * out.run.x).value(), r(i), kWideGate, ws);
+  for (int i = 0; i < b.H.rows(); ++i) {
+    const NavRow h = b.H.row(i);
+    (void)scalar_update_lower(out.run.x, out.run.P, h, b.z(i) - (h * out.run.x).value(), b.r(i), kWideGate, ws);
   }
   mirror_lower(out.run.P);
   return out;

@@ -3,9 +3,12 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <system_error>
 #include <vector>
 
@@ -234,7 +237,18 @@ core::Result<GravityField> load_gravity_field(const std::string& name_or_path, i
                        "gravity model file not found (searched as given, then VISORS_DATA_PATH and the "
                        "repository data/ folder)"};
   }
-  return read_icgem(*file, degree);
+  // Parsed once per (file, degree) for the life of the process: a campaign sets up five force
+  // models from one file (the truth's, and two per on-board filter), and a Monte Carlo campaign's
+  // runs, forked from a parent that loaded them, then parse none (~25 % of a run's set-up time).
+  // The file is assumed unchanged while the process runs.
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, int>, GravityField> parsed;
+  const std::lock_guard lock(mutex);
+  const auto key = std::make_pair(file->string(), degree);
+  if (const auto it = parsed.find(key); it != parsed.end()) return it->second;
+  auto field = read_icgem(*file, degree);
+  if (field.ok()) parsed.emplace(key, field.value());
+  return field;
 }
 
 }  // namespace visors::dynamics::files

@@ -23,7 +23,7 @@ core::Result<GravityField> read_icgem(const std::filesystem::path& file, int max
 
 /// Finds `name_or_path` through core::files::find_data_file (absolute, existing, or relative to
 /// the data search path, e.g. "gravity/GGM05S_d90.gfc") and reads it truncated to `degree` (-1:
-/// all).
+/// all). Parsed once per (file, degree) in a process and kept: later calls return a copy.
 /// A missing file is an error here: the caller decides whether embedded_gravity_field() is an
 /// acceptable fallback (GravityConfig::allow_embedded_fallback) and records that it used it.
 core::Result<GravityField> load_gravity_field(const std::string& name_or_path, int degree = -1);
