@@ -2,22 +2,10 @@
 
 #include <algorithm>
 
-#include "core/files/data_path.hpp"
 #include "sim/navigation_setup.hpp"
 #include "sim/truth_dynamics.hpp"
 
 namespace visors::mc {
-
-std::vector<DataFileUse> data_files_of(const sim::CampaignScenario& s) {
-  std::vector<DataFileUse> out;
-  for (const std::string& name : {s.gnss.nav_file, s.forces.gravity.model, s.forces.drag.space_weather, s.forces.earth_frame.eop}) {
-    if (name.empty()) continue;
-    const auto path = core::files::find_data_file(name);
-    if (!path) continue;
-    if (auto use = describe_data_file(*path); use.ok()) out.push_back(*use);
-  }
-  return out;
-}
 
 void warm_caches(const sim::CampaignScenario& base) {
   (void)sim::make_truth_dynamics(base, base.dsc, "dsc");
@@ -28,7 +16,7 @@ core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore
                                           const RunnerHooks& hooks, RemoteWorkers* remote) {
   auto base = base_scenario(campaign);
   if (!base.ok()) return base.error();
-  if (auto ok = store.record_campaign(campaign, sim::campaign_to_toml(*base), data_files_of(*base)); !ok) return ok.error();
+  if (auto ok = store.record_campaign(campaign, sim::campaign_to_toml(*base), sim::data_files_of(*base)); !ok) return ok.error();
   auto stored = store.stored_runs();
   if (!stored.ok()) return stored.error();
   std::vector<std::int64_t> todo;

@@ -26,8 +26,5 @@ core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore
 /// them), so that the runs forked from it find them parsed: half a run's set-up time.
 void warm_caches(const sim::CampaignScenario& base);
 
-/// The data files the scenario reads, found on the data search path (the missing ones are the
-/// embedded defaults each run warns about).
-std::vector<DataFileUse> data_files_of(const sim::CampaignScenario& scenario);
 
 }  // namespace visors::mc

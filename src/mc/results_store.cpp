@@ -122,6 +122,7 @@ core::Result<bool> ResultsStore::record_campaign(const Campaign& c, const std::s
   if (auto ok = run_all(statement); !ok) return ok;
   VISORS_MC_TAKE(files, db_.prepare("INSERT OR REPLACE INTO data_files VALUES (?, ?, ?)"));
   for (const DataFileUse& f : data_files) {
+    if (f.path.empty()) continue;  // not found: the runs use an embedded default (their events say so)
     files.bind(1, f.path).bind(2, f.size).bind(3, f.checksum);
     if (auto ok = run_all(files); !ok) return ok;
   }
@@ -228,7 +229,11 @@ core::Result<CampaignInfo> ResultsStore::info() {
   for (;;) {
     VISORS_MC_TAKE(row, s.step());
     if (!row) return out;
-    out.data_files.push_back(DataFileUse{s.text(0), s.integer(1), s.text(2)});
+    DataFileUse f;
+    f.path = s.text(0);
+    f.size = s.integer(1);
+    f.checksum = s.text(2);
+    out.data_files.push_back(f);
   }
 }
 
@@ -262,21 +267,6 @@ nlohmann::json without_timings(const nlohmann::json& summary) {
     for (const char* key : kTimingKeys) kept.erase(key);
   }
   return kept;
-}
-
-core::Result<DataFileUse> describe_data_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path.string(), "cannot be read"};
-  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a 64 offset basis
-  std::int64_t size = 0;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    for (std::streamsize i = 0; i < in.gcount(); ++i) {
-      hash = (hash ^ static_cast<unsigned char>(buffer[i])) * 0x100000001b3ULL;  // FNV prime
-    }
-    size += in.gcount();
-  }
-  return DataFileUse{path.string(), size, fmt::format("{:016x}", hash)};
 }
 
 std::string program_version() { return "visors " VISORS_VERSION; }

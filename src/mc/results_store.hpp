@@ -26,14 +26,11 @@
 #include "mc/campaign_file.hpp"
 #include "mc/run_record.hpp"
 #include "mc/sqlite_database.hpp"
+#include "sim/data_provenance.hpp"
 
 namespace visors::mc {
 
-struct DataFileUse {
-  std::string path;
-  std::int64_t size = 0;
-  std::string checksum;  // FNV-1a 64, hex
-};
+using sim::DataFileUse;
 
 struct StoredRun {
   std::int64_t run = 0;
@@ -83,9 +80,6 @@ class ResultsStore {
 
 /// A run's summary less its host-dependent timings (what `summaries.summary` stores).
 nlohmann::json without_timings(const nlohmann::json& summary);
-
-/// FNV-1a 64-bit of a file's bytes, as 16 hex digits (a change detector, not a cryptographic hash).
-core::Result<DataFileUse> describe_data_file(const std::filesystem::path& path);
 
 /// The program's version ("visors <version>").
 std::string program_version();

@@ -16,6 +16,7 @@
 #include "astro/sun_moon.hpp"
 #include "core/files/data_path.hpp"
 #include "core/rtn_frame.hpp"
+#include "sim/data_provenance.hpp"
 #include "sim/formation_initial_state.hpp"
 #include "sim/host_records.hpp"
 
@@ -130,10 +131,10 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
       // Without the constellation there is no GPS to navigate with: the run goes on with ideal
       // navigation (the main command works without the shared data), loudly.
       sim.scenario_.navigation_mode = NavigationMode::kIdeal;
-      recorder.event(0.0, "sim", "warning",
-                     fmt::format("gnss.nav_file '{}' not found in the data search path: no GPS constellation, so "
-                                 "navigation mode cdgps falls back to ideal navigation (the [navigation] errors)",
-                                 scenario.gnss.nav_file));
+      sim.fallbacks_.push_back(fmt::format("gnss.nav_file '{}' not found in the data search path: no GPS constellation, "
+                                           "so navigation mode cdgps falls back to ideal navigation (the [navigation] errors)",
+                                           scenario.gnss.nav_file));
+      recorder.event(0.0, "sim", "warning", sim.fallbacks_.back());
     }
   }
   const GpsWorld* gps = sim.gps_ ? &*sim.gps_ : nullptr;
@@ -146,7 +147,10 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
     return ok.error();
   }
   for (const SimulatedSpacecraft& v : sim.vehicles_) {
-    for (const auto& warning : v.truth.forces->warnings()) recorder.event(0.0, v.name, "warning", warning);
+    for (const auto& warning : v.truth.forces->warnings()) {
+      recorder.event(0.0, v.name, "warning", warning);
+      if (std::find(sim.fallbacks_.begin(), sim.fallbacks_.end(), warning) == sim.fallbacks_.end()) sim.fallbacks_.push_back(warning);
+    }
   }
   return sim;
 }
@@ -684,6 +688,13 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
   }
   summary["observations"] = list;
   summary["success_rate"] = attempts > 0 ? static_cast<double>(successes) / attempts : 0.0;
+  nlohmann::json files = nlohmann::json::array();
+  for (const DataFileUse& f : sim::data_files_of(scenario_)) {
+    files.push_back({{"key", f.key}, {"name", f.name}, {"path", f.path.empty() ? nlohmann::json() : nlohmann::json(f.path)},
+                     {"bytes", f.size}, {"fnv1a64", f.checksum}});
+  }
+  summary["data_files"] = files;
+  summary["embedded_defaults"] = fallbacks_;
   summary["requirements"] = {{"lateral_error_m", requirements_.lateral_error_m},
                              {"lateral_velocity_mps", requirements_.lateral_velocity_mps},
                              {"focus_error_m", requirements_.focus_error_m},

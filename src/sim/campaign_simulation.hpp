@@ -144,6 +144,7 @@ class CampaignSimulation {
   std::optional<RandomStream> garbage_rng_;
   std::array<std::vector<float>, 2> step_us_;  // wall time of each component step [us]
   std::array<HostRecords, 2> host_records_;    // this step's input records of each component
+  std::vector<std::string> fallbacks_;          // embedded defaults used for missing data (the warnings)
   std::unique_ptr<PairedWorker> components_;   // steps the two components (a pointer: movable)
 };
 
