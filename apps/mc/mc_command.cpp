@@ -1,6 +1,7 @@
 #include "mc/mc_command.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -26,12 +27,19 @@ namespace {
 constexpr int kExitBadInput = 2;
 constexpr int kExitFailed = 1;
 
-void print_progress(const mc::PoolProgress& p, bool terminal) {
+// On a terminal a refreshed line; in a log, a line a minute.
+void print_progress(const mc::PoolProgress& p, bool terminal, double& last_line_s) {
   const double per_minute = p.wall_s > 0.0 ? 60.0 * static_cast<double>(p.finished) / p.wall_s : 0.0;
   const double eta_s = per_minute > 0.0 ? 60.0 * static_cast<double>(p.total - p.finished) / per_minute : 0.0;
   const std::string line = fmt::format("  runs {}/{} done, {} running, {} failed; {:.1f} runs/min; ETA {:.0f} min", p.finished,
                                        p.total, p.running, p.failed, per_minute, eta_s / 60.0);
-  if (terminal) fmt::print(stderr, "\r{}   ", line);
+  if (terminal) {
+    fmt::print(stderr, "\r{}   ", line);
+  } else if (p.wall_s - last_line_s >= 60.0 || p.finished == p.total) {
+    fmt::print("{}\n", line);
+    std::fflush(stdout);
+    last_line_s = p.wall_s;
+  }
 }
 
 // Success per sweep value over the stored runs (the figure's lower panel), on the terminal.
@@ -119,11 +127,12 @@ int coordinate(const McOptions& o, const mc::MpiSession* mpi) {
   pool.scratch = out / "runs";
   pool.keep_runs = o.keep_runs;
   const int ranks = mpi != nullptr ? mpi->size() : 1;
-  fmt::print("visors mc: {} ({}), {} runs on {} processes{}, results {}\n", campaign->name, o.campaign, campaign->total_runs(),
+  fmt::print("visors mc: {} ({}), {} runs, {} at a time{}, results {}\n", campaign->name, o.campaign, campaign->total_runs(),
              pool.workers, ranks > 1 ? fmt::format(" here and {} more MPI ranks", ranks - 1) : "", database.string());
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   mc::RunnerHooks hooks;
-  hooks.progress = [&](const mc::PoolProgress& p) { print_progress(p, terminal); };
+  double last_line_s = 0.0;
+  hooks.progress = [&](const mc::PoolProgress& p) { print_progress(p, terminal, last_line_s); };
   hooks.stored = [&](const mc::RunSpec& spec, const mc::RunRecord& record) {
     if (record.ok) return;
     if (terminal) fmt::print(stderr, "\r");
