@@ -116,6 +116,15 @@ core::Result<bool> ResultsStore::record_campaign(const Campaign& c, const std::s
     return true;
   }
   if (auto ok = db_.execute("BEGIN IMMEDIATE"); !ok) return ok;
+  if (auto ok = insert_campaign(c, base_scenario_toml, data_files); !ok) {
+    (void)db_.execute("ROLLBACK");
+    return ok;
+  }
+  return db_.execute("COMMIT");
+}
+
+core::Result<bool> ResultsStore::insert_campaign(const Campaign& c, const std::string& base_scenario_toml,
+                                                 const std::vector<DataFileUse>& data_files) {
   VISORS_MC_TAKE(statement, db_.prepare("INSERT INTO campaign VALUES (1, ?, ?, ?, ?, ?, ?, ?, ?)"));
   statement.bind(1, c.name).bind(2, c.text).bind(3, c.scenario_path.string()).bind(4, c.scenario_text);
   statement.bind(5, base_scenario_toml).bind(6, program_version()).bind(7, c.total_runs()).bind(8, utc_now());
@@ -126,7 +135,7 @@ core::Result<bool> ResultsStore::record_campaign(const Campaign& c, const std::s
     files.bind(1, f.path).bind(2, f.size).bind(3, f.checksum);
     if (auto ok = run_all(files); !ok) return ok;
   }
-  return db_.execute("COMMIT");
+  return true;
 }
 
 core::Result<std::pair<std::string, std::string>> ResultsStore::campaign_file() const {

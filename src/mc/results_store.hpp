@@ -72,6 +72,8 @@ class ResultsStore {
 
  private:
   explicit ResultsStore(SqlDatabase db) : db_(std::move(db)) {}
+  core::Result<bool> insert_campaign(const Campaign& campaign, const std::string& base_scenario_toml,
+                                     const std::vector<DataFileUse>& data_files);
   core::Result<bool> insert_run(const RunSpec& spec, const RunRecord& record);
   core::Result<bool> insert_observations(const RunRecord& record);
   core::Result<bool> insert_summary(const RunRecord& record);
