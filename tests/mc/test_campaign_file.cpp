@@ -89,5 +89,11 @@ TEST(CampaignFile, ShippedSensitivityCampaignIsValid) {
   EXPECT_EQ(c->sweeps.size(), 3U);  // CoM knowledge, magnitude error, direction error (the paper's figure)
 }
 
+TEST(CampaignFile, ShippedIdealNavigationCentreOfMassCampaignIsValid) {
+  const auto c = load_campaign("campaigns/com_knowledge_ideal_navigation.toml");
+  ASSERT_TRUE(c.ok()) << c.error().describe();
+  EXPECT_EQ(c->total_runs(), 50);  // 5 values x 10 runs: 100 attempts per value
+}
+
 }  // namespace
 }  // namespace visors::mc
