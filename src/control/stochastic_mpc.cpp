@@ -78,13 +78,15 @@ core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElemen
 
 core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
                                             const astro::RelativeOrbitalElements& roe_estimate,
-                                            const Matrix6d& covariance) {
+                                            const Matrix6d& covariance,
+                                            const astro::RelativeOrbitalElements& drift_tf) {
   if (!has_target_) return invalid("target", "set_target() was not called");
   if (!std::isfinite(t) || t < last_t_ || t > tf_) return invalid("t", "must be finite, non-decreasing and <= tf");
   const auto chief_ok = astro::validate_keplerian(chief_mean_t);
   if (!chief_ok.ok()) return invalid("chief_mean_t." + chief_ok.error().field, chief_ok.error().message);
   if (auto ok = validate_roe(roe_estimate, "roe_estimate"); !ok) return ok.error();
   if (!symmetric_psd(covariance, true)) return invalid("covariance", "must be finite, symmetric and positive definite");
+  if (auto ok = validate_roe(drift_tf, "drift_tf"); !ok) return ok.error();
   last_t_ = t;
 
   const core::EarthGravityConstants& gravity = settings_.planner.gravity;
@@ -96,7 +98,7 @@ core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro:
   // Predicted terminal state and covariance with the remaining impulses.
   auto predict = [&](Eigen::Matrix<double, 6, 1>& mean, Matrix6d& cov) {
     const astro::RoeStm phi = astro::j2_roe_stm(chief_mean_t, tau, gravity);
-    mean = phi * roe_estimate;
+    mean = phi * roe_estimate + drift_tf;
     cov = phi * covariance * phi.transpose() + settings_.terminal_process_noise;
     for (const Impulse& imp : plan_.impulses) {
       const Eigen::Matrix<double, 6, 3> b = impulse_effect(chief_mean_t, imp.t - t, tau, gravity);
@@ -124,7 +126,8 @@ core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro:
     const double t_earliest = std::min(settings_.burn_latency_s, tau);
     // Into the spare plan, swapped in on success (the previous plan stays on failure); both keep
     // their reserved capacity, so replanning allocates nothing.
-    if (auto ok = planner_.plan_into(fresh_, chief_mean_t, roe_estimate, target_, t_earliest, tau); !ok) return ok.error();
+    const astro::RelativeOrbitalElements aim = target_ - drift_tf;
+    if (auto ok = planner_.plan_into(fresh_, chief_mean_t, roe_estimate, aim, t_earliest, tau); !ok) return ok.error();
     std::swap(plan_, fresh_);
     for (Impulse& imp : plan_.impulses) imp.t += t;
     has_plan_ = true;

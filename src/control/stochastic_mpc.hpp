@@ -16,6 +16,11 @@
 // plan yet), unless t is inside the freeze window before tf (digest: avoid replanning storms
 // near the target time; the planner also refuses horizons below its minimum).
 //
+// Accelerations outside the planner's J2 model (differential drag) enter as a known drift: the
+// caller's prediction of their effect on the mean ROE at tf, added to mu_f. Since the model is
+// linear, planning onto target - drift makes the drift carry the formation onto the target; the
+// plan then compensates the disturbance ahead instead of leaving it to the last burns.
+//
 // Times are seconds since the MPC's epoch (the same t0 for the estimates and the impulses).
 
 #include <vector>
@@ -57,7 +62,7 @@ struct MpcStep {
   double mahalanobis = 0.0;
   /// The impulses still to execute (t_j >= t), after any replanning, sorted.
   std::vector<Impulse> remaining;
-  /// Predicted terminal mean ROE with the remaining impulses [-].
+  /// Predicted terminal mean ROE with the remaining impulses and the drift [-].
   astro::RelativeOrbitalElements roe_final_predicted = astro::RelativeOrbitalElements::Zero();
 };
 
@@ -77,10 +82,13 @@ class StochasticMpc {
                              const astro::RelativeOrbitalElements& roe_estimate,
                              const Eigen::Matrix<double, 6, 6>& covariance);
   /// The same into `out` (out.remaining cleared and refilled: given capacity for the planner's
-  /// max_impulses, a step allocates nothing, replanning included).
+  /// max_impulses, a step allocates nothing, replanning included). `drift_tf`: the predicted
+  /// effect at tf of accelerations the planner does not model [-] (error "drift_tf" when not
+  /// finite).
   core::Result<bool> step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
                                const astro::RelativeOrbitalElements& roe_estimate,
-                               const Eigen::Matrix<double, 6, 6>& covariance);
+                               const Eigen::Matrix<double, 6, 6>& covariance,
+                               const astro::RelativeOrbitalElements& drift_tf = astro::RelativeOrbitalElements::Zero());
 
   /// The current plan (absolute impulse times; executed impulses are dropped at each step).
   [[nodiscard]] const ManeuverPlan& plan() const { return plan_; }

@@ -355,8 +355,8 @@ bool FlightComponent::schedule_observation(GncOutputs& out) {
   const double to_aligned = next->aligned.seconds_since(estimate_->t);
   const double window = config_.science.least_squares_window_s + 0.5 * config_.science.observation_duration_s;
   const astro::KeplerianElements chief_ls = astro::propagate_mean_j2(estimate_->chief_mean, to_aligned - window, config_.gravity);
-  const astro::RoeStm phi = astro::j2_roe_stm(chief_ls, window, config_.gravity);
-  const astro::RelativeOrbitalElements roe_ls = phi.partialPivLu().solve(next->roe_target);
+  window_stm_inverse_ = astro::j2_roe_stm(chief_ls, window, config_.gravity).inverse();
+  const astro::RelativeOrbitalElements roe_ls = window_stm_inverse_ * next->roe_target;
   const core::GpsTime handover = next->aligned - window;
   if (!mpc_.set_target(roe_ls, handover.seconds_since(mpc_epoch_)).ok()) planning_failed();
   mpc_started_ = true;
@@ -391,7 +391,12 @@ void FlightComponent::science_mpc() {
   if (since(last_mpc_) < config_.science.mpc_period_s) return;
   last_mpc_ = now_;
   const double t = estimate_->t.seconds_since(mpc_epoch_);
-  if (!mpc_.step_into(mpc_step_, t, estimate_->chief_mean, estimate_->roe_mean, estimate_->roe_covariance).ok()) {
+  // The estimated differential drag from now to the aligned time, carried back to the handover:
+  // the MPC's plan compensates it ahead, so the fine-control burns, whose execution errors land
+  // closest to the observation, only trim (the paper's reason (ii) for low sensitivity to them).
+  const double to_aligned = observation_->aligned.seconds_since(estimate_->t);
+  const astro::RelativeOrbitalElements drift = window_stm_inverse_ * drag_drift(to_aligned);
+  if (!mpc_.step_into(mpc_step_, t, estimate_->chief_mean, estimate_->roe_mean, estimate_->roe_covariance, drift).ok()) {
     planning_failed();
     return;
   }
@@ -403,12 +408,13 @@ void FlightComponent::science_mpc() {
 void FlightComponent::science_fine_control() {
   const double to_start = observation_->start.seconds_since(estimate_->t);
   const double to_aligned = observation_->aligned.seconds_since(estimate_->t);
-  double burns[3];
+  std::array<double, control::kMaxLeastSquaresBurns> burns{};
   int count = 0;
   // Usable burns: after the planning latency, and early enough that their pieces (centred on the
   // burn) end a plenum refill before the slew.
   const double slew_before = observation_->start.seconds_since(observation_->slew_start);
-  for (const double before : config_.science.least_squares_burns_before_s) {
+  for (int k = 0; k < config_.science.least_squares_burns; ++k) {
+    const double before = config_.science.least_squares_burns_before_s[static_cast<std::size_t>(k)];
     const double t_burn = to_start - before;
     if (t_burn >= config_.burn_latency_s && before >= slew_before + config_.buffer.limits.spacing_s) burns[count++] = t_burn;
   }
@@ -426,7 +432,7 @@ void FlightComponent::science_fine_control() {
     return;
   }
   if (!control::plan_least_squares_into(ls_plan_, estimate_->chief_mean, estimate_->roe_mean, target, to_aligned,
-                                        std::span<const double>(burns, static_cast<std::size_t>(count)),
+                                        std::span<const double>(burns.data(), static_cast<std::size_t>(count)),
                                         config_.science.least_squares, config_.gravity)
            .ok()) {
     planning_failed();

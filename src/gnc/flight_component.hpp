@@ -37,6 +37,7 @@
 #include <optional>
 #include <span>
 
+#include "astro/roe_stm.hpp"
 #include "control/closed_form_planner.hpp"
 #include "control/least_squares_planner.hpp"
 #include "control/stochastic_mpc.hpp"
@@ -150,6 +151,9 @@ class FlightComponent {
   int observations_done_ = 0;
   std::optional<ScheduledObservation> observation_;
   core::GpsTime mpc_epoch_;
+  /// Phi(t_aligned, t_handover)^-1: carries a mean-ROE change at the aligned time back to the
+  /// MPC's target time (the free J2 motion over the fine-control window).
+  astro::RoeStm window_stm_inverse_ = astro::RoeStm::Identity();
   core::GpsTime last_mpc_;
   bool mpc_started_ = false;
   bool ls_planned_ = false;  // a least-squares plan exists for the current observation

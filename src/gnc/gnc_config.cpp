@@ -31,7 +31,10 @@ core::Result<GncConfig> validate(const GncConfig& config) {
   }
   const auto& sc = config.science;
   if (!positive(sc.least_squares_window_s)) return core::Error{"science.least_squares_window_s", "must be > 0"};
-  for (int k = 0; k < 3; ++k) {
+  if (sc.least_squares_burns < 1 || sc.least_squares_burns > control::kMaxLeastSquaresBurns) {
+    return core::Error{"science.least_squares_burns", "must be in [1, " + std::to_string(control::kMaxLeastSquaresBurns) + "]"};
+  }
+  for (int k = 0; k < sc.least_squares_burns; ++k) {
     const double b = sc.least_squares_burns_before_s[k];
     if (!(b > 0.0 && b <= sc.least_squares_window_s) || (k > 0 && !(b < sc.least_squares_burns_before_s[k - 1]))) {
       return core::Error{"science.least_squares_burns_before_s",

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -15,16 +17,37 @@ core::Result<ScenarioValue> scenario_value(const toml::node& node, const std::st
   }
   if (const auto* v = node.as_boolean()) return ScenarioValue{v->get()};
   if (const auto* v = node.as_string()) return ScenarioValue{v->get()};
-  return core::Error{field, "must be a number, a boolean or a string"};
+  if (const auto* array = node.as_array(); array != nullptr && !array->empty()) {
+    std::vector<double> numbers;
+    for (std::size_t k = 0; k < array->size(); ++k) {
+      const toml::node& element = (*array)[k];
+      const std::optional<double> number = element.is_number() ? element.value<double>() : std::nullopt;
+      if (!number || !std::isfinite(*number)) return core::Error{fmt::format("{}[{}]", field, k), "must be a finite number"};
+      numbers.push_back(*number);
+    }
+    return ScenarioValue{std::move(numbers)};
+  }
+  return core::Error{field, "must be a number, a boolean, a string or a non-empty array of numbers"};
 }
+
+namespace {
+
+std::string float_text(double v) {
+  std::string s = fmt::format("{}", v);  // the shortest text that reads back to v
+  if (s.find_first_of(".en") == std::string::npos) s += ".0";  // stays a TOML float
+  return s;
+}
+
+}  // namespace
 
 std::string to_text(const ScenarioValue& value) {
   struct Text {
     std::string operator()(std::int64_t v) const { return std::to_string(v); }
-    std::string operator()(double v) const {
-      std::string s = fmt::format("{}", v);  // the shortest text that reads back to v
-      if (s.find_first_of(".en") == std::string::npos) s += ".0";  // stays a TOML float
-      return s;
+    std::string operator()(double v) const { return float_text(v); }
+    std::string operator()(const std::vector<double>& v) const {
+      std::string out = "[";
+      for (std::size_t k = 0; k < v.size(); ++k) out += (k > 0 ? ", " : "") + float_text(v[k]);
+      return out + "]";
     }
     std::string operator()(bool v) const { return v ? "true" : "false"; }
     std::string operator()(const std::string& v) const {
@@ -59,7 +82,17 @@ core::Result<bool> set_key(toml::table& root, const std::string& dotted_key, con
   }
   const std::string leaf = dotted_key.substr(start);
   if (leaf.empty()) return core::Error{dotted_key, "is not a key path (an empty part)"};
-  std::visit([&](const auto& v) { table->insert_or_assign(leaf, v); }, value);
+  if (const auto* numbers = std::get_if<std::vector<double>>(&value)) {
+    toml::array array;
+    for (const double v : *numbers) array.push_back(v);
+    table->insert_or_assign(leaf, std::move(array));
+    return true;
+  }
+  std::visit(
+      [&](const auto& v) {
+        if constexpr (!std::is_same_v<std::decay_t<decltype(v)>, std::vector<double>>) table->insert_or_assign(leaf, v);
+      },
+      value);
   return true;
 }
 

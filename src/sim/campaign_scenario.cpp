@@ -1,9 +1,11 @@
 #include "sim/campaign_scenario.hpp"
 
 #include <cmath>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/angles.hpp"
 #include "core/constants.hpp"
@@ -37,6 +39,26 @@ core::Result<Eigen::Matrix<double, 6, 1>> vector6_at(const toml::table& table, c
     out(static_cast<Eigen::Index>(k)) = *value;
   }
   return out;
+}
+
+// The least-squares burn times [s before the observation]: an array of 1..kMaxLeastSquaresBurns
+// numbers (their order and range are checked with the rest of the GNC configuration).
+core::Result<bool> read_burn_times(const toml::table& table, const std::string& section, gnc::ScienceSettings& science) {
+  const toml::node* node = table.get("least_squares_burns_before_s");
+  if (node == nullptr) return true;
+  const std::string field = field_name(section, "least_squares_burns_before_s");
+  const toml::array* array = node->as_array();
+  const auto capacity = science.least_squares_burns_before_s.size();
+  if (array == nullptr || array->empty() || array->size() > capacity) {
+    return Error{field, fmt::format("must be an array of 1 to {} numbers", capacity)};
+  }
+  for (std::size_t k = 0; k < array->size(); ++k) {
+    const auto value = (*array)[k].value<double>();
+    if (!value || !std::isfinite(*value)) return Error{field, fmt::format("element {} must be a finite number", k)};
+    science.least_squares_burns_before_s[k] = *value;
+  }
+  science.least_squares_burns = static_cast<int>(array->size());
+  return true;
 }
 
 const toml::table* table_at(const toml::table& root, std::string_view key) { return root.get_as<toml::table>(key); }
@@ -283,7 +305,7 @@ core::Result<bool> read_gnc(const toml::table& root, CampaignScenario& s) {
   if (auto e = check_keys(*g, sec, {"standby_de_deadband_m", "standby_dlambda_threshold_m", "transfer_leg_orbits",
                                     "mpc_period_s", "least_squares_window_s", "safety_epsilon_m", "safety_q_sigma",
                                     "safety_horizon_orbits", "safety_check_period_s", "escape_da_target_m",
-                                    "north"})) {
+                                    "north", "least_squares_burns_before_s"})) {
     return *e;
   }
   auto& c = s.gnc;
@@ -309,6 +331,7 @@ core::Result<bool> read_gnc(const toml::table& root, CampaignScenario& s) {
   c.safety.check_period_s = period;
   c.escape.da_target_m = da;
   c.science.geometry.north = north;
+  if (auto ok = read_burn_times(*g, sec, c.science); !ok) return ok.error();
   if (auto ok = gnc::validate(c); !ok) return Error{"gnc (" + ok.error().field + ")", ok.error().message};
   return true;
 }
@@ -389,10 +412,13 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      s.geometry.com_sigma_m, s.geometry.com_knowledge_error_m, s.geometry.payload_position_sigma_m,
                      s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad);
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
-  out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\n\n",
+  out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\nleast_squares_burns_before_s = [{:.17g}]\n\n",
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,
                      g.science.mpc_period_s, g.science.least_squares_window_s, g.safety.epsilon_m, g.safety.q_sigma,
-                     g.safety.horizon_orbits, g.safety.check_period_s, g.escape.da_target_m, g.science.geometry.north);
+                     g.safety.horizon_orbits, g.safety.check_period_s, g.escape.da_target_m, g.science.geometry.north,
+                     fmt::join(std::span(g.science.least_squares_burns_before_s.data(),
+                                         static_cast<std::size_t>(g.science.least_squares_burns)),
+                               ", "));
   out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\nnon_gnc_fault_t_s = {:.17g}\n",
                      s.fault.impulse_t_s, s.fault.impulse_dv_rtn_mps(0), s.fault.impulse_dv_rtn_mps(1),
                      s.fault.impulse_dv_rtn_mps(2), s.fault.non_gnc_fault_t_s);
