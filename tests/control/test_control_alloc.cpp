@@ -96,12 +96,13 @@ TEST(ControlAllocation, MpcStepIntoAllocatesNothingWhenItReplans) {
   for (const Impulse& i : step.remaining) {
     if (i.t < t) done.push_back(i);
   }
-  const auto disturbed = predict_roe(test::mission_chief(), test::standby(), done, t) + test::roe_m(0, 0.5, 0, 0, 0, 0);
+  // A named type, not auto: an Eigen sum of a temporary would dangle.
+  const astro::RelativeOrbitalElements disturbed = predict_roe(test::mission_chief(), test::standby(), done, t) + test::roe_m(0, 0.5, 0, 0, 0, 0);
   const auto chief_t = astro::propagate_mean_j2(test::mission_chief(), t);
   core::Result<bool> second = true;
   allocations = count_allocations([&] { second = mpc.step_into(step, t, chief_t, disturbed, covariance); });
   ASSERT_TRUE(second.ok()) << second.error().describe();
-  EXPECT_TRUE(step.replanned);
+  EXPECT_TRUE(step.replanned) << "d = " << step.mahalanobis;
   EXPECT_EQ(allocations, 0);
 }
 

@@ -10,6 +10,7 @@
 #include "core/rtn_frame.hpp"
 #include "formation_harness.hpp"
 #include "gnc/differential_drag_estimator.hpp"
+#include "gnc/gnc_config.hpp"
 #include "gnc/maneuver_queue.hpp"
 #include "gnc/observation_schedule.hpp"
 
@@ -95,6 +96,24 @@ TEST(ObservationSchedule, SlewIsCommandedBeforeTheWindow) {
   const auto next = next_observation(test::mission_chief(), kT0, 1, ScienceSettings{}, {}).value();
   // ScienceSettings::slew_settle_s (documented setting, 30 s); measured 33.5 s (2026-11)
   EXPECT_GE(next.start.seconds_since(next.slew_start), ScienceSettings{}.slew_settle_s);
+}
+
+}  // namespace
+
+namespace {
+
+// GNC configuration checks of the fine-control burn list (gnc_config.hpp).
+TEST(GncConfig, BurnCountOutsideTheArrayIsNamed) {
+  GncConfig config;
+  config.science.least_squares_burns = visors::control::kMaxLeastSquaresBurns + 1;
+  EXPECT_EQ(validate(config).error().field, "science.least_squares_burns");
+}
+
+TEST(GncConfig, OnlyTheUsedBurnTimesAreChecked) {
+  GncConfig config;
+  config.science.least_squares_burns = 2;
+  config.science.least_squares_burns_before_s[2] = -1.0;  // unused: not an error
+  EXPECT_TRUE(validate(config).ok());
 }
 
 }  // namespace

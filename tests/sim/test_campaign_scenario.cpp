@@ -110,6 +110,49 @@ TEST(CampaignScenario, ForcesAreReadWithTheirOwnValidation) {
   EXPECT_FALSE(s.ok());
 }
 
+// The fine-control burn times (gnc_config.hpp): six 150 s apart by default.
+TEST(CampaignScenario, DefaultFineControlBurnsAreSix150SecondsApart) {
+  const auto s = default_campaign();
+  ASSERT_EQ(s.gnc.science.least_squares_burns, 6);
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(s.gnc.science.least_squares_burns_before_s[static_cast<std::size_t>(k)], 900.0 - 150.0 * k);
+}
+
+TEST(CampaignScenario, FineControlBurnTimesAreRead) {
+  const auto s = campaign_from_toml("[gnc]\nleast_squares_burns_before_s = [800.0, 400.0]\n").value();
+  EXPECT_EQ(s.gnc.science.least_squares_burns, 2);
+  EXPECT_EQ(s.gnc.science.least_squares_burns_before_s[1], 400.0);
+}
+
+TEST(CampaignScenario, TooManyFineControlBurnsAreNamed) {
+  const auto s = campaign_from_toml("[gnc]\nleast_squares_burns_before_s = [800.0, 700.0, 600.0, 500.0, 400.0, 300.0, 200.0]\n");
+  EXPECT_EQ(s.error().field, "gnc.least_squares_burns_before_s");
+}
+
+TEST(CampaignScenario, ANonNumericBurnTimeIsNamed) {
+  const auto s = campaign_from_toml("[gnc]\nleast_squares_burns_before_s = [800.0, \"late\"]\n");
+  EXPECT_EQ(s.error().field, "gnc.least_squares_burns_before_s");
+}
+
+// The order and the window are the GNC configuration's checks (gnc::validate).
+TEST(CampaignScenario, IncreasingBurnTimesAreNamed) {
+  const auto s = campaign_from_toml("[gnc]\nleast_squares_burns_before_s = [300.0, 600.0]\n");
+  EXPECT_NE(s.error().field.find("science.least_squares_burns_before_s"), std::string::npos);
+}
+
+TEST(CampaignScenario, ABurnBeforeTheWindowIsNamed) {
+  const auto s = campaign_from_toml("[gnc]\nleast_squares_window_s = 600.0\nleast_squares_burns_before_s = [900.0, 300.0]\n");
+  EXPECT_NE(s.error().field.find("science.least_squares_burns_before_s"), std::string::npos);
+}
+
+TEST(CampaignScenario, ResolvedBurnTimesReadBack) {
+  auto s = default_campaign();
+  s.gnc.science.least_squares_burns = 3;
+  s.gnc.science.least_squares_burns_before_s[2] = 123.25;
+  const auto back = campaign_from_toml(campaign_to_toml(s)).value();
+  EXPECT_EQ(back.gnc.science.least_squares_burns, 3);
+  EXPECT_EQ(back.gnc.science.least_squares_burns_before_s[2], 123.25);
+}
+
 // The resolved scenario (the run directory's scenario.toml) reads back to the same values.
 TEST(CampaignScenario, ResolvedScenarioReadsBack) {
   auto s = default_campaign();
