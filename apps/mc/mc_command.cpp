@@ -6,7 +6,6 @@
 #include <memory>
 #include <optional>
 #include <filesystem>
-#include <map>
 #include <thread>
 #include <unistd.h>
 
@@ -42,28 +41,18 @@ void print_progress(const mc::PoolProgress& p, bool terminal, double& last_line_
   }
 }
 
-// Success per sweep value over the stored runs (the figure's lower panel), on the terminal.
+// Success per sweep value over the stored runs (the figure's lower panel), on the terminal, in the
+// campaign file's order.
 void print_results(mc::ResultsStore& store) {
   auto runs = store.runs();
   if (!runs.ok()) return;
-  std::map<std::pair<std::string, std::string>, std::pair<long, long>> attempts;  // (key, value) -> (successes, attempts)
   long failed = 0;
-  for (const mc::StoredRun& r : *runs) {
-    if (!r.ok) {
-      ++failed;
-      continue;
-    }
-    auto& [ok, all] = attempts[{r.sweep_key, r.sweep_value_text}];
-    for (const auto& o : r.summary.value("observations", nlohmann::json::array())) {
-      ok += o.value("success", false) ? 1 : 0;
-      ++all;
-    }
-  }
+  for (const mc::StoredRun& r : *runs) failed += r.ok ? 0 : 1;
   fmt::print("  {} runs stored, {} failed\n", runs->size(), failed);
-  for (const auto& [key, counts] : attempts) {
-    const std::string what = key.first.empty() ? std::string("all runs") : fmt::format("{} = {}", key.first, key.second);
-    fmt::print("  {}: {} of {} attempts succeeded ({:.0f} %)\n", what, counts.first, counts.second,
-               counts.second > 0 ? 100.0 * static_cast<double>(counts.first) / static_cast<double>(counts.second) : 0.0);
+  for (const mc::ValueSuccess& v : mc::success_by_value(*runs)) {
+    const std::string what = v.key.empty() ? v.value : fmt::format("{} = {}", v.key, v.value);
+    fmt::print("  {}: {} of {} attempts succeeded ({:.0f} %)\n", what, v.successes, v.attempts,
+               v.attempts > 0 ? 100.0 * static_cast<double>(v.successes) / static_cast<double>(v.attempts) : 0.0);
   }
 }
 

@@ -231,6 +231,19 @@ std::string page(const CampaignInfo& info, const std::vector<StoredRun>& runs) {
 
 }  // namespace
 
+std::vector<ValueSuccess> success_by_value(const std::vector<StoredRun>& runs) {
+  double unused_requirement = 0.0;
+  std::vector<ValueSuccess> out;
+  for (const SweepGroup& sweep : group(runs, unused_requirement)) {
+    for (const ValueGroup& g : sweep.values) {
+      ValueSuccess v{sweep.key, g.label, 0, static_cast<long>(g.attempts.size())};
+      for (const Attempt& a : g.attempts) v.successes += a.success ? 1 : 0;
+      out.push_back(v);
+    }
+  }
+  return out;
+}
+
 core::Result<std::filesystem::path> write_campaign_report(ResultsStore& store, const std::filesystem::path& out_dir) {
   auto info = store.info();
   if (!info.ok()) return info.error();

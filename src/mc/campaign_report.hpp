@@ -7,11 +7,25 @@
 // data files with checksums).
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "core/status.hpp"
 #include "mc/results_store.hpp"
 
 namespace visors::mc {
+
+/// The attempts of one value of one sweep (key empty and value "all runs" without sweeps).
+struct ValueSuccess {
+  std::string key;
+  std::string value;  // as the campaign file wrote it
+  long successes = 0;
+  long attempts = 0;
+};
+
+/// Successes per sweep value over the runs that ended, in the campaign's order (sweeps and values
+/// as the file lists them), the grouping of the report's figure.
+std::vector<ValueSuccess> success_by_value(const std::vector<StoredRun>& runs);
 
 /// Writes `out_dir`/report.html from the store; returns its path.
 core::Result<std::filesystem::path> write_campaign_report(ResultsStore& store, const std::filesystem::path& out_dir);

@@ -35,6 +35,28 @@ TEST(CampaignFile, AFloatForAnIntegerKeyIsRefused) {
   EXPECT_EQ(parse("[[sweep]]\nkey = \"campaign.observations\"\nvalues = [2.5]\n").error().field, "sweep[0].values");
 }
 
+// Arrays of numbers are values too: a burn schedule can be set or swept.
+TEST(CampaignFile, AnArrayOfNumbersCanBeSwept) {
+  const auto c = parse("[[sweep]]\nkey = \"gnc.least_squares_burns_before_s\"\nvalues = [[900.0, 540.0, 180.0], [600, 300]]\n");
+  ASSERT_TRUE(c.ok()) << c.error().describe();
+  EXPECT_EQ(to_text(c->sweeps[0].values[1]), "[600.0, 300.0]");
+}
+
+// An increasing schedule: the scenario reader's complaint names the key.
+TEST(CampaignFile, AnArrayTheScenarioRefusesIsNamed) {
+  const auto c = parse("[set]\n\"gnc.least_squares_burns_before_s\" = [300.0, 600.0]\n");
+  EXPECT_NE(c.error().message.find("science.least_squares_burns_before_s"), std::string::npos) << c.error().describe();
+}
+
+TEST(CampaignFile, ANestedArrayIsNamedWithItsElement) {
+  const auto c = parse("[set]\n\"formation.initial_roe_m\" = [0.0, [1.0]]\n");
+  EXPECT_EQ(c.error().field, "set.\"formation.initial_roe_m\"[1]");
+}
+
+TEST(CampaignFile, AnEmptyArrayIsRefused) {
+  EXPECT_EQ(parse("[set]\n\"formation.initial_roe_m\" = []\n").error().field, "set.\"formation.initial_roe_m\"");
+}
+
 TEST(CampaignFile, ADispersionBeyondTheKeysRangeAtThreeSigmaIsRefused) {
   // isp_sigma_s must be >= 0: mean 0.5, sigma 1 reaches -2.5 at 3 sigma.
   const auto c = parse("[dispersions]\n\"propulsion.isp_sigma_s\" = { normal = { mean = 0.5, sigma = 1.0 } }\n");

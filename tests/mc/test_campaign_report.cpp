@@ -44,6 +44,31 @@ std::string report_text() {
   return text.str();
 }
 
+StoredRun stored(const std::string& value_text, nlohmann::json summary) {
+  StoredRun r;
+  r.sweep_key = "propulsion.magnitude_sigma";
+  r.sweep_value_text = value_text;
+  r.ok = !summary.is_null();
+  r.summary = std::move(summary);
+  return r;
+}
+
+// The terminal's summary keeps the campaign's order: "2.5" before "10.0" (text order would swap
+// them), and a failed run adds no attempt.
+TEST(CampaignReport, SuccessByValueKeepsTheCampaignsOrder) {
+  const auto values = success_by_value({stored("2.5", summary_with({{0.005, true}})), stored("10.0", summary_with({{0.03, false}})),
+                                        stored("2.5", nullptr)});
+  ASSERT_EQ(values.size(), 2U);
+  EXPECT_EQ(values[0].value, "2.5");
+}
+
+TEST(CampaignReport, SuccessByValueCountsAttemptsAndSuccesses) {
+  const auto values = success_by_value({stored("2.5", summary_with({{0.005, true}, {0.03, false}})), stored("2.5", nullptr)});
+  ASSERT_EQ(values.size(), 1U);
+  EXPECT_EQ(values[0].successes, 1);
+  EXPECT_EQ(values[0].attempts, 2);
+}
+
 TEST(CampaignReport, CountsEachValuesSuccesses) {
   EXPECT_NE(report_text().find("<td>0.5</td><td>2</td><td>0</td><td>4</td><td>75 %</td>"), std::string::npos);
 }
