@@ -190,7 +190,9 @@ std::string provenance(const CampaignInfo& info) {
   return t + "</table>\n";
 }
 
-std::string page(const CampaignInfo& info, const std::vector<StoredRun>& runs) {
+// The page; `figures` receives each sweep's sensitivity figure as (file name, <svg> element).
+std::string page(const CampaignInfo& info, const std::vector<StoredRun>& runs,
+                 std::vector<std::pair<std::string, std::string>>& figures) {
   double requirement_m = 0.018;
   const std::vector<SweepGroup> sweeps = group(runs, requirement_m);
   std::string body;
@@ -200,7 +202,9 @@ std::string page(const CampaignInfo& info, const std::vector<StoredRun>& runs) {
     report::Figure sensitivity(fmt::format("sensitivity{}", figure), 900.0, 300.0, 2);
     sensitivity.add(whisker_panel(s, requirement_m));
     sensitivity.add(success_panel(s));
-    body += sensitivity.svg("Lateral alignment error (whiskers: Tukey, 1.5 IQR) and success percentage per value") + "\n";
+    const std::string svg = sensitivity.svg("Lateral alignment error (whiskers: Tukey, 1.5 IQR) and success percentage per value");
+    figures.emplace_back(fmt::format("sensitivity_{}.svg", figure), svg);
+    body += svg + "\n";
     report::Figure dispersion(fmt::format("dispersion{}", figure++), 560.0, 480.0, 1);
     dispersion.add(dispersion_panel(s, requirement_m));
     body += dispersion.svg("Lateral alignment error of each attempt in the detector's frame, at its worst sample") + "\n";
@@ -252,9 +256,15 @@ core::Result<std::filesystem::path> write_campaign_report(ResultsStore& store, c
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);
   const std::filesystem::path path = out_dir / "report.html";
+  std::vector<std::pair<std::string, std::string>> figures;
   std::ofstream out(path);
-  out << page(*info, *runs);
+  out << page(*info, *runs, figures);
   if (!out) return core::Error{path.string(), "cannot be written"};
+  for (const auto& [name, svg] : figures) {
+    std::ofstream file(out_dir / name);
+    file << report::standalone_svg(svg);
+    if (!file) return core::Error{(out_dir / name).string(), "cannot be written"};
+  }
   return path;
 }
 

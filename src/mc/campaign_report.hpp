@@ -27,7 +27,9 @@ struct ValueSuccess {
 /// as the file lists them), the grouping of the report's figure.
 std::vector<ValueSuccess> success_by_value(const std::vector<StoredRun>& runs);
 
-/// Writes `out_dir`/report.html from the store; returns its path.
+/// Writes `out_dir`/report.html from the store, and each sweep's sensitivity figure alone as
+/// `out_dir`/sensitivity_N.svg (N the sweep's index in the campaign file; an image for other
+/// documents); returns the page's path.
 core::Result<std::filesystem::path> write_campaign_report(ResultsStore& store, const std::filesystem::path& out_dir);
 
 }  // namespace visors::mc

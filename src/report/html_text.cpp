@@ -43,6 +43,18 @@ p.note { font-size: 0.8em; color: #666; }
 
 std::string_view report_stylesheet() { return kStyle; }
 
+std::string standalone_svg(std::string_view svg_element) {
+  const std::size_t open_end = svg_element.find('>');
+  if (open_end == std::string_view::npos) return std::string(svg_element);
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += svg_element.substr(0, open_end + 1);
+  out += "\n<style>\n";
+  out += kStyle;
+  out += "</style>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>";
+  out += svg_element.substr(open_end + 1);
+  return out;
+}
+
 std::string escape_html(std::string_view text) {
   std::string out;
   out.reserve(text.size());

@@ -26,7 +26,8 @@ nlohmann::json summary_with(std::initializer_list<std::pair<double, bool>> attem
           {"delta_v_mps", {{"osc", {{"total", 1.0}}}, {"dsc", {{"total", 0.0}}}}}};
 }
 
-std::string report_text() {
+// The report written from four made-up runs; the text of `file` in its folder.
+std::string report_text(const std::string& file = "report.html") {
   const auto dir = test::campaign_folder("report");
   const Campaign c = load_campaign((dir / "campaign.toml").string()).value();
   auto store = ResultsStore::open(dir / "db.sqlite").value();
@@ -37,9 +38,9 @@ std::string report_text() {
                                {3, false, 1.0, "crashed: signal 11 (Segmentation fault)", nullptr}};
   EXPECT_TRUE(store.record_campaign(c, "", {}).ok());
   for (const RunRecord& r : records) EXPECT_TRUE(store.store(run_spec(c, r.run), r).ok());
-  const auto path = write_campaign_report(store, dir);
+  EXPECT_TRUE(write_campaign_report(store, dir).ok());
   std::stringstream text;
-  text << std::ifstream(path.value()).rdbuf();
+  text << std::ifstream(dir / file).rdbuf();
   std::filesystem::remove_all(dir);
   return text.str();
 }
@@ -84,6 +85,12 @@ TEST(CampaignReport, ListsTheFailedRunWithItsReason) {
 TEST(CampaignReport, DrawsTheSensitivityAndDispersionFiguresOfTheSweep) {
   const std::string text = report_text();
   EXPECT_TRUE(text.find("id=\"sensitivity0\"") != std::string::npos && text.find("id=\"dispersion0\"") != std::string::npos);
+}
+
+// The sweep's sensitivity figure alone, with the stylesheet inside (it renders without the page).
+TEST(CampaignReport, WritesTheSensitivityFigureAsAnImageOfItsOwn) {
+  const std::string svg = report_text("sensitivity_0.svg");
+  EXPECT_TRUE(svg.find("id=\"sensitivity0\"") != std::string::npos && svg.find("<style>") != std::string::npos);
 }
 
 }  // namespace
