@@ -77,16 +77,29 @@ std::vector<SweepGroup> group(const std::vector<StoredRun>& runs, double& latera
   return sweeps;
 }
 
-// Upper panel of the paper's figure: lateral error per value, Tukey boxes [mm].
+// Upper panel of the paper's figure: lateral error per value, Tukey boxes [mm]. The axis ends
+// above the highest whisker and 2.5x the requirement, so that a few outliers of decimetres do not
+// flatten the boxes; the outliers above it are counted in the title.
 report::Plot whisker_panel(const SweepGroup& s, double requirement_m) {
-  report::Plot p(s.key.empty() ? "Lateral alignment error" : s.key, s.key.empty() ? "" : "value", "lateral error [mm]");
+  std::vector<BoxStatistics> boxes;
+  double top_mm = 2.5e3 * requirement_m;
+  for (const ValueGroup& g : s.values) {
+    std::vector<double> lateral_mm;
+    for (const Attempt& a : g.attempts) lateral_mm.push_back(1e3 * a.lateral_m);
+    boxes.push_back(box_statistics(lateral_mm));
+    if (boxes.back().count > 0) top_mm = std::max(top_mm, 1.2 * boxes.back().whisker_high);
+  }
+  std::size_t above = 0;
+  for (const BoxStatistics& b : boxes) above += static_cast<std::size_t>(std::count_if(b.outliers.begin(), b.outliers.end(), [&](double v) { return v > top_mm; }));
+  std::string title = s.key.empty() ? "Lateral alignment error" : s.key;
+  if (above > 0) title += fmt::format(" ({} outlier{} above the axis)", above, above == 1 ? "" : "s");
+  report::Plot p(title, s.key.empty() ? "" : "value", "lateral error [mm]");
   std::vector<std::pair<double, std::string>> ticks;
+  bool outliers_labelled = false;
   for (std::size_t i = 0; i < s.values.size(); ++i) {
     const double x = static_cast<double>(i);
     ticks.emplace_back(x, s.values[i].label);
-    std::vector<double> lateral_mm;
-    for (const Attempt& a : s.values[i].attempts) lateral_mm.push_back(1e3 * a.lateral_m);
-    const BoxStatistics b = box_statistics(lateral_mm);
+    const BoxStatistics& b = boxes[i];
     if (b.count == 0) continue;
     const std::string colour = kPalette[0];
     p.band(x - 0.3, x + 0.3, b.q1, b.q3, "#9db4d8", i == 0 ? "quartiles" : "");
@@ -96,10 +109,13 @@ report::Plot whisker_panel(const SweepGroup& s, double requirement_m) {
     p.curve("", xv, low, {colour, 1.0, false});
     p.curve("", xv, high, {colour, 1.0, false});
     const std::vector<double> ox(b.outliers.size(), x);
-    if (!b.outliers.empty()) p.markers(i == 0 ? "outliers" : "", ox, b.outliers, report::MarkerShape::kCross, "#555555");
+    if (!b.outliers.empty()) {
+      p.markers(outliers_labelled ? "" : "outliers", ox, b.outliers, report::MarkerShape::kCross, "#555555");
+      outliers_labelled = true;
+    }
   }
   p.hline(1e3 * requirement_m, "requirement", {"#c0392b", 1.2, true});
-  p.x_categories(ticks).x_range(-0.6, static_cast<double>(s.values.size()) - 0.4);
+  p.x_categories(ticks).x_range(-0.6, static_cast<double>(s.values.size()) - 0.4).y_range(0.0, top_mm);
   return p;
 }
 

@@ -26,16 +26,19 @@ nlohmann::json summary_with(std::initializer_list<std::pair<double, bool>> attem
           {"delta_v_mps", {{"osc", {{"total", 1.0}}}, {"dsc", {{"total", 0.0}}}}}};
 }
 
-// The report written from four made-up runs; the text of `file` in its folder.
-std::string report_text(const std::string& file = "report.html") {
+// Runs 0, 1: value 0.5 (3 of 4 attempts succeed); run 2: value 1.0, 0 of 2; run 3 failed.
+std::vector<RunRecord> four_runs() {
+  return {{0, true, 1.0, "", summary_with({{0.005, true}, {0.010, true}})},
+          {1, true, 1.0, "", summary_with({{0.004, true}, {0.030, false}})},
+          {2, true, 1.0, "", summary_with({{0.025, false}, {0.040, false}})},
+          {3, false, 1.0, "crashed: signal 11 (Segmentation fault)", nullptr}};
+}
+
+// The report written from made-up runs; the text of `file` in its folder.
+std::string report_text(const std::string& file = "report.html", const std::vector<RunRecord>& records = four_runs()) {
   const auto dir = test::campaign_folder("report");
   const Campaign c = load_campaign((dir / "campaign.toml").string()).value();
   auto store = ResultsStore::open(dir / "db.sqlite").value();
-  // Runs 0, 1: value 0.5 (3 of 4 attempts succeed); run 2: value 1.0, 0 of 2; run 3 failed.
-  const RunRecord records[] = {{0, true, 1.0, "", summary_with({{0.005, true}, {0.010, true}})},
-                               {1, true, 1.0, "", summary_with({{0.004, true}, {0.030, false}})},
-                               {2, true, 1.0, "", summary_with({{0.025, false}, {0.040, false}})},
-                               {3, false, 1.0, "crashed: signal 11 (Segmentation fault)", nullptr}};
   EXPECT_TRUE(store.record_campaign(c, "", {}).ok());
   for (const RunRecord& r : records) EXPECT_TRUE(store.store(run_spec(c, r.run), r).ok());
   EXPECT_TRUE(write_campaign_report(store, dir).ok());
@@ -85,6 +88,14 @@ TEST(CampaignReport, ListsTheFailedRunWithItsReason) {
 TEST(CampaignReport, DrawsTheSensitivityAndDispersionFiguresOfTheSweep) {
   const std::string text = report_text();
   EXPECT_TRUE(text.find("id=\"sensitivity0\"") != std::string::npos && text.find("id=\"dispersion0\"") != std::string::npos);
+}
+
+// A 0.9 m outlier among millimetres: the axis ends at 2.5x the 18 mm requirement (45 mm) and the
+// title says that one outlier lies above it.
+TEST(CampaignReport, CountsTheOutliersAboveTheWhiskerAxis) {
+  const std::vector<RunRecord> runs = {
+      {0, true, 1.0, "", summary_with({{0.005, true}, {0.006, true}, {0.007, true}, {0.008, true}, {0.009, true}, {0.9, false}})}};
+  EXPECT_NE(report_text("sensitivity_0.svg", runs).find("(1 outlier above the axis)"), std::string::npos);
 }
 
 // The sweep's sensitivity figure alone, with the stylesheet inside (it renders without the page).
