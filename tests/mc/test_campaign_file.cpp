@@ -117,5 +117,11 @@ TEST(CampaignFile, ShippedIdealNavigationCentreOfMassCampaignIsValid) {
   EXPECT_EQ(c->total_runs(), 50);  // 5 values x 10 runs: 100 attempts per value
 }
 
+TEST(CampaignFile, ShippedFineControlScheduleCampaignIsValid) {
+  const auto c = load_campaign("campaigns/fine_control_schedules.toml");
+  ASSERT_TRUE(c.ok()) << c.error().describe();
+  EXPECT_EQ(c->total_runs(), 18);  // 3 schedules x 6 runs
+}
+
 }  // namespace
 }  // namespace visors::mc
