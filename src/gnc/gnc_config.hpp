@@ -72,8 +72,8 @@ struct ScienceSettings {
   /// Six burns 150 s apart: each replanning corrects the execution error of the burn before, so
   /// the error reaching the observation shrinks as (magnitude error x 150 s / lead time) per burn;
   /// with three burns (900, 540, 180 s) the last burn had to undo nearly the whole error of the
-  /// one before. Measured (ideal navigation at 1 mm, 6 runs of 10 attempts per value; README
-  /// "Sensitivity study"): success at 30 % / 50 % magnitude error 35 / 23 % with three burns,
+  /// one before. Measured (ideal navigation at 1 mm, 6 runs of 10 attempts per value; README,
+  /// "The paper's sensitivity study"): success at 30 % / 50 % magnitude error 35 / 23 % with three burns,
   /// 72 / 67 % with six.
   std::array<double, control::kMaxLeastSquaresBurns> least_squares_burns_before_s{900.0, 750.0, 600.0, 450.0, 300.0, 150.0};
   int least_squares_burns = 6;
