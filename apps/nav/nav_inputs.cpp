@@ -130,11 +130,29 @@ core::Result<bool> read_laser_ranges(const std::filesystem::path& path, RunInput
 }
 
 // summary.json's "observations" (absent in runs without the campaign attitude).
-core::Result<bool> read_observation_spans(const std::filesystem::path& path, RunInputs& in) {
+// gnss-sim's summary.json: the observation spans, and each receiver's true phase centre and
+// centre of mass (body frame).
+core::Result<bool> read_summary(const std::filesystem::path& path, RunInputs& in) {
   std::ifstream file(path);
-  if (!file) return true;
+  if (!file) return Error{path.string(), "is missing (gnss-sim writes it)"};
   const nlohmann::json summary = nlohmann::json::parse(file, nullptr, false);
   if (summary.is_discarded()) return Error{path.string(), "is not JSON"};
+  const char* names[2] = {"dsc", "osc"};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto vector = [&](const char* key) -> core::Result<Eigen::Vector3d> {
+      const nlohmann::json* v = nullptr;
+      if (summary.contains("receivers") && summary["receivers"].contains(names[k])) v = &summary["receivers"][names[k]];
+      if (v == nullptr || !v->contains(key) || !(*v)[key].is_array() || (*v)[key].size() != 3) {
+        return Error{path.string() + ": receivers." + names[k] + "." + key, "must be an array of 3 numbers"};
+      }
+      return Eigen::Vector3d((*v)[key][0].get<double>(), (*v)[key][1].get<double>(), (*v)[key][2].get<double>());
+    };
+    auto phase_center = vector("phase_center_body_m");
+    if (!phase_center) return phase_center.error();
+    auto com = vector("center_of_mass_body_m");
+    if (!com) return com.error();
+    in.true_antenna_lever_body_m[k] = *phase_center - *com;
+  }
   if (!summary.contains("observations")) return true;
   for (const auto& o : summary["observations"]) {
     if (!o.contains("slew_start_s") || !o.contains("start_s") || !o.contains("end_s") || !o["start_s"].is_number() ||
@@ -201,14 +219,18 @@ core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
   if (auto ok = read_truth(run_dir / "truth.csv", in); !ok) return ok.error();
   if (auto ok = read_impulses(run_dir / "maneuvers.csv", in); !ok) return ok.error();
   if (auto ok = read_laser_ranges(run_dir / "lrf.csv", in); !ok) return ok.error();
-  if (auto ok = read_observation_spans(run_dir / "summary.json", in); !ok) return ok.error();
+  if (auto ok = read_summary(run_dir / "summary.json", in); !ok) return ok.error();
   if (auto ok = read_phase_truth(run_dir / "channels_truth.csv", in); !ok) return ok.error();
   const char* names[2] = {"dsc", "osc"};
   for (std::size_t k = 0; k < 2; ++k) {
     sim::RandomStream rng(in.scenario.seed, std::string(names[k]) + ".geometry");  // as gnss-sim draws it
-    const auto geometry = sim::SpacecraftGeometry::draw(sim::GeometrySettings{}, rng);
-    in.com_knowledge_error_body_m[k] = geometry.com_body_m() - geometry.com_nominal_body_m();
+    const auto geometry = sim::SpacecraftGeometry::draw(in.scenario.geometry, rng);
     in.payload_lever_error_body_m[k] = geometry.payload_from_com_body_m() - geometry.payload_from_com_nominal_body_m();
+    // The filter's lever (the flight software's nominal antenna, nav/cdgps_filter.hpp): antenna
+    // reference point plus the calibrated offset along body +Z, from the nominal centre of mass.
+    const sim::GpsReceiverSettings& rx = in.scenario.gnss.receiver;
+    const Eigen::Vector3d known = rx.antenna_body_m + rx.phase_center_offset_m * Eigen::Vector3d::UnitZ() - geometry.com_nominal_body_m();
+    in.antenna_lever_error_body_m[k] = in.true_antenna_lever_body_m[k] - known;
   }
   return in;
 }

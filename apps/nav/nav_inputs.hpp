@@ -67,9 +67,14 @@ struct RunInputs {
   std::map<long long, std::array<CraftTruth, 2>> truth;
   /// Per epoch (ms) and PRN: the receiver's (integer ambiguity + phase offset) [cycles], DSC and OSC.
   std::map<long long, std::map<int, std::pair<double, double>>> phase_truth;
-  /// True minus nominal centre of mass, body frame [m], DSC and OSC: the draw gnss-sim made from
-  /// the scenario's seed (sim/spacecraft_geometry.hpp). The filter knows only the nominal one.
-  std::array<Eigen::Vector3d, 2> com_knowledge_error_body_m{};
+  /// True lever arm from the centre of mass to the antenna phase centre, body frame [m], DSC and
+  /// OSC, as gnss-sim's summary.json records them (receivers.*.phase_center_body_m minus
+  /// center_of_mass_body_m).
+  std::array<Eigen::Vector3d, 2> true_antenna_lever_body_m{};
+  /// That minus the lever the filter knows (nominal centre of mass, antenna reference point,
+  /// calibrated offset along body +Z) [m]: the centre-of-mass draw, the boresight's tilt and the
+  /// phase centre's calibration error, which the filter's phase-centre states may estimate.
+  std::array<Eigen::Vector3d, 2> antenna_lever_error_body_m{};
   /// True minus nominal payload reference point relative to the centre of mass, body frame [m],
   /// DSC and OSC (the LRF's end points).
   std::array<Eigen::Vector3d, 2> payload_lever_error_body_m{};

@@ -77,14 +77,14 @@ RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, dou
   out.position_rtn_m = out.gcrf_to_rtn * relative_error_gcrf;
   out.velocity_rtn_mps = out.gcrf_to_rtn * ((est_osc.v - est_dsc.v) - (osc.v - dsc.v));
   score_payload(relative_error_gcrf, truth->second, in, out);
-  // Antenna error = (estimated - true centre of mass) + C (estimated phase-centre error + true
-  // minus nominal centre of mass): the estimate's antenna is CoM + C (arp + pco + p), the truth's
-  // CoM_true + C (arp + pco - delta).
+  // Antenna error = (estimated - true centre of mass) + C (p - l): the estimate's antenna is
+  // CoM + C (known lever + p), the truth's CoM_true + C (known lever + l), l the true minus the
+  // known lever (RunInputs::antenna_lever_error_body_m).
   out.c_dsc = truth->second[0].body_to_gcrf.toRotationMatrix();
   out.c_osc = truth->second[1].body_to_gcrf.toRotationMatrix();
   const auto lever_error = [&](const Eigen::Matrix3d& c, Craft craft, std::size_t k) {
     const Eigen::Vector3d p = nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft));
-    return Eigen::Vector3d(c * (p + in.com_knowledge_error_body_m[k]));
+    return Eigen::Vector3d(c * (p - in.antenna_lever_error_body_m[k]));
   };
   const Eigen::Vector3d com_offsets = lever_error(out.c_osc, Craft::kOsc, 1) - lever_error(out.c_dsc, Craft::kDsc, 0);
   out.antenna_rtn_m = out.position_rtn_m + out.gcrf_to_rtn * com_offsets;

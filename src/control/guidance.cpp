@@ -9,7 +9,7 @@
 #include "astro/j2_secular.hpp"
 #include "astro/keplerian_elements.hpp"
 #include "astro/roe_rtn_map.hpp"
-#include "astro/sun_moon.hpp"
+#include "astro/apparent_sun.hpp"
 #include "core/angles.hpp"
 #include "core/rtn_frame.hpp"
 
@@ -56,9 +56,15 @@ core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_m
   if (!std::isfinite(geometry.los_rate_mps)) return core::Error{"los_rate_mps", "must be finite"};
   if (!geometry.offset_rtn_m.allFinite()) return core::Error{"offset_rtn_m", "must be finite"};
 
-  // The Sun moves ~1 deg/day: its direction at t0 places the observation; the state is then built
-  // with the direction at the observation time itself.
-  const SunGeometry sun0 = sun_geometry(chief_mean_t0, astro::sun_position_gcrf(t0).normalized());
+  if (!geometry.target_offset_rad.allFinite()) return core::Error{"target_offset_rad", "must be finite"};
+
+  // The Sun moves ~1 deg/day: the target's direction at t0 places the observation; the state is
+  // then built with its direction at the observation time itself. The apparent direction from the
+  // chief (aberration by its velocity): the mean elements' state is within ~10 m/s of the
+  // osculating one, 0.007" of aberration.
+  const SunGeometry sun0 =
+      sun_geometry(chief_mean_t0, astro::apparent_target_unit_gcrf(t0, astro::cartesian_from_keplerian(chief_mean_t0, gravity.mu),
+                                                                    geometry.target_offset_rad));
   if (std::abs(sun0.beta) > 89.0 * core::kDegToRad) {
     return core::Error{"t0", "the Sun is within 1 deg of the orbit normal: no TN-plane alignment"};
   }
@@ -74,7 +80,7 @@ core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_m
   const astro::KeplerianElements chief_obs = astro::propagate_mean_j2(chief_mean_t0, t_obs, gravity);
   const core::StateVector chief_gcrf = astro::cartesian_from_keplerian(chief_obs, gravity.mu);
   const Eigen::Matrix3d to_rtn = core::gcrf_to_rtn_matrix(chief_gcrf);
-  const Eigen::Vector3d sun_unit = astro::sun_position_gcrf(t0 + t_obs).normalized();
+  const Eigen::Vector3d sun_unit = astro::apparent_target_unit_gcrf(t0 + t_obs, chief_gcrf, geometry.target_offset_rad);
   out.beta = sun_geometry(chief_obs, sun_unit).beta;
   out.sun_rtn = to_rtn * sun_unit;
   // Aligned position; inertial velocity along the Sun line only; its rate in the rotating frame.

@@ -41,6 +41,9 @@ struct ScienceGeometry {
   /// Lever arms of the payload reference points, r* = f s + offset_rtn (digest sec. 7.2:
   /// R_O p_O - R_D p_D with the sign for OSC minus DSC) [m].
   Eigen::Vector3d offset_rtn_m = Eigen::Vector3d::Zero();
+  /// The commanded target on the solar disc: standard coordinates (xi east, eta north) about the
+  /// apparent Sun centre (astro/apparent_sun.hpp) [rad]; (0, 0) is the disc centre.
+  Eigen::Vector2d target_offset_rad = Eigen::Vector2d::Zero();
 };
 
 struct ScienceOrbit {

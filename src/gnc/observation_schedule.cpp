@@ -5,7 +5,7 @@
 
 #include "astro/j2_secular.hpp"
 #include "astro/mean_osculating.hpp"
-#include "astro/sun_moon.hpp"
+#include "astro/apparent_sun.hpp"
 #include "core/rtn_frame.hpp"
 
 namespace visors::gnc {
@@ -20,7 +20,7 @@ core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chi
   const auto chief_osc = astro::osculating_from_mean(chief_mean, gravity);
   if (!chief_osc.ok()) return chief_osc.error();
   const core::StateVector chief = astro::cartesian_from_keplerian(*chief_osc, gravity.mu);
-  const Eigen::Vector3d sun_unit = (astro::sun_position_gcrf(t) - chief.r).normalized();
+  const Eigen::Vector3d sun_unit = astro::apparent_target_unit_gcrf(t, chief, geometry.target_offset_rad);
   const Eigen::Matrix3d rtn_to_gcrf = core::gcrf_to_rtn_matrix(chief).transpose();
   const Eigen::Vector3d dr = geometry.focal_distance_m * sun_unit + rtn_to_gcrf * geometry.offset_rtn_m;
   const core::StateVector deputy{chief.r + dr, chief.v + geometry.los_rate_mps * sun_unit};

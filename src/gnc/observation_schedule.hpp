@@ -22,14 +22,15 @@ struct ScheduledObservation {
 };
 
 /// The mean ROE (chief_mean at t) whose OSCULATING relative state at t is the aligned one: the
-/// deputy f metres from the chief towards the Sun (plus geometry.offset_rtn_m) with an inertial
-/// relative velocity along the Sun line only (geometry.los_rate_mps). Built exactly: chief osculating
+/// deputy f metres from the chief along the target's apparent direction (geometry.target_offset_rad
+/// on the solar disc, seen from the chief: astro/apparent_sun.hpp), plus geometry.offset_rtn_m,
+/// with an inertial relative velocity along that line only (geometry.los_rate_mps). Built exactly: chief osculating
 /// state, deputy state, deputy mean elements, ROE. control::science_orbit's ROE comes from the
 /// first-order map at the MEAN chief instead, which misplaces the deputy by the short-period J2
 /// terms (centimetres at 40 m, where the requirement is 18 mm).
 struct AlignedTarget {
   astro::RelativeOrbitalElements roe_mean = astro::RelativeOrbitalElements::Zero();  // [-]
-  double sun_elevation_rad = 0.0;  // the Sun above the chief's local horizontal plane [rad]
+  double sun_elevation_rad = 0.0;  // the target above the chief's local horizontal plane [rad]
 };
 core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
                                                               const control::ScienceGeometry& geometry,

@@ -53,14 +53,13 @@ struct CdgpsSettings {
   double position_sigma_m = 10.0;
   double velocity_sigma_mps = 0.1;
   double clock_sigma_m = 100.0;
-  // Error of the phase-centre offset, each body axis [m]: the antenna's calibration (gnss-sim's
-  // truth: the boresight's 30" mounting tilt at the 8.5 cm offset, 12 um). A body-fixed lever is
-  // what the centre of mass's knowledge error is too, and the measurements cannot tell them apart
-  // but through the attitude's turns: with 1 cm here the estimate wandered where they could not,
-  // taking the centres of mass with it (relative error 15 mm in the closed loop against the 7 mm
-  // the drawn geometry explains; campaign seed 2: 0 of 10 observations, 9 of 10 with 1e-4; the
-  // antennas' error and NEES unchanged).
-  double phase_center_sigma_m = 1e-4;
+  // Prior of the phase-centre states, each body axis [m]: the uncertainty of the antenna's
+  // calibration as the flight team states it (a CubeSat patch antenna's phase centre is known to
+  // a few mm: docs/truth-and-knowledge.md). The states start at zero (the calibrated value). A
+  // body-fixed lever is what the centre of mass's knowledge error is too; the measurements tell
+  // them apart only through the attitude's turns (docs/decisions.md: with a 0.1 mm prior the
+  // states were held at the calibration, which the truth then equalled exactly).
+  double phase_center_sigma_m = 5e-3;
   // New ambiguities start at their code value (cdgps_filter.cpp, start_ambiguities): GRAPHIC
   // minus code, off by the code's ionospheric delay (2-5 m at 500 km in 2024) and noise; SD
   // phase minus SD code, off by the SD code's noise (0.3 m: 1.5 cycles) and multipath.

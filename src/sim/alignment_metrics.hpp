@@ -2,7 +2,9 @@
 // Observation alignment metrics (mission paper, requirements; docs/conventions.md "Alignment"),
 // from the TRUE positions and velocities of the payload reference points (photon-sieve centre on
 // the OSC, detector aperture centre on the DSC) over the observation window. With s the unit
-// vector from the DSC to the Sun and d = p_OSC - p_DSC, w = v_OSC - v_DSC (inertial):
+// apparent direction of the commanded target from the DSC (sim/sky_truth.hpp: light time,
+// aberration by the DSC's velocity, the offset on the solar disc), d = p_OSC - p_DSC and
+// w = v_OSC - v_DSC (inertial):
 //   lateral error     |d - (d.s) s|        <= 18 mm
 //   focus error       | d.s - 40 m |       <= 15 mm
 //   lateral velocity  |w - (w.s) s|        <= 0.2 mm/s
@@ -38,7 +40,7 @@ struct AlignmentResult {
 };
 
 /// Folds one sample of the window into `result` (worst values). Positions [m], velocities [m/s],
-/// GCRF; sun_unit from the DSC towards the Sun.
+/// GCRF; sun_unit: the target's apparent direction from the DSC.
 void add_alignment_sample(AlignmentResult& result, const Eigen::Vector3d& p_osc, const Eigen::Vector3d& v_osc,
                           const Eigen::Vector3d& p_dsc, const Eigen::Vector3d& v_dsc, const Eigen::Vector3d& sun_unit,
                           const AlignmentRequirements& requirements);

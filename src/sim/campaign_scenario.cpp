@@ -17,6 +17,10 @@ namespace visors::sim {
 
 namespace {
 
+// The commanded target's largest distance from the Sun's centre: the disc's radius is 944-976"
+// over the year; beyond 1.25 radii the corona is too faint for the photon sieve.
+constexpr double kMaxTargetOffsetArcsec = 1200.0;
+
 using core::Error;
 using namespace config::toml_fields;
 
@@ -25,17 +29,19 @@ core::Result<bool> in_range(double value, double lo, double hi, const std::strin
   return true;
 }
 
-core::Result<Eigen::Matrix<double, 6, 1>> vector6_at(const toml::table& table, const std::string& section,
-                                                     std::string_view key, const Eigen::Matrix<double, 6, 1>& fallback) {
+// An array of N finite numbers; `fallback` when absent.
+template <int N>
+core::Result<Eigen::Matrix<double, N, 1>> fixed_vector_at(const toml::table& table, const std::string& section,
+                                                         std::string_view key, const Eigen::Matrix<double, N, 1>& fallback) {
   const toml::node* node = table.get(key);
   if (node == nullptr) return fallback;
   const toml::array* array = node->as_array();
   const std::string field = field_name(section, key);
-  if (array == nullptr || array->size() != 6) return Error{field, "must be an array of 6 numbers"};
-  Eigen::Matrix<double, 6, 1> out;
-  for (std::size_t k = 0; k < 6; ++k) {
+  if (array == nullptr || array->size() != N) return Error{field, fmt::format("must be an array of {} numbers", N)};
+  Eigen::Matrix<double, N, 1> out;
+  for (std::size_t k = 0; k < N; ++k) {
     const auto value = (*array)[k].value<double>();
-    if (!value || !std::isfinite(*value)) return Error{field, "must be an array of 6 finite numbers"};
+    if (!value || !std::isfinite(*value)) return Error{field, fmt::format("must be an array of {} finite numbers", N)};
     out(static_cast<Eigen::Index>(k)) = *value;
   }
   return out;
@@ -130,22 +136,31 @@ core::Result<bool> read_chief(const toml::table& root, CampaignScenario& s) {
 core::Result<bool> read_campaign(const toml::table& root, CampaignScenario& s) {
   if (const toml::table* f = table_at(root, "formation")) {
     if (auto e = check_keys(*f, "formation", {"initial_roe_m"})) return *e;
-    VISORS_TRY(roe, vector6_at(*f, "formation", "initial_roe_m", s.initial_roe_m));
+    VISORS_TRY(roe, fixed_vector_at<6>(*f, "formation", "initial_roe_m", s.initial_roe_m));
     if (roe.cwiseAbs().maxCoeff() > 5000.0) return Error{"formation.initial_roe_m", "must be within 5 km"};
     s.initial_roe_m = roe;
   }
   const toml::table* c = table_at(root, "campaign");
   if (c == nullptr) return true;
   const std::string sec = "campaign";
-  if (auto e = check_keys(*c, sec, {"standby_s", "observations", "tail_s", "active"})) return *e;
+  if (auto e = check_keys(*c, sec, {"standby_s", "observations", "tail_s", "active", "target_offset_arcsec"})) return *e;
   VISORS_TRY(standby, number_at(*c, sec, "standby_s", s.standby_s));
   VISORS_TRY(observations, integer_at(*c, sec, "observations", s.observations));
   VISORS_TRY(tail, number_at(*c, sec, "tail_s", s.tail_s));
   VISORS_TRY(active, string_at(*c, sec, "active", s.active));
+  const Eigen::Vector2d offset_arcsec = s.target_offset_rad / core::kArcsecToRad;
+  VISORS_TRY(target, fixed_vector_at<2>(*c, sec, "target_offset_arcsec", offset_arcsec));
   if (auto ok = in_range(standby, 0.0, 3.2e7, "campaign.standby_s"); !ok) return ok.error();
   if (observations < 0 || observations > 1000) return Error{"campaign.observations", "must be in [0, 1000]"};
   if (auto ok = in_range(tail, 0.0, 3.2e7, "campaign.tail_s"); !ok) return ok.error();
   if (active != "osc" && active != "dsc") return Error{"campaign.active", "must be \"osc\" or \"dsc\""};
+  if (target.norm() > kMaxTargetOffsetArcsec) {
+    return Error{"campaign.target_offset_arcsec", fmt::format("must be within {} arcsec of the Sun's centre", kMaxTargetOffsetArcsec)};
+  }
+  // A ground command, not a truth parameter: the flight software aims at it, the truth scores
+  // against it.
+  s.target_offset_rad = target * core::kArcsecToRad;
+  s.gnc.science.geometry.target_offset_rad = s.target_offset_rad;
   s.standby_s = standby;
   s.observations = static_cast<int>(observations);
   s.tail_s = tail;
@@ -216,7 +231,7 @@ core::Result<bool> read_geometry(const toml::table& root, CampaignScenario& s) {
   if (t == nullptr) return true;
   const std::string sec = "geometry";
   if (auto e = check_keys(*t, sec, {"com_variation_sigma_m", "com_knowledge_error_m", "payload_position_sigma_m",
-                                    "payload_pointing_sigma_arcsec"})) {
+                                    "payload_pointing_sigma_arcsec", "phase_center_knowledge_sigma_m"})) {
     return *e;
   }
   GeometrySettings& g = s.geometry;
@@ -224,14 +239,17 @@ core::Result<bool> read_geometry(const toml::table& root, CampaignScenario& s) {
   VISORS_TRY(knowledge, number_at(*t, sec, "com_knowledge_error_m", g.com_knowledge_error_m));
   VISORS_TRY(payload, number_at(*t, sec, "payload_position_sigma_m", g.payload_position_sigma_m));
   VISORS_TRY(pointing, number_at(*t, sec, "payload_pointing_sigma_arcsec", g.payload_pointing_sigma_rad / core::kArcsecToRad));
+  VISORS_TRY(phase_center, number_at(*t, sec, "phase_center_knowledge_sigma_m", g.phase_center_knowledge_sigma_m));
   if (auto ok = in_range(variation, 0.0, 1.0, "geometry.com_variation_sigma_m"); !ok) return ok.error();
   if (auto ok = in_range(knowledge, 0.0, 1.0, "geometry.com_knowledge_error_m"); !ok) return ok.error();
   if (auto ok = in_range(payload, 0.0, 1.0, "geometry.payload_position_sigma_m"); !ok) return ok.error();
   if (auto ok = in_range(pointing, 0.0, 3600.0, "geometry.payload_pointing_sigma_arcsec"); !ok) return ok.error();
+  if (auto ok = in_range(phase_center, 0.0, 0.1, "geometry.phase_center_knowledge_sigma_m"); !ok) return ok.error();
   g.com_sigma_m = variation;
   g.com_knowledge_error_m = knowledge;
   g.payload_position_sigma_m = payload;
   g.payload_pointing_sigma_rad = pointing * core::kArcsecToRad;
+  g.phase_center_knowledge_sigma_m = phase_center;
   return true;
 }
 
@@ -348,6 +366,10 @@ CampaignScenario default_campaign() {
   s.initial_roe_m << 0.0, 0.0, 0.0, 200.0, 0.0, 200.0;  // the standby orbit
   s.dsc = SpacecraftSettings{11.35, 0.378, 2.2, 1.8, 0.35};
   s.osc = SpacecraftSettings{10.62, 0.205, 2.2, 1.8, 0.35};
+  // An active region 310" east and 240" south of the disc centre (0.41 solar radii): the
+  // telescope looks at a commanded point of the disc, not at its centre.
+  s.target_offset_rad = Eigen::Vector2d(310.0, -240.0) * core::kArcsecToRad;
+  s.gnc.science.geometry.target_offset_rad = s.target_offset_rad;
   return s;
 }
 
@@ -399,8 +421,9 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += fmt::format("[formation]\ninitial_roe_m = [{:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}]\n\n",
                      s.initial_roe_m(0), s.initial_roe_m(1), s.initial_roe_m(2), s.initial_roe_m(3), s.initial_roe_m(4),
                      s.initial_roe_m(5));
-  out += fmt::format("[campaign]\nstandby_s = {:.17g}\nobservations = {}\ntail_s = {:.17g}\nactive = \"{}\"\n\n", s.standby_s,
-                     s.observations, s.tail_s, s.active);
+  const Eigen::Vector2d target_arcsec = s.target_offset_rad / core::kArcsecToRad;
+  out += fmt::format("[campaign]\nstandby_s = {:.17g}\nobservations = {}\ntail_s = {:.17g}\nactive = \"{}\"\ntarget_offset_arcsec = [{:.17g}, {:.17g}]\n\n",
+                     s.standby_s, s.observations, s.tail_s, s.active, target_arcsec.x(), target_arcsec.y());
   out += fmt::format("[navigation]\nmode = \"{}\"\nrelative_position_m = {:.17g}\nrelative_velocity_mps = {:.17g}\nabsolute_position_m = {:.17g}\nabsolute_velocity_mps = {:.17g}\ncorrelation_time_s = {:.17g}\n\n",
                      s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal", n.relative_position_m,
                      n.relative_velocity_mps, n.absolute_position_m, n.absolute_velocity_mps, n.correlation_time_s);
@@ -408,9 +431,9 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      p.magnitude_sigma, deg(p.direction_sigma_rad), p.isp_s, p.isp_sigma_s);
   out += spacecraft("dsc", s.dsc);
   out += spacecraft("osc", s.osc);
-  out += fmt::format("[geometry]\ncom_variation_sigma_m = {:.17g}\ncom_knowledge_error_m = {:.17g}\npayload_position_sigma_m = {:.17g}\npayload_pointing_sigma_arcsec = {:.17g}\n\n",
+  out += fmt::format("[geometry]\ncom_variation_sigma_m = {:.17g}\ncom_knowledge_error_m = {:.17g}\npayload_position_sigma_m = {:.17g}\npayload_pointing_sigma_arcsec = {:.17g}\nphase_center_knowledge_sigma_m = {:.17g}\n\n",
                      s.geometry.com_sigma_m, s.geometry.com_knowledge_error_m, s.geometry.payload_position_sigma_m,
-                     s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad);
+                     s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad, s.geometry.phase_center_knowledge_sigma_m);
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
   out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\nleast_squares_burns_before_s = [{:.17g}]\n\n",
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,

@@ -89,6 +89,10 @@ struct CampaignScenario {
   double step_s = 1.0;             // simulation and GNC step (the 1 Hz channels) [s]
   double output_step_s = 10.0;     // time-series sampling [s]
   std::string active = "osc";      // initially active spacecraft
+  /// The commanded observation target ([campaign] target_offset_arcsec): standard coordinates (xi
+  /// east, eta north) about the apparent Sun centre [rad]. A ground command, given to both flight
+  /// components (gnc.science.geometry.target_offset_rad) and scored against by the truth.
+  Eigen::Vector2d target_offset_rad = Eigen::Vector2d::Zero();
   // Models.
   NavigationMode navigation_mode = NavigationMode::kCdgps;
   NavigationErrorSettings navigation;  // ideal navigation's errors

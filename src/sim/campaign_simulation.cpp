@@ -13,7 +13,6 @@
 
 #include "astro/mean_osculating.hpp"
 #include "astro/relative_orbital_elements.hpp"
-#include "astro/sun_moon.hpp"
 #include "core/files/data_path.hpp"
 #include "core/rtn_frame.hpp"
 #include "sim/data_provenance.hpp"
@@ -103,7 +102,10 @@ void add_garbage(SimulatedSpacecraft& v, core::GpsTime t, RandomStream& rng, Hos
 }  // namespace
 
 CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder, const RunOptions& options)
-    : scenario_(scenario), recorder_(&recorder), components_(std::make_unique<PairedWorker>(options.parallel_components)) {
+    : scenario_(scenario),
+      recorder_(&recorder),
+      components_(std::make_unique<PairedWorker>(options.parallel_components)),
+      sky_(scenario.target_offset_rad) {
   const CampaignScenario& s = scenario_;
   vehicles_[0].id = Spacecraft::kDsc;
   vehicles_[0].name = "dsc";
@@ -188,8 +190,7 @@ core::Result<bool> CampaignSimulation::step() {
     return false;
   }
   const core::GpsTime t = scenario_.t0 + ts;
-  const Eigen::Vector3d sun_gcrf_m = astro::sun_position_gcrf(t);
-  update_attitude(sun_gcrf_m);
+  update_attitude(t);
   apply_ground_timeline(t);
   step_flight_components(t);
   score_navigation();
@@ -200,18 +201,19 @@ core::Result<bool> CampaignSimulation::step() {
   route_outputs(vehicles_[1], vehicles_[0]);
   apply_fdir(vehicles_[1], vehicles_[0], t);
   inject_faults(t);
-  record_metrics(sun_gcrf_m);
+  record_metrics();
   update_end();
   if (auto ok = propagate_truth(t); !ok) return ok.error();
   ++k_;
   return true;
 }
 
-// Truth attitude (zenith pointing, slews for observations) and the attitude-dependent drag area.
-void CampaignSimulation::update_attitude(const Eigen::Vector3d& sun_gcrf_m) {
+// Truth attitude (zenith pointing, slews for observations towards the target's apparent
+// direction) and the attitude-dependent drag area.
+void CampaignSimulation::update_attitude(core::GpsTime t) {
   for (SimulatedSpacecraft& v : vehicles_) {
-    const Eigen::Vector3d sun_unit = (sun_gcrf_m - v.x_gcrf.r).normalized();
-    v.q_body_to_gcrf = v.attitude->body_to_gcrf(ts_, v.x_gcrf.r, v.x_gcrf.v, sun_unit);
+    v.target_unit_gcrf = sky_.target_unit_gcrf(t, v.x_gcrf);
+    v.q_body_to_gcrf = v.attitude->body_to_gcrf(ts_, v.x_gcrf.r, v.x_gcrf.v, v.target_unit_gcrf);
     v.truth.forces->set_drag_area(v.drag.projected_area_m2(air_velocity_body_unit(v.x_gcrf, v.q_body_to_gcrf)));
   }
 }
@@ -320,8 +322,9 @@ void CampaignSimulation::read_outputs(SimulatedSpacecraft& v, const gnc::OutputR
 // The receiver's epoch at t in the true pose (the attitude's rate from the spacecraft's attitude
 // law), and the broadcast record it decoded; nothing in a data gap.
 std::optional<gnc::GpsMessage> CampaignSimulation::measure_gps(SimulatedSpacecraft& v, const EpochFrame& frame, core::GpsTime t) {
+  // The target's direction held over the rate's differencing interval (it turns ~1e-11 rad there).
   const auto law = [&](double t_s, const Eigen::Vector3d& r, const Eigen::Vector3d& velocity) {
-    return v.attitude->body_to_gcrf(t_s, r, velocity, (frame.sun_gcrf - r).normalized());
+    return v.attitude->body_to_gcrf(t_s, r, velocity, v.target_unit_gcrf);
   };
   const Eigen::Vector3d omega_gcrf = attitude_rate_gcrf(law, ts_, v.x_gcrf);
   const ReceiverPose pose = receiver_pose(frame, t, v.x_gcrf, v.q_body_to_gcrf, omega_gcrf, v.geometry->com_body_m());
@@ -404,8 +407,17 @@ void CampaignSimulation::score_navigation() {
   truth.osc_gcrf = osc.x_gcrf;
   truth.dsc_body_to_gcrf = dsc.q_body_to_gcrf.toRotationMatrix();
   truth.osc_body_to_gcrf = osc.q_body_to_gcrf.toRotationMatrix();
-  truth.dsc_com_knowledge_m = dsc.geometry->com_nominal_body_m() - dsc.geometry->com_body_m();
-  truth.osc_com_knowledge_m = osc.geometry->com_nominal_body_m() - osc.geometry->com_body_m();
+  // True minus known lever arm from the centre of mass to the phase centre: the known one is the
+  // flight software's (nominal centre of mass, antenna reference point, calibrated offset along
+  // body +Z), the true one the receiver's (drawn centre of mass, tilted boresight, phase-centre
+  // error).
+  const GpsReceiverSettings& rx = scenario_.gnss.receiver;
+  const auto lever_error = [&rx](const SimulatedSpacecraft& v) -> Eigen::Vector3d {
+    const Eigen::Vector3d known = rx.antenna_body_m + rx.phase_center_offset_m * Eigen::Vector3d::UnitZ() - v.geometry->com_nominal_body_m();
+    return (v.receiver->phase_center_body_m() - v.geometry->com_body_m()) - known;
+  };
+  truth.dsc_lever_error_m = lever_error(dsc);
+  truth.osc_lever_error_m = lever_error(osc);
   const bool slewing = in_slew(ts_);
   for (std::size_t k = 0; k < 2; ++k) {
     const SimulatedSpacecraft& v = vehicles_[k];
@@ -596,7 +608,7 @@ void CampaignSimulation::inject_faults(core::GpsTime t) {
 // Alignment samples of the observations in progress (payload reference points with the drawn
 // geometry errors), closing those that ended; minimum separations every step; the time series
 // every output step.
-void CampaignSimulation::record_metrics(const Eigen::Vector3d& sun_gcrf_m) {
+void CampaignSimulation::record_metrics() {
   const SimulatedSpacecraft& dsc = vehicles_[0];
   const SimulatedSpacecraft& osc = vehicles_[1];
   for (PendingObservation& p : observations_) {
@@ -604,8 +616,7 @@ void CampaignSimulation::record_metrics(const Eigen::Vector3d& sun_gcrf_m) {
     if (ts_ >= p.start_s && ts_ <= p.end_s) {
       const Eigen::Vector3d p_osc = osc.x_gcrf.r + osc.q_body_to_gcrf * osc.geometry->payload_from_com_body_m();
       const Eigen::Vector3d p_dsc = dsc.x_gcrf.r + dsc.q_body_to_gcrf * dsc.geometry->payload_from_com_body_m();
-      add_alignment_sample(p.result, p_osc, osc.x_gcrf.v, p_dsc, dsc.x_gcrf.v, (sun_gcrf_m - dsc.x_gcrf.r).normalized(),
-                           requirements_);
+      add_alignment_sample(p.result, p_osc, osc.x_gcrf.v, p_dsc, dsc.x_gcrf.v, dsc.target_unit_gcrf, requirements_);
     } else if (ts_ > p.end_s) {
       p.done = true;
       const bool ok = p.result.success(requirements_);

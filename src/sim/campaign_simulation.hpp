@@ -34,6 +34,7 @@
 #include "sim/paired_worker.hpp"
 #include "sim/run_recorder.hpp"
 #include "sim/simulated_spacecraft.hpp"
+#include "sim/sky_truth.hpp"
 
 namespace visors::sim {
 
@@ -90,7 +91,7 @@ class CampaignSimulation {
   [[nodiscard]] const SimulatedSpacecraft& active() const;
 
   // The phases of step(), in order.
-  void update_attitude(const Eigen::Vector3d& sun_gcrf_m);
+  void update_attitude(core::GpsTime t);
   void apply_ground_timeline(core::GpsTime t);
   void step_flight_components(core::GpsTime t);
   void read_outputs(SimulatedSpacecraft& v, const gnc::OutputRecords& out);
@@ -104,7 +105,7 @@ class CampaignSimulation {
   /// The non-GNC fault of a spacecraft that can no longer act (bus safe mode, failed thruster).
   void switch_away_from(std::size_t victim, core::GpsTime t, std::string_view what);
   [[nodiscard]] bool in_window(const FaultWindow& window, int victim, std::size_t k) const;
-  void record_metrics(const Eigen::Vector3d& sun_gcrf_m);
+  void record_metrics();
   void update_end();
   core::Result<bool> propagate_truth(core::GpsTime t);
   // Sensors of on-board navigation ([navigation] mode = "cdgps").
@@ -136,6 +137,7 @@ class CampaignSimulation {
   std::array<std::vector<std::size_t>, gnss::kMaxGpsPrn + 1> sets_by_prn_;
   std::optional<RandomStream> lrf_rng_;
   core::InterpolatedEarthFrame earth_frame_;
+  SkyTruth sky_;  // the apparent Sun and target (the truth's own computation)
   NavigationScore navigation_score_;
   std::array<NavigationSample, 2> navigation_samples_{};
   std::array<std::int64_t, 2> rows_epochs_{}, rows_fixed_{};  // at each spacecraft's last navigation.csv row

@@ -9,7 +9,6 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/sun_moon.hpp"
 #include "core/constants.hpp"
 #include "core/earth_frames.hpp"
 #include "core/eop.hpp"
@@ -31,6 +30,7 @@
 #include "sim/gps_satellite_truth.hpp"
 #include "sim/gps_world.hpp"
 #include "sim/propulsion.hpp"
+#include "sim/sky_truth.hpp"
 #include "sim/spacecraft_geometry.hpp"
 #include "sim/truth_dynamics.hpp"
 
@@ -70,6 +70,7 @@ core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftS
   GpsReceiverSettings settings = s.gnss.receiver;
   settings.klobuchar = ionosphere;
   settings.epoch_interval_s = s.step_s;  // clock_step_sigma_m is per epoch
+  settings.phase_center_error_body_m = c.geometry->phase_center_error_body_m();
   auto receiver = GpsReceiver::create(settings, RandomStream(s.seed, c.name + ".gps"));
   if (!receiver.ok()) return core::Error{"gnss.receiver." + receiver.error().field, receiver.error().message};
   c.receiver.emplace(std::move(receiver).value());
@@ -244,15 +245,17 @@ core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std
 }
 
 // The truth attitude of [gnss] attitude: a fixed target ("nominal", "observation") or the
-// attitude profile with the observation windows ("campaign").
+// attitude profile with the observation windows ("campaign"); the Sun line is the commanded
+// target's apparent direction (sim/sky_truth.hpp).
 struct AttitudeModel {
   enum class Kind { kNominal, kObservation, kCampaign } kind = Kind::kNominal;
   const AttitudeProfile* profile = nullptr;  // kCampaign only
+  SkyTruth* sky = nullptr;                   // the truth's sky (a cache: not const)
+  core::GpsTime t0;                          // t_s = 0
 
   // Body to GCRF at t_s [s] for the state (r, v) at t_s.
-  [[nodiscard]] Eigen::Quaterniond at(double t_s, const Eigen::Vector3d& r, const Eigen::Vector3d& v,
-                                      const Eigen::Vector3d& sun_gcrf) const {
-    const Eigen::Vector3d sun_unit = (sun_gcrf - r).normalized();
+  [[nodiscard]] Eigen::Quaterniond at(double t_s, const Eigen::Vector3d& r, const Eigen::Vector3d& v) const {
+    const Eigen::Vector3d sun_unit = sky->target_unit_gcrf(t0 + t_s, {r, v});
     switch (kind) {
       case Kind::kObservation:
         return AttitudeProfile::observation_body_to_gcrf(r, v, sun_unit);
@@ -264,11 +267,9 @@ struct AttitudeModel {
     return AttitudeProfile::nominal_body_to_gcrf(r, v, sun_unit);
   }
 
-  // The body's angular velocity (GCRF axes) [rad/s] (sim/gps_world.hpp attitude_rate_gcrf; the
-  // Sun held fixed: it moves 2e-7 rad/s).
-  [[nodiscard]] Eigen::Vector3d angular_velocity_gcrf(double t_s, const core::StateVector& x,
-                                                      const Eigen::Vector3d& sun_gcrf) const {
-    return attitude_rate_gcrf([&](double t, const Eigen::Vector3d& r, const Eigen::Vector3d& v) { return at(t, r, v, sun_gcrf); },
+  // The body's angular velocity (GCRF axes) [rad/s] (sim/gps_world.hpp attitude_rate_gcrf).
+  [[nodiscard]] Eigen::Vector3d angular_velocity_gcrf(double t_s, const core::StateVector& x) const {
+    return attitude_rate_gcrf([&](double t, const Eigen::Vector3d& r, const Eigen::Vector3d& v) { return at(t, r, v); },
                               t_s, x);
   }
 };
@@ -277,10 +278,10 @@ struct AttitudeModel {
 // forces, and is kept in the craft for the truth file), its angular velocity relative to the
 // Earth, and the centre of mass in ITRF.
 ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, double t_s, const AttitudeModel& attitude) {
-  const Eigen::Quaterniond q = attitude.at(t_s, c.x_gcrf.r, c.x_gcrf.v, frame.sun_gcrf);
+  const Eigen::Quaterniond q = attitude.at(t_s, c.x_gcrf.r, c.x_gcrf.v);
   c.attitude = q;
   c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
-  return sim::receiver_pose(frame, t, c.x_gcrf, q, attitude.angular_velocity_gcrf(t_s, c.x_gcrf, frame.sun_gcrf),
+  return sim::receiver_pose(frame, t, c.x_gcrf, q, attitude.angular_velocity_gcrf(t_s, c.x_gcrf),
                             c.geometry->com_body_m());
 }
 
@@ -306,10 +307,9 @@ core::Result<bool> record_epoch(Craft& c, const GpsReceiverEpoch& epoch, double 
 // there): the commanded RTN dv in GCRF (the true RTN frame), in the body frame of the true
 // attitude, executed by the propulsion model with its errors, back to GCRF with the same attitude,
 // added to the velocity; a maneuvers.csv row (columns: gnss_simulation.hpp).
-core::Result<bool> execute_piece(Craft& c, const GnssManeuverPiece& piece, const CampaignScenario& s,
+core::Result<bool> execute_piece(Craft& c, const GnssManeuverPiece& piece,
                                  const AttitudeModel& attitude, std::FILE* f) {
-  const core::GpsTime t = s.t0 + piece.t_s;
-  const Eigen::Quaterniond q = attitude.at(piece.t_s, c.x_gcrf.r, c.x_gcrf.v, astro::sun_position_gcrf(t));
+  const Eigen::Quaterniond q = attitude.at(piece.t_s, c.x_gcrf.r, c.x_gcrf.v);
   const Eigen::Vector3d dv_cmd_gcrf = core::gcrf_to_rtn_matrix(c.x_gcrf).transpose() * piece.dv_rtn_mps;
   auto executed = c.propulsion->execute(piece.t_s, q.conjugate() * dv_cmd_gcrf);
   if (!executed.ok()) {
@@ -418,7 +418,7 @@ core::Result<bool> propagate_crafts(GnssRun& run, const CampaignScenario& s, dou
       }
       add_keeping_correction(run.keeping, c, s.propulsion, commanded);
     }
-    if (auto ok = execute_piece(c, commanded, s, attitude, run.files->maneuvers.get()); !ok) return ok.error();
+    if (auto ok = execute_piece(c, commanded, attitude, run.files->maneuvers.get()); !ok) return ok.error();
   }
   for (int k = 0; k < 2; ++k) {
     if (auto ok = advance(k, end_s); !ok) return ok.error();
@@ -493,9 +493,13 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
   if (auto ok = set_up_run(run, s, out_dir, static_cast<double>(steps) * s.step_s); !ok) return ok.error();
   const GpsSatelliteTruth& satellites = *run.world.satellites;
 
-  AttitudeModel attitude;
+  SkyTruth sky(s.target_offset_rad);
+  AttitudeModel attitude{AttitudeModel::Kind::kNominal, nullptr, &sky, s.t0};
   if (s.gnss.attitude == "observation") attitude.kind = AttitudeModel::Kind::kObservation;
-  if (s.gnss.attitude == "campaign") attitude = AttitudeModel{AttitudeModel::Kind::kCampaign, &*run.profile};
+  if (s.gnss.attitude == "campaign") {
+    attitude.kind = AttitudeModel::Kind::kCampaign;
+    attitude.profile = &*run.profile;
+  }
   std::size_t next_piece = 0, next_lrf = 0;
   const std::vector<std::int64_t>& lrf_epochs = run.operations.lrf_epochs;
   RandomStream lrf_rng(s.seed, "osc.lrf");

@@ -49,6 +49,7 @@ core::Result<bool> GpsReceiverSettings::validate() const {
   }
   if (!(std::isfinite(multipath_tau_s) && multipath_tau_s > 0.0)) return core::Error{"multipath_tau_s", "must be finite and > 0"};
   if (!antenna_body_m.allFinite()) return core::Error{"antenna_body_m", "must be finite"};
+  if (!phase_center_error_body_m.allFinite()) return core::Error{"phase_center_error_body_m", "must be finite"};
   if (!(topside.topside_fraction >= 0.0 && topside.topside_fraction <= 1.0)) {
     return core::Error{"topside.topside_fraction", "must be in [0, 1]"};
   }

@@ -47,7 +47,8 @@
 //      a cycle slip; phi_r, phi^j: constant fractional receiver and satellite phase offsets, so
 //      only double differences are integer (as with a real receiver).
 // Antenna: the phase centre is phase_center_offset_m along the TRUE boresight from the antenna
-// reference point antenna_body_m; the true boresight is body +Z tilted by two angles drawn
+// reference point antenna_body_m, plus the drawn calibration error phase_center_error_body_m
+// (sim/spacecraft_geometry.hpp); the true boresight is body +Z tilted by two angles drawn
 // N(0, mounting_sigma_rad) (about body X, then Y) once per receiver.
 // Tracking: a satellite is visible when its elevation above the antenna plane (true boresight)
 // is at least the mask and the ray clears the Earth's surface by occultation_altitude_m (grazing
@@ -92,6 +93,9 @@ struct GpsReceiverSettings {
   double phase_center_offset_m = 0.0854;              // along the boresight (issue) [m]
   double mounting_sigma_rad = 30.0 * core::kArcsecToRad;  // boresight tilt per axis (issue)
   Eigen::Vector3d antenna_body_m = Eigen::Vector3d(0.0, 0.0, 0.1);  // antenna reference point [m]
+  /// The true phase centre's error against its calibration, body frame [m]: drawn per run with
+  /// the spacecraft's geometry (not a scenario key; zero by default).
+  Eigen::Vector3d phase_center_error_body_m = Eigen::Vector3d::Zero();
   double occultation_altitude_m = 100e3;              // rays must clear the Earth by this [m]
   double cycle_slip_probability = 0.0;                // per channel and epoch
   int max_slip_cycles = 10;                           // a slip is +/- 1..max cycles
@@ -177,7 +181,7 @@ class GpsReceiver {
   /// The true boresight (unit, body frame) and phase centre (body frame) [m].
   [[nodiscard]] const Eigen::Vector3d& boresight_body() const { return boresight_body_; }
   [[nodiscard]] Eigen::Vector3d phase_center_body_m() const {
-    return settings_.antenna_body_m + settings_.phase_center_offset_m * boresight_body_;
+    return settings_.antenna_body_m + settings_.phase_center_offset_m * boresight_body_ + settings_.phase_center_error_body_m;
   }
 
  private:

@@ -1,6 +1,5 @@
 #include "sim/gps_world.hpp"
 
-#include "astro/sun_moon.hpp"
 #include "core/earth_frames.hpp"
 #include "core/files/data_path.hpp"
 #include "core/files/eop_file.hpp"
@@ -52,14 +51,12 @@ core::EarthOrientation earth_orientation_at(const GpsWorld& world, core::GpsTime
 
 EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t) {
   const core::EarthOrientation eop = earth_orientation_at(world, t);
-  return EpochFrame{core::gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop)),
-                    astro::sun_position_gcrf(t)};
+  return EpochFrame{core::gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop))};
 }
 
 EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t, core::InterpolatedEarthFrame& earth) {
   const core::EarthOrientation eop = earth_orientation_at(world, t);
-  return EpochFrame{earth.gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop)),
-                    astro::sun_position_gcrf(t)};
+  return EpochFrame{earth.gcrf_to_itrf_matrix(t, eop), Eigen::Vector3d(0.0, 0.0, core::earth_rotation_rate(eop))};
 }
 
 ReceiverPose receiver_pose(const EpochFrame& frame, core::GpsTime t, const core::StateVector& x_gcrf, const Eigen::Quaterniond& q,

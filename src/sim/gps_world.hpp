@@ -33,11 +33,10 @@ struct GpsWorld {
 /// gnss.source_time_gps, gnss.broadcast_errors.*, forces.earth_frame.eop).
 core::Result<GpsWorld> load_gps_world(const CampaignScenario& scenario, double span_s);
 
-/// The Earth's orientation and the Sun at one epoch, common to both spacecraft.
+/// The Earth's orientation at one epoch, common to both spacecraft.
 struct EpochFrame {
   Eigen::Matrix3d gcrf_to_itrf = Eigen::Matrix3d::Identity();
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();  // Earth rotation in ITRF [rad/s]
-  Eigen::Vector3d sun_gcrf = Eigen::Vector3d::Zero();
 };
 EpochFrame epoch_frame(const GpsWorld& world, core::GpsTime t);
 /// The same with the interpolated full model (core::InterpolatedEarthFrame: 6e-15 rad from it),

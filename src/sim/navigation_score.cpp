@@ -85,15 +85,15 @@ NavigationSample NavigationScore::score(gnc::Spacecraft who, const gnc::OnboardN
   const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(truth.dsc_gcrf);
   const Eigen::Vector3d position_gcrf =
       (solution->deputy_gcrf.r - solution->chief_gcrf.r) - (truth.osc_gcrf.r - truth.dsc_gcrf.r);
-  // The estimated antenna is the estimated centre of mass + C (arp + pco + p), the true one the
-  // true centre of mass + C (arp + pco + c_nom - c_true): their difference is the position error
-  // + C (p - (c_nom - c_true)) per spacecraft.
+  // The estimated antenna is the estimated centre of mass + C (known lever + p), the true one the
+  // true centre of mass + C (known lever + l), l the true minus the known lever: their difference
+  // is the position error + C (p - l) per spacecraft.
   const nav::NavVector& x = navigation.fixed() ? navigation.filter().x_fixed() : navigation.filter().x();
-  const auto lever = [&x](nav::Craft craft, const Eigen::Matrix3d& c, const Eigen::Vector3d& knowledge) {
-    return Eigen::Vector3d(c * (nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft)) - knowledge));
+  const auto lever = [&x](nav::Craft craft, const Eigen::Matrix3d& c, const Eigen::Vector3d& lever_error) {
+    return Eigen::Vector3d(c * (nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft)) - lever_error));
   };
-  const Eigen::Vector3d lever_gcrf = lever(nav::Craft::kOsc, truth.osc_body_to_gcrf, truth.osc_com_knowledge_m) -
-                                     lever(nav::Craft::kDsc, truth.dsc_body_to_gcrf, truth.dsc_com_knowledge_m);
+  const Eigen::Vector3d lever_gcrf = lever(nav::Craft::kOsc, truth.osc_body_to_gcrf, truth.osc_lever_error_m) -
+                                     lever(nav::Craft::kDsc, truth.dsc_body_to_gcrf, truth.dsc_lever_error_m);
   sample.valid = true;
   sample.fixed = navigation.fixed();
   sample.position_rtn_m = R * position_gcrf;

@@ -10,9 +10,10 @@
 //    sim/spacecraft_geometry.hpp: a few mm per spacecraft), which no navigation can see;
 //  - relative antenna position: the error of the antennas' relative position the estimate implies
 //    (its centres of mass plus C (arp + pco + p), p the estimated phase-centre error) against the
-//    true antennas: the position error plus R_osc (p_osc - (c_nom - c_osc)) - R_dsc (p_dsc -
-//    (c_nom - c_dsc)) (R the true attitude, c the true and nominal centres of mass in the body
-//    frame): what the GPS measurements determine, the paper's figure (as `visors nav`);
+//    true antennas: the position error plus R_osc (p_osc - l_osc) - R_dsc (p_dsc - l_dsc) (R the
+//    true attitude, l the true minus the known lever arm from the centre of mass to the phase
+//    centre in the body frame: FormationTruth): what the GPS measurements determine, the paper's
+//    figure (as `visors nav`);
 //  - relative velocity: estimated minus true inertial velocity difference.
 // Only the solutions the component uses (valid: OnboardNavigation::valid()) are scored; the steps
 // with a solution not yet (or no longer) valid are counted. The statistics leave out the slews to and from the observations (the satellites in view change
@@ -40,8 +41,9 @@ namespace visors::sim {
 struct FormationTruth {
   core::StateVector dsc_gcrf, osc_gcrf;
   Eigen::Matrix3d dsc_body_to_gcrf = Eigen::Matrix3d::Identity(), osc_body_to_gcrf = Eigen::Matrix3d::Identity();
-  /// Nominal minus true centre of mass, body frame [m].
-  Eigen::Vector3d dsc_com_knowledge_m = Eigen::Vector3d::Zero(), osc_com_knowledge_m = Eigen::Vector3d::Zero();
+  /// True minus known lever arm from the centre of mass to the antenna phase centre, body frame
+  /// [m]: (c_nom - c_true) + the phase centre's error (calibration error, boresight tilt).
+  Eigen::Vector3d dsc_lever_error_m = Eigen::Vector3d::Zero(), osc_lever_error_m = Eigen::Vector3d::Zero();
 };
 
 /// One spacecraft's navigation at a step (navigation.csv).

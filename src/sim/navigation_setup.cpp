@@ -1,7 +1,5 @@
 #include "sim/navigation_setup.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <string>
 
 #include "config/cdgps_settings_toml.hpp"
@@ -9,16 +7,11 @@
 #include "core/files/data_path.hpp"
 #include "core/files/eop_file.hpp"
 #include "dynamics/files/force_model_files.hpp"
-#include "sim/spacecraft_geometry.hpp"
 
 namespace visors::sim {
 
 core::Result<nav::CdgpsSettings> cdgps_settings(const CampaignScenario& s) {
-  nav::CdgpsSettings settings;
-  const GpsReceiverSettings& rx = s.gnss.receiver;
-  settings.sdcp_sigma_m = std::sqrt(2.0) * std::hypot(rx.phase_sigma_m, rx.phase_multipath_m);
-  settings.sd_code_sigma_m = std::max(settings.sd_code_sigma_m, std::sqrt(2.0) * std::hypot(rx.code_sigma_m, rx.code_multipath_m));
-  settings.graphic_sigma_m = std::hypot(settings.graphic_sigma_m, 0.5 * rx.code_multipath_m);
+  nav::CdgpsSettings settings;  // the flight team's defaults, never the truth receiver's errors
   if (s.nav_toml.empty()) return settings;
   auto table = config::toml_fields::parse(s.nav_toml);
   if (!table.ok()) return table.error();
@@ -52,11 +45,8 @@ core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const C
   auto filter = cdgps_settings(s);
   if (!filter.ok()) return filter.error();
   settings.filter = filter.value();
-  const GeometrySettings nominal;  // what the flight software knows of the geometry
-  settings.antenna_arp_body_m = s.gnss.receiver.antenna_body_m - nominal.com_nominal_body_m;
-  settings.antenna_pco_m = s.gnss.receiver.phase_center_offset_m;
-  settings.lrf_lever_body_m = nominal.payload_nominal_body_m - nominal.com_nominal_body_m;
-  settings.lrf_sigma_m = s.gnss.lrf.sigma_m;
+  // The antenna, rangefinder and their levers: OnboardNavigationSettings' defaults, the flight
+  // team's calibrated values (the truth's differ by its drawn errors: docs/truth-and-knowledge.md).
   auto eop = uplinked_earth_orientation(s);
   if (!eop.ok()) return eop.error();
   settings.earth_orientation = eop.value();

@@ -14,13 +14,10 @@
 
 namespace visors::sim {
 
-/// The filter's settings: the defaults, then the receiver's specification, then the scenario's
-/// [nav] table. The receiver's noise and multipath ([gnss.receiver]) are known on board
-/// (characterised on the ground): a single difference has sqrt(2) of each receiver's phase noise
-/// and multipath, the SD code at least sqrt(2) of its code noise and multipath, GRAPHIC half the
-/// code multipath on top of the default's broadcast-error allowance (multipath is correlated
-/// over multipath_tau_s: a white sigma of the same size is the filter's approximation).
-/// Errors name the [nav] key.
+/// The filter's settings: the flight defaults (nav/cdgps_settings.hpp), then the scenario's [nav]
+/// table. Nothing comes from the truth receiver ([gnss.receiver]): a flight team sets its
+/// filter's weights from its own characterisation, and a study that makes the truth harsher
+/// must not silently retune the filter (docs/truth-and-knowledge.md). Errors name the [nav] key.
 core::Result<nav::CdgpsSettings> cdgps_settings(const CampaignScenario& scenario);
 
 /// A spacecraft's on-board force model (dynamics::ForceModelConfig::onboard(), its mass and
@@ -33,9 +30,9 @@ core::Result<dynamics::ForceModel> onboard_force_model(const SpacecraftSettings&
 /// October 2024.
 core::Result<core::EarthOrientation> uplinked_earth_orientation(const CampaignScenario& scenario);
 
-/// The settings of a component's on-board navigation: cdgps_settings(), the nominal antenna
-/// ([gnss.receiver] antenna_body_m and phase_center_offset_m from the nominal centre of mass),
-/// the rangefinder's nominal lever arms and [gnss.lrf] sigma_m, the uplinked Earth orientation.
+/// The settings of a component's on-board navigation: cdgps_settings(), the calibrated antenna
+/// and rangefinder geometry and noise of gnc::OnboardNavigationSettings' defaults (not the truth
+/// receiver's), the uplinked Earth orientation.
 core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const CampaignScenario& scenario);
 
 /// The on-board navigation of `self` with both spacecraft's on-board force models.

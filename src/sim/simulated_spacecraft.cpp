@@ -34,6 +34,7 @@ core::Result<bool> set_up_receiver(SimulatedSpacecraft& v, const CampaignScenari
   GpsReceiverSettings settings = s.gnss.receiver;
   settings.klobuchar = gps.nav.ionosphere.value_or(gnss::KlobucharCoefficients{});
   settings.epoch_interval_s = s.step_s;  // clock_step_sigma_m is per epoch
+  settings.phase_center_error_body_m = v.geometry->phase_center_error_body_m();
   auto receiver = GpsReceiver::create(settings, RandomStream(s.seed, prefix + ".gps"));
   if (!receiver.ok()) return core::Error{"gnss.receiver." + receiver.error().field, receiver.error().message};
   v.receiver.emplace(std::move(receiver).value());

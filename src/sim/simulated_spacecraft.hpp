@@ -35,6 +35,8 @@ struct SimulatedSpacecraft {
   TruthDynamics truth;  // force model and propagator
   core::StateVector x_gcrf;
   Eigen::Quaterniond q_body_to_gcrf = Eigen::Quaterniond::Identity();
+  /// The observation target's apparent direction from this spacecraft this step (sim/sky_truth.hpp).
+  Eigen::Vector3d target_unit_gcrf = Eigen::Vector3d::UnitX();
   std::optional<AttitudeProfile> attitude;
   DragArea drag = DragArea::visors_6u();
   std::optional<Propulsion> propulsion;

@@ -42,6 +42,9 @@ core::Result<bool> GeometrySettings::validate() const {
   if (!valid_sigma(payload_pointing_sigma_rad)) {
     return core::Error{"payload_pointing_sigma_rad", "must be finite and >= 0 rad"};
   }
+  if (!valid_sigma(phase_center_knowledge_sigma_m)) {
+    return core::Error{"phase_center_knowledge_sigma_m", "must be finite and >= 0 m"};
+  }
   return true;
 }
 
@@ -58,6 +61,7 @@ SpacecraftGeometry SpacecraftGeometry::draw(const GeometrySettings& settings, Ra
   const Eigen::Vector3d direction = normal_vector(rng, 1.0);  // isotropic: a normal vector's direction
   const double norm = direction.norm();
   if (norm > 0.0) g.com_body_m_ += settings.com_knowledge_error_m / norm * direction;
+  g.phase_center_error_body_m_ = normal_vector(rng, settings.phase_center_knowledge_sigma_m);
   return g;
 }
 

@@ -4,6 +4,8 @@
 // degraded so that no fix is possible, where the laser ranges must carry the line of sight.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <fstream>
 #include <sstream>
 
@@ -38,6 +40,9 @@ std::string operations_scenario(const std::filesystem::path& dir, const std::str
   replace(text, "spacecraft = \"none\"", "spacecraft = \"osc\"");
   replace(text, "first_burst_s = 900.0", "first_burst_s = 60.0");
   replace(text, "enabled = false", "enabled = true");
+  // The flight team's filter is told its receiver's noise ([nav]; the filter never reads the
+  // truth's): the SD phase of two receivers, sqrt(2) x phase_sigma_m.
+  text += "\n[nav]\nsdcp_sigma_m = " + std::to_string(std::sqrt(2.0) * phase_sigma_m) + "\n";
   const auto path = dir / (name + ".toml");
   std::ofstream(path) << text;
   return path.string();

@@ -11,7 +11,7 @@
 #include "astro/relative_orbital_elements.hpp"
 #include "astro/roe_rtn_map.hpp"
 #include "astro/roe_stm.hpp"
-#include "astro/sun_moon.hpp"
+#include "astro/apparent_sun.hpp"
 #include "astro/j2_secular.hpp"
 #include "control/guidance.hpp"
 #include "core/constants.hpp"
@@ -47,16 +47,35 @@ struct ExactRelative {
   Eigen::Vector3d sun;
 };
 
-ExactRelative exact_relative(const ScienceOrbit& orbit) {
+// The line of sight: the target's apparent direction from the chief (astro/apparent_sun.hpp,
+// verified on its own against ERFA and published apparent places).
+ExactRelative exact_relative(const ScienceOrbit& orbit, const Eigen::Vector2d& target_offset_rad = Eigen::Vector2d::Zero()) {
   const astro::KeplerianElements chief = astro::propagate_mean_j2(kChief, orbit.t_obs);
   const astro::KeplerianElements deputy = astro::deputy_from_roe(chief, orbit.roe).value();
   const core::StateVector c = astro::cartesian_from_keplerian(chief, kMu);
   const core::StateVector d = astro::cartesian_from_keplerian(deputy, kMu);
-  return {d.r - c.r, d.v - c.v, astro::sun_position_gcrf(kEpoch + orbit.t_obs).normalized()};
+  return {d.r - c.r, d.v - c.v, astro::apparent_target_unit_gcrf(kEpoch + orbit.t_obs, c, target_offset_rad)};
 }
 
 // Mission requirements (digest sec. 7.2): 40 m +/- 15 mm along the Sun line, lateral offset
 // <= 18 mm, lateral inertial velocity <= 0.2 mm/s.
+// A target 310" east and 240" south of the disc centre (392": 76 mm at 40 m, four times the
+// lateral requirement): the science orbit aims at it, not at the Sun's centre.
+TEST(Guidance, ScienceOrbitAimsAtTheCommandedTarget) {
+  ScienceGeometry geometry;
+  geometry.target_offset_rad = Eigen::Vector2d(310.0, -240.0) * core::kArcsecToRad;
+  const auto orbit = science_orbit(kChief, kEpoch, geometry);
+  ASSERT_TRUE(orbit.ok()) << orbit.error().describe();
+  const ExactRelative x = exact_relative(orbit.value(), geometry.target_offset_rad);
+  EXPECT_LT((x.r_gcrf - x.r_gcrf.dot(x.sun) * x.sun).norm(), 0.018);
+}
+
+TEST(Guidance, ScienceOrbitRefusesANonFiniteTarget) {
+  ScienceGeometry geometry;
+  geometry.target_offset_rad.x() = std::nan("");
+  EXPECT_EQ(science_orbit(kChief, kEpoch, geometry).error().field, "target_offset_rad");
+}
+
 TEST(Guidance, ScienceOrbitPutsTheOpticsSpacecraftFortyMetresSunward) {
   const auto orbit = science_orbit(kChief, kEpoch);
   ASSERT_TRUE(orbit.ok()) << orbit.error().describe();

@@ -197,6 +197,64 @@ TEST(CampaignScenario, ResolvedGeometryReadsBack) {
   EXPECT_NEAR(back.geometry.payload_pointing_sigma_rad, 1e-5, 1e-20);
 }
 
+TEST(CampaignScenario, PhaseCentreKnowledgeDefaultIsFiveMillimetres) {
+  // docs/truth-and-knowledge.md: larger than the paper's 3 mm centre-of-mass variation.
+  EXPECT_EQ(campaign_from_toml("").value().geometry.phase_center_knowledge_sigma_m, 5e-3);
+}
+
+TEST(CampaignScenario, PhaseCentreKnowledgeIsRead) {
+  const auto s = campaign_from_toml("[geometry]\nphase_center_knowledge_sigma_m = 0.01\n").value();
+  EXPECT_EQ(s.geometry.phase_center_knowledge_sigma_m, 0.01);
+}
+
+TEST(CampaignScenario, NegativePhaseCentreKnowledgeIsNamed) {
+  EXPECT_EQ(campaign_from_toml("[geometry]\nphase_center_knowledge_sigma_m = -0.01\n").error().field,
+            "geometry.phase_center_knowledge_sigma_m");
+}
+
+TEST(CampaignScenario, ResolvedPhaseCentreKnowledgeReadsBack) {
+  auto s = default_campaign();
+  s.geometry.phase_center_knowledge_sigma_m = 0.0075;
+  EXPECT_EQ(campaign_from_toml(campaign_to_toml(s)).value().geometry.phase_center_knowledge_sigma_m, 0.0075);
+}
+
+TEST(CampaignScenario, TargetOffsetIsGivenToTheFlightSoftware) {
+  // A ground command: the flight components aim at what the truth scores against.
+  const auto s = campaign_from_toml("[campaign]\ntarget_offset_arcsec = [100.0, -50.0]\n").value();
+  EXPECT_NEAR(s.gnc.science.geometry.target_offset_rad.x(), 100.0 * visors::core::kArcsecToRad, 1e-18);
+  EXPECT_NEAR(s.gnc.science.geometry.target_offset_rad.y(), -50.0 * visors::core::kArcsecToRad, 1e-18);
+}
+
+TEST(CampaignScenario, TargetOffsetIsTheTruthsToo) {
+  const auto s = campaign_from_toml("[campaign]\ntarget_offset_arcsec = [100.0, -50.0]\n").value();
+  EXPECT_EQ(s.target_offset_rad, s.gnc.science.geometry.target_offset_rad);
+}
+
+TEST(CampaignScenario, DefaultTargetIsOffTheDiscCentre) {
+  // docs/apparent-sun.md: an active region 310" east, 240" south, in the default and shipped file.
+  const auto s = campaign_from_toml("").value();
+  EXPECT_NEAR(s.target_offset_rad.x() / visors::core::kArcsecToRad, 310.0, 1e-9);
+  EXPECT_NEAR(campaign_from_toml(shipped_scenario()).value().target_offset_rad.y() / visors::core::kArcsecToRad, -240.0, 1e-9);
+}
+
+TEST(CampaignScenario, TargetBeyondTheCoronaIsNamed) {
+  EXPECT_EQ(campaign_from_toml("[campaign]\ntarget_offset_arcsec = [1000.0, 1000.0]\n").error().field,
+            "campaign.target_offset_arcsec");
+}
+
+TEST(CampaignScenario, TargetOffsetOfThreeNumbersIsNamed) {
+  EXPECT_EQ(campaign_from_toml("[campaign]\ntarget_offset_arcsec = [1.0, 2.0, 3.0]\n").error().field,
+            "campaign.target_offset_arcsec");
+}
+
+TEST(CampaignScenario, ResolvedTargetOffsetReadsBack) {
+  auto s = default_campaign();
+  s.target_offset_rad = Eigen::Vector2d(-123.25, 456.5) * visors::core::kArcsecToRad;
+  const auto back = campaign_from_toml(campaign_to_toml(s)).value();
+  EXPECT_NEAR(back.target_offset_rad.x(), s.target_offset_rad.x(), 1e-18);
+  EXPECT_NEAR(back.gnc.science.geometry.target_offset_rad.y(), s.target_offset_rad.y(), 1e-18);
+}
+
 TEST(CampaignScenario, ResolvedForcesTableReadsBack) {
   const auto s = campaign_from_toml("[forces]\npreset = \"onboard\"\n[forces.gravity]\ndegree = 8\norder = 8\n").value();
   const auto back = campaign_from_toml(campaign_to_toml(s)).value();

@@ -455,6 +455,22 @@ TEST_F(GpsReceiverTest, PhaseCentreIsAlongTheTiltedBoresight) {
   EXPECT_LT(tilt, 5.0 * 30.0 * std::sqrt(2.0) * core::kArcsecToRad);
 }
 
+// The calibration error of the phase centre (drawn with the spacecraft's geometry) is added to it
+// as given.
+TEST_F(GpsReceiverTest, PhaseCentreCarriesItsCalibrationError) {
+  GpsReceiverSettings with = settings();
+  with.phase_center_error_body_m = Eigen::Vector3d(0.004, -0.003, 0.002);
+  const GpsReceiver a = receiver(with, "antenna");
+  const GpsReceiver b = receiver(settings(), "antenna");  // same stream: same boresight
+  EXPECT_LT((a.phase_center_body_m() - b.phase_center_body_m() - with.phase_center_error_body_m).norm(), 1e-15);
+}
+
+TEST_F(GpsReceiverTest, NonFinitePhaseCentreErrorIsNamed) {
+  GpsReceiverSettings bad = settings();
+  bad.phase_center_error_body_m.x() = std::nan("");
+  EXPECT_EQ(bad.validate().error().field, "phase_center_error_body_m");
+}
+
 TEST_F(GpsReceiverTest, MeasurementsPassTheFlightValidation) {
   GpsReceiver r = receiver(settings(), "valid");
   for (int step = 0; step < 100; ++step) {

@@ -60,7 +60,7 @@ constexpr int kDraws = 20000;
 struct Moments {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero(), std = Eigen::Vector3d::Zero();
 };
-enum class Quantity { kCom, kPayloadPoint, kAxis };
+enum class Quantity { kCom, kPayloadPoint, kAxis, kPhaseCentre };
 
 Moments sample(Quantity quantity) {
   RandomStream rng(11, "stats.geometry");
@@ -72,6 +72,7 @@ Moments sample(Quantity quantity) {
       case Quantity::kCom: x = g.com_body_m() - g.com_nominal_body_m(); break;
       case Quantity::kPayloadPoint: x = g.payload_body_m() - g.payload_nominal_body_m(); break;
       case Quantity::kAxis: x = g.payload_axis_body() - g.payload_axis_nominal_body(); break;
+      case Quantity::kPhaseCentre: x = g.phase_center_error_body_m(); break;
     }
     sum += x;
     sum2 += x.cwiseProduct(x);
@@ -154,6 +155,36 @@ TEST(SpacecraftGeometry, KnowledgeErrorDirectionIsIsotropic) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (int k = 0; k < n; ++k) sum += knowledge_offset(static_cast<std::uint64_t>(100 + k), 1.0);
   EXPECT_LT((sum / n).cwiseAbs().maxCoeff(), 5.0 / std::sqrt(3.0 * n));
+}
+
+// The phase centre's calibration error (GeometrySettings default 5 mm per axis): drawn last, so
+// every earlier draw of the stream is what it was without it.
+TEST(SpacecraftGeometry, PhaseCentreErrorIsUnbiased) {
+  EXPECT_LT(sample(Quantity::kPhaseCentre).mean.cwiseAbs().maxCoeff(), 5.0 * 5e-3 / std::sqrt(kDraws));
+}
+
+TEST(SpacecraftGeometry, PhaseCentreErrorHas5mmPerAxis) {
+  EXPECT_LT((sample(Quantity::kPhaseCentre).std.array() - 5e-3).abs().maxCoeff(), 5.0 * 5e-3 / std::sqrt(2.0 * kDraws));
+}
+
+TEST(SpacecraftGeometry, PhaseCentreErrorLeavesTheCentreOfMassAsItWas) {
+  GeometrySettings without;
+  without.phase_center_knowledge_sigma_m = 0.0;
+  RandomStream a(4, "osc.geometry"), b(4, "osc.geometry");
+  EXPECT_EQ(SpacecraftGeometry::draw({}, a).com_body_m(), SpacecraftGeometry::draw(without, b).com_body_m());
+}
+
+TEST(SpacecraftGeometry, ZeroPhaseCentreSigmaGivesNoError) {
+  GeometrySettings without;
+  without.phase_center_knowledge_sigma_m = 0.0;
+  RandomStream rng(5, "dsc.geometry");
+  EXPECT_EQ(SpacecraftGeometry::draw(without, rng).phase_center_error_body_m(), Eigen::Vector3d::Zero());
+}
+
+TEST(SpacecraftGeometry, NegativePhaseCentreSigmaIsNamed) {
+  GeometrySettings s;
+  s.phase_center_knowledge_sigma_m = -1e-3;
+  EXPECT_EQ(s.validate().error().field, "phase_center_knowledge_sigma_m");
 }
 
 TEST(SpacecraftGeometry, NegativeKnowledgeErrorIsNamed) {
