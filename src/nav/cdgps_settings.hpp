@@ -88,10 +88,10 @@ struct CdgpsSettings {
   bool sd_code = true;
   double sd_code_sigma_m = 0.3;
   // Elevation weighting: each receiver's code and phase sigma divided by the sine of the
-  // satellite's elevation above the antenna plane, floored at min_weighting_elevation_deg (a
-  // receiver whose noise grows at low elevation; gnss-sim's elevation_dependent_noise). Off by
-  // default: gnss-sim's default noise does not depend on the elevation.
-  bool elevation_weighting = false;
+  // satellite's elevation above the antenna plane, floored at min_weighting_elevation_deg. On: a
+  // patch antenna's noise and multipath grow towards the horizon, which the flight team knows of
+  // its receiver (a flight choice, not read from the simulator's truth; docs/truth-and-knowledge.md).
+  bool elevation_weighting = true;
   double min_weighting_elevation_deg = 5.0;
 
   // Integer ambiguity resolution (digest 6.4-6.5); off: the float filter alone.

@@ -370,6 +370,13 @@ CampaignScenario default_campaign() {
   // telescope looks at a commanded point of the disc, not at its centre.
   s.target_offset_rad = Eigen::Vector2d(310.0, -240.0) * core::kArcsecToRad;
   s.gnc.science.geometry.target_offset_rad = s.target_offset_rad;
+  // The real sky's receiver errors (docs/truth-and-knowledge.md "Receiver errors"): noise growing
+  // as 1 / sin(elevation) and correlated code and carrier multipath; the receiver model's own
+  // defaults (sim/gps_receiver.hpp) stay white for its unit tests.
+  s.gnss.receiver.elevation_dependent_noise = true;
+  s.gnss.receiver.phase_multipath_m = 0.002;
+  s.gnss.receiver.code_multipath_m = 0.3;
+  s.gnss.receiver.multipath_tau_s = 60.0;
   return s;
 }
 

@@ -15,6 +15,7 @@
 #include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
 #include "support/temp_file.hpp"
+#include "support/white_receiver.hpp"
 
 namespace visors::test {
 namespace {
@@ -40,9 +41,10 @@ std::string operations_scenario(const std::filesystem::path& dir, const std::str
   replace(text, "spacecraft = \"none\"", "spacecraft = \"osc\"");
   replace(text, "first_burst_s = 900.0", "first_burst_s = 60.0");
   replace(text, "enabled = false", "enabled = true");
+  whiten_shipped_receiver(text);  // the filter's figures under white receiver noise
   // The flight team's filter is told its receiver's noise ([nav]; the filter never reads the
   // truth's): the SD phase of two receivers, sqrt(2) x phase_sigma_m.
-  text += "\n[nav]\nsdcp_sigma_m = " + std::to_string(std::sqrt(2.0) * phase_sigma_m) + "\n";
+  text += "\n[nav]\nsdcp_sigma_m = " + std::to_string(std::sqrt(2.0) * phase_sigma_m) + "\nelevation_weighting = false\n";
   const auto path = dir / (name + ".toml");
   std::ofstream(path) << text;
   return path.string();

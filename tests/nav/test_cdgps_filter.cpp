@@ -120,6 +120,7 @@ RunOutcome simulate(int epochs, int slip_epoch = -1, const Impulse& impulse = {}
                     const RemoteClock& remote = {}, const StartError& start = {}) {
   Simulation sim;
   CdgpsSettings settings;
+  settings.elevation_weighting = false;  // this simulation's noise does not depend on the elevation
   settings.position_sigma_m = std::max(settings.position_sigma_m, 1.5 * start.scale * 6.0);
   settings.sd_code = remote.sd_code;
   settings.graphic_sigma_m = 0.1;  // no broadcast error here: (0.2 m code + 2 mm phase) / 2
@@ -293,6 +294,7 @@ EphemerisSwitch switch_ephemerides(double switch_sigma_m) {
   }
   const gnss::EphemerisSet broadcast = gnss::EphemerisSet::screen(records);
   CdgpsSettings settings;
+  settings.elevation_weighting = false;  // this simulation's noise does not depend on the elevation
   settings.ephemeris_switch_sigma_m = switch_sigma_m;
   auto filter = CdgpsFilter::create(settings, model(), model()).value();
   core::GpsTime t = epoch();

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/files/data_path.hpp"
+#include "support/white_receiver.hpp"
 #include "sim/campaign_simulation.hpp"
 
 namespace {
@@ -190,7 +191,9 @@ class ScienceLegWithGps : public ::testing::Test {
     dir_ = run_dir("science_gps");
     std::string text = kScience;
     text.replace(text.find("mode = \"ideal\""), 14, "mode = \"cdgps\"");
-    auto result = run_campaign(campaign_from_toml(text).value(), dir_);
+    auto scenario = campaign_from_toml(text).value();
+    visors::test::use_white_receiver(scenario.gnss.receiver);  // the plumbing's figures: white noise
+    auto result = run_campaign(scenario, dir_);
     ASSERT_TRUE(result.ok()) << result.error().describe();
     summary_ = result->summary;
     navigation_csv_ = read(dir_ / "navigation.csv");

@@ -12,6 +12,7 @@
 
 #include "core/files/data_path.hpp"
 #include "core/files/text_file.hpp"
+#include "support/white_receiver.hpp"
 #include "sim/campaign_simulation.hpp"
 
 namespace visors::sim {
@@ -31,10 +32,13 @@ std::string read(const std::filesystem::path& path) {
 
 FaultRun run(const std::string& name) {
   const std::filesystem::path file = std::filesystem::path(VISORS_SOURCE_DIR) / "data/scenarios/faults" / (name + ".toml");
-  auto scenario = campaign_from_toml(read(file));
-  EXPECT_TRUE(scenario.ok()) << file << ": " << (scenario.ok() ? "" : scenario.error().describe());
+  const auto parsed = campaign_from_toml(read(file));
+  EXPECT_TRUE(parsed.ok()) << file << ": " << (parsed.ok() ? "" : parsed.error().describe());
+  auto scenario = parsed.value();
+  // The FDIR's figures under white receiver noise: the real sky's navigation is measured apart.
+  visors::test::use_white_receiver(scenario.gnss.receiver);
   const auto dir = std::filesystem::temp_directory_path() / ("visors_fault_" + std::to_string(::getpid()) + "_" + name);
-  const auto result = run_campaign(scenario.value(), dir);
+  const auto result = run_campaign(scenario, dir);
   EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().describe());
   FaultRun out;
   if (result.ok()) out.summary = result->summary;
