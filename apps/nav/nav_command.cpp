@@ -111,8 +111,8 @@ nav::CdgpsFilter make_filter(const RunInputs& in, Craft local, const ReplaySetti
   }
   settings.elevation_weighting = settings.elevation_weighting || r.elevation_weighting;
   settings.ambiguity_resolution = settings.ambiguity_resolution && r.ambiguity_resolution;
-  auto created = nav::CdgpsFilter::create(settings, or_input_error(sim::onboard_force_model(in.scenario.dsc, "dsc")),
-                                          or_input_error(sim::onboard_force_model(in.scenario.osc, "osc")));
+  auto created = nav::CdgpsFilter::create(settings, or_input_error(sim::onboard_force_model(in.scenario.flight, gnc::Spacecraft::kDsc)),
+                                          or_input_error(sim::onboard_force_model(in.scenario.flight, gnc::Spacecraft::kOsc)));
   if (!created) throw InputError("filter settings: " + created.error().describe());
   return std::move(created).value();
 }

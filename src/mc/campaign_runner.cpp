@@ -57,7 +57,7 @@ core::Result<bool> same_data_as_stored(ResultsStore& store, const std::vector<si
 
 void warm_caches(const sim::CampaignScenario& base) {
   (void)sim::make_truth_dynamics(base, base.dsc, "dsc");
-  if (base.navigation_mode == sim::NavigationMode::kCdgps) (void)sim::onboard_force_model(base.dsc, "dsc");
+  if (base.navigation_mode == sim::NavigationMode::kCdgps) (void)sim::onboard_force_model(base.flight, gnc::Spacecraft::kDsc);
 }
 
 core::Result<std::int64_t> run_into_store(const Campaign& campaign, ResultsStore& store, const PoolOptions& options,

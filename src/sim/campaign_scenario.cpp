@@ -256,18 +256,50 @@ core::Result<bool> read_geometry(const toml::table& root, CampaignScenario& s) {
 core::Result<bool> read_spacecraft(const toml::table& root, const std::string& sec, SpacecraftSettings& v) {
   const toml::table* t = table_at(root, sec);
   if (t == nullptr) return true;
-  if (auto e = check_keys(*t, sec, {"mass_kg", "propellant_kg", "cd", "cr", "srp_area_m2"})) return *e;
+  if (auto e = check_keys(*t, sec, {"mass_kg", "propellant_kg", "cd", "cr", "srp_area_m2", "mass_sigma_kg", "cd_sigma", "cr_sigma"})) {
+    return *e;
+  }
   VISORS_TRY(mass, number_at(*t, sec, "mass_kg", v.mass_kg));
   VISORS_TRY(propellant, number_at(*t, sec, "propellant_kg", v.propellant_kg));
   VISORS_TRY(cd, number_at(*t, sec, "cd", v.cd));
   VISORS_TRY(cr, number_at(*t, sec, "cr", v.cr));
   VISORS_TRY(area, number_at(*t, sec, "srp_area_m2", v.srp_area_m2));
+  VISORS_TRY(mass_sigma, number_at(*t, sec, "mass_sigma_kg", v.mass_sigma_kg));
+  VISORS_TRY(cd_sigma, number_at(*t, sec, "cd_sigma", v.cd_sigma));
+  VISORS_TRY(cr_sigma, number_at(*t, sec, "cr_sigma", v.cr_sigma));
   if (auto ok = in_range(mass, 0.1, 1000.0, sec + ".mass_kg"); !ok) return ok.error();
   if (auto ok = in_range(propellant, 0.0, 0.9 * mass, sec + ".propellant_kg"); !ok) return ok.error();
   if (auto ok = in_range(cd, 0.0, 5.0, sec + ".cd"); !ok) return ok.error();
   if (auto ok = in_range(cr, 0.0, 2.0, sec + ".cr"); !ok) return ok.error();
   if (auto ok = in_range(area, 0.0, 10.0, sec + ".srp_area_m2"); !ok) return ok.error();
-  v = SpacecraftSettings{mass, propellant, cd, cr, area};
+  // At most a tenth of the nominal: the draw is clamped at 5 sigma, so the true value stays
+  // positive and physical.
+  if (auto ok = in_range(mass_sigma, 0.0, 0.1 * mass / 5.0, sec + ".mass_sigma_kg"); !ok) return ok.error();
+  if (auto ok = in_range(cd_sigma, 0.0, 0.1 * cd, sec + ".cd_sigma"); !ok) return ok.error();
+  if (auto ok = in_range(cr_sigma, 0.0, 0.1 * cr, sec + ".cr_sigma"); !ok) return ok.error();
+  v = SpacecraftSettings{mass, propellant, cd, cr, area, mass_sigma, cd_sigma, cr_sigma};
+  return true;
+}
+
+// [flight]: what the flight software is told of both spacecraft.
+core::Result<bool> read_flight_knowledge(const toml::table& root, CampaignScenario& s) {
+  const toml::table* t = table_at(root, "flight");
+  if (t == nullptr) return true;
+  const std::string sec = "flight";
+  if (auto e = check_keys(*t, sec, {"dsc_mass_kg", "osc_mass_kg", "cd", "cr", "drag_area_m2", "srp_area_m2"})) return *e;
+  FlightKnowledge& k = s.flight;
+  const struct {
+    const char* key;
+    double* value;
+    double low, high;
+  } fields[] = {{"dsc_mass_kg", &k.dsc_mass_kg, 0.1, 1000.0}, {"osc_mass_kg", &k.osc_mass_kg, 0.1, 1000.0},
+                {"cd", &k.cd, 0.0, 5.0},                       {"cr", &k.cr, 0.0, 2.0},
+                {"drag_area_m2", &k.drag_area_m2, 0.0, 10.0},   {"srp_area_m2", &k.srp_area_m2, 0.0, 10.0}};
+  for (const auto& f : fields) {
+    VISORS_TRY(value, number_at(*t, sec, f.key, *f.value));
+    if (auto ok = in_range(value, f.low, f.high, sec + "." + f.key); !ok) return ok.error();
+    *f.value = value;
+  }
   return true;
 }
 
@@ -364,8 +396,10 @@ CampaignScenario default_campaign() {
   s.chief_mean = astro::KeplerianElements{core::kWgs84SemiMajorAxis + 500e3, 0.004, 97.8 * core::kDegToRad,
                                           157.5 * core::kDegToRad, 90.0 * core::kDegToRad, -90.0 * core::kDegToRad};
   s.initial_roe_m << 0.0, 0.0, 0.0, 200.0, 0.0, 200.0;  // the standby orbit
-  s.dsc = SpacecraftSettings{11.35, 0.378, 2.2, 1.8, 0.35};
-  s.osc = SpacecraftSettings{10.62, 0.205, 2.2, 1.8, 0.35};
+  s.dsc.mass_kg = 11.35;
+  s.dsc.propellant_kg = 0.378;
+  s.osc.mass_kg = 10.62;
+  s.osc.propellant_kg = 0.205;
   // An active region 310" east and 240" south of the disc centre (0.41 solar radii): the
   // telescope looks at a commanded point of the disc, not at its centre.
   s.target_offset_rad = Eigen::Vector2d(310.0, -240.0) * core::kArcsecToRad;
@@ -385,7 +419,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (!parsed.ok()) return parsed.error();
   const toml::table& root = parsed.value();
   if (auto e = check_keys(root, "", {"name", "seed", "time", "chief", "formation", "campaign", "navigation", "propulsion",
-                                     "dsc", "osc", "geometry", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
+                                     "dsc", "osc", "flight", "geometry", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
     return *e;
   }
   CampaignScenario s = default_campaign();
@@ -400,6 +434,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   }
   if (auto ok = read_spacecraft(root, "dsc", s.dsc); !ok) return ok.error();
   if (auto ok = read_spacecraft(root, "osc", s.osc); !ok) return ok.error();
+  if (auto ok = read_flight_knowledge(root, s); !ok) return ok.error();
   if (auto ok = read_gnss_settings(root, s.gnss); !ok) return ok.error();
   if (const toml::table* forces = table_at(root, "forces")) {
     auto config = config::force_model_config_from_toml(forces, "forces");
@@ -417,8 +452,8 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   const auto& p = s.propulsion;
   const auto& g = s.gnc;
   const auto spacecraft = [](const char* name, const SpacecraftSettings& v) {
-    return fmt::format("[{}]\nmass_kg = {:.17g}\npropellant_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\nsrp_area_m2 = {:.17g}\n\n",
-                       name, v.mass_kg, v.propellant_kg, v.cd, v.cr, v.srp_area_m2);
+    return fmt::format("[{}]\nmass_kg = {:.17g}\npropellant_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\nsrp_area_m2 = {:.17g}\nmass_sigma_kg = {:.17g}\ncd_sigma = {:.17g}\ncr_sigma = {:.17g}\n\n",
+                       name, v.mass_kg, v.propellant_kg, v.cd, v.cr, v.srp_area_m2, v.mass_sigma_kg, v.cd_sigma, v.cr_sigma);
   };
   std::string out = fmt::format("# Resolved scenario of this run (every default written out).\nname = \"{}\"\nseed = {}\n\n", s.name, s.seed);
   out += fmt::format("[time]\nstart_gps = \"{}\"\nstep_s = {:.17g}\noutput_step_s = {:.17g}\nintegration_step_s = {:.17g}\nmax_duration_s = {:.17g}\n\n",
@@ -438,6 +473,9 @@ std::string campaign_to_toml(const CampaignScenario& s) {
                      p.magnitude_sigma, deg(p.direction_sigma_rad), p.isp_s, p.isp_sigma_s);
   out += spacecraft("dsc", s.dsc);
   out += spacecraft("osc", s.osc);
+  const FlightKnowledge& told = s.flight;
+  out += fmt::format("[flight]\ndsc_mass_kg = {:.17g}\nosc_mass_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\ndrag_area_m2 = {:.17g}\nsrp_area_m2 = {:.17g}\n\n",
+                     told.dsc_mass_kg, told.osc_mass_kg, told.cd, told.cr, told.drag_area_m2, told.srp_area_m2);
   out += fmt::format("[geometry]\ncom_variation_sigma_m = {:.17g}\ncom_knowledge_error_m = {:.17g}\npayload_position_sigma_m = {:.17g}\npayload_pointing_sigma_arcsec = {:.17g}\nphase_center_knowledge_sigma_m = {:.17g}\n\n",
                      s.geometry.com_sigma_m, s.geometry.com_knowledge_error_m, s.geometry.payload_position_sigma_m,
                      s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad, s.geometry.phase_center_knowledge_sigma_m);

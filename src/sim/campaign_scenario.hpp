@@ -40,11 +40,30 @@ struct NavigationErrorSettings {
   double correlation_time_s = 600.0;
 };
 
+/// One spacecraft of the truth ([dsc], [osc]): its nominal design values and the 1-sigma of the
+/// per-run deviation of its true values from them (sim/truth_dynamics.hpp draw_true_spacecraft).
+/// The flight software knows the nominal values from its own configuration ([flight]), never
+/// from these keys (docs/truth-and-knowledge.md).
 struct SpacecraftSettings {
   double mass_kg = 11.35;        // wet mass at start [kg]
   double propellant_kg = 0.378;  // [kg] (DSC: 14.6 m/s at Isp 44 s; OSC 0.205 kg for 8.4 m/s)
   double cd = 2.2;
   double cr = 1.8;
+  double srp_area_m2 = 0.35;
+  double mass_sigma_kg = 0.05;  // a weighed CubeSat with a gauged tank: 0.5 % [kg] (ours)
+  double cd_sigma = 0.22;       // 10 %: free-molecular Cd of a flat-panel body, 2.0-2.4 (ours)
+  double cr_sigma = 0.18;       // 10 %: the optical properties' ageing and the panels (ours)
+};
+
+/// What the flight software is told of both spacecraft ([flight]): the flight team's values,
+/// with their defaults the design's. The on-board force models and each component's own mass
+/// come from here.
+struct FlightKnowledge {
+  double dsc_mass_kg = 11.35;  // [kg]
+  double osc_mass_kg = 10.62;  // [kg]
+  double cd = 2.2;
+  double cr = 1.8;
+  double drag_area_m2 = 0.35;  // the mean of the attitudes' 0.15-0.55 m^2
   double srp_area_m2 = 0.35;
 };
 
@@ -102,6 +121,7 @@ struct CampaignScenario {
   PropulsionSettings propulsion;
   SpacecraftSettings dsc;
   SpacecraftSettings osc;
+  FlightKnowledge flight;  // [flight]: what the flight software is told
   /// Truth geometry errors of both spacecraft ([geometry]; the nominal points are not scenario
   /// keys): centre-of-mass variation and knowledge error, payload mounting and pointing.
   GeometrySettings geometry;

@@ -149,6 +149,11 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
     return ok.error();
   }
   for (const SimulatedSpacecraft& v : sim.vehicles_) {
+    const SpacecraftSettings& t = v.true_spacecraft;
+    const double told_kg = v.id == Spacecraft::kDsc ? scenario.flight.dsc_mass_kg : scenario.flight.osc_mass_kg;
+    recorder.event(0.0, v.name, "truth",
+                   fmt::format("mass {:.4f} kg, Cd {:.4f}, Cr {:.4f} (the flight software is told {:.4f} kg, {:.4f}, {:.4f})",
+                               t.mass_kg, t.cd, t.cr, told_kg, scenario.flight.cd, scenario.flight.cr));
     for (const auto& warning : v.truth.forces->warnings()) {
       recorder.event(0.0, v.name, "warning", warning);
       if (std::find(sim.fallbacks_.begin(), sim.fallbacks_.end(), warning) == sim.fallbacks_.end()) sim.fallbacks_.push_back(warning);

@@ -59,8 +59,10 @@ struct Craft {
   std::int64_t maneuvers = 0;  // executed pieces
 };
 
-core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftSettings& sc, const core::StateVector& x0,
+core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftSettings& nominal, const core::StateVector& x0,
                           const gnss::KlobucharCoefficients& ionosphere) {
+  RandomStream ballistics(s.seed, c.name + ".ballistics");  // the same draw as `visors run`
+  const SpacecraftSettings sc = draw_true_spacecraft(nominal, ballistics);
   auto truth = make_truth_dynamics(s, sc, c.name);
   if (!truth.ok()) return truth.error();
   c.truth = std::move(truth).value();

@@ -19,12 +19,14 @@ core::Result<nav::CdgpsSettings> cdgps_settings(const CampaignScenario& s) {
   return settings;
 }
 
-core::Result<dynamics::ForceModel> onboard_force_model(const SpacecraftSettings& sc, std::string_view name) {
+core::Result<dynamics::ForceModel> onboard_force_model(const FlightKnowledge& knowledge, gnc::Spacecraft craft) {
+  const std::string_view name = craft == gnc::Spacecraft::kDsc ? "dsc" : "osc";
   dynamics::SpacecraftProperties p;
-  p.mass = sc.mass_kg;
-  p.cd = sc.cd;
-  p.cr = sc.cr;
-  p.srp_area = sc.srp_area_m2;
+  p.mass = craft == gnc::Spacecraft::kDsc ? knowledge.dsc_mass_kg : knowledge.osc_mass_kg;
+  p.cd = knowledge.cd;
+  p.cr = knowledge.cr;
+  p.drag_area = knowledge.drag_area_m2;
+  p.srp_area = knowledge.srp_area_m2;
   auto model = dynamics::files::load_force_model(dynamics::ForceModelConfig::onboard(), p);
   if (!model.ok()) return core::Error{std::string(name) + " on-board force model", model.error().describe()};
   return std::move(model).value();
@@ -56,9 +58,9 @@ core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const C
 core::Result<gnc::OnboardNavigation> make_onboard_navigation(const CampaignScenario& s, gnc::Spacecraft self) {
   auto settings = onboard_navigation_settings(s);
   if (!settings.ok()) return settings.error();
-  auto dsc = onboard_force_model(s.dsc, "dsc");
+  auto dsc = onboard_force_model(s.flight, gnc::Spacecraft::kDsc);
   if (!dsc.ok()) return dsc.error();
-  auto osc = onboard_force_model(s.osc, "osc");
+  auto osc = onboard_force_model(s.flight, gnc::Spacecraft::kOsc);
   if (!osc.ok()) return osc.error();
   auto navigation = gnc::OnboardNavigation::create(settings.value(), self, std::move(dsc).value(), std::move(osc).value());
   if (!navigation.ok()) return core::Error{"nav." + navigation.error().field, navigation.error().message};

@@ -20,9 +20,9 @@ namespace visors::sim {
 /// must not silently retune the filter (docs/truth-and-knowledge.md). Errors name the [nav] key.
 core::Result<nav::CdgpsSettings> cdgps_settings(const CampaignScenario& scenario);
 
-/// A spacecraft's on-board force model (dynamics::ForceModelConfig::onboard(), its mass and
-/// areas). Errors name `name` ("dsc", "osc").
-core::Result<dynamics::ForceModel> onboard_force_model(const SpacecraftSettings& spacecraft, std::string_view name);
+/// A spacecraft's on-board force model (dynamics::ForceModelConfig::onboard()) with what the flight
+/// software is told of its mass, coefficients and areas ([flight]). Errors name the spacecraft.
+core::Result<dynamics::ForceModel> onboard_force_model(const FlightKnowledge& knowledge, gnc::Spacecraft craft);
 
 /// The Earth orientation uplinked to the spacecraft: the IERS values at the run's start from the
 /// scenario's EOP file (zero when it names none, or the file is not found). Without them the

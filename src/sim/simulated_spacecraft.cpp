@@ -41,12 +41,12 @@ core::Result<bool> set_up_receiver(SimulatedSpacecraft& v, const CampaignScenari
   return true;
 }
 
-core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenario& s, const SpacecraftSettings& sc,
-                                   bool active, const std::string& prefix, const GpsWorld* gps) {
+core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenario& s, bool active, const std::string& prefix,
+                                   const GpsWorld* gps) {
   gnc::GncConfig config = s.gnc;
   config.self = v.id;
   config.active = active;
-  config.mass_kg = sc.mass_kg;
+  config.mass_kg = v.id == gnc::Spacecraft::kDsc ? s.flight.dsc_mass_kg : s.flight.osc_mass_kg;  // what it is told
   std::optional<gnc::OnboardNavigation> onboard;
   if (gps != nullptr) {
     if (auto ok = set_up_receiver(v, s, *gps, prefix); !ok) return ok.error();
@@ -70,12 +70,14 @@ core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenari
 }  // namespace
 
 core::Result<bool> set_up_spacecraft(SimulatedSpacecraft& v, const CampaignScenario& scenario,
-                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf,
+                                     const SpacecraftSettings& nominal, bool active, const core::StateVector& x0_gcrf,
                                      const GpsWorld* gps) {
   const std::string prefix(v.name);
   v.x_gcrf = x0_gcrf;
-  if (auto ok = set_up_truth(v, scenario, settings, prefix); !ok) return ok.error();
-  return set_up_avionics(v, scenario, settings, active, prefix, gps);
+  RandomStream ballistics(scenario.seed, prefix + ".ballistics");
+  v.true_spacecraft = draw_true_spacecraft(nominal, ballistics);
+  if (auto ok = set_up_truth(v, scenario, v.true_spacecraft, prefix); !ok) return ok.error();
+  return set_up_avionics(v, scenario, active, prefix, gps);
 }
 
 }  // namespace visors::sim

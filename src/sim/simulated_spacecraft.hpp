@@ -35,6 +35,8 @@ struct SimulatedSpacecraft {
   TruthDynamics truth;  // force model and propagator
   core::StateVector x_gcrf;
   Eigen::Quaterniond q_body_to_gcrf = Eigen::Quaterniond::Identity();
+  /// The spacecraft's true mass, Cd and Cr this run (draw_true_spacecraft of its truth keys).
+  SpacecraftSettings true_spacecraft;
   /// The observation target's apparent direction from this spacecraft this step (sim/sky_truth.hpp).
   Eigen::Vector3d target_unit_gcrf = Eigen::Vector3d::UnitX();
   std::optional<AttitudeProfile> attitude;
@@ -67,8 +69,11 @@ struct SimulatedSpacecraft {
 /// random streams named after the spacecraft; with `gps` ([navigation] mode = "cdgps") the GPS
 /// receiver (as `visors gnss-sim`'s: RandomStream(seed, "<name>.gps"), the world's ionosphere)
 /// and the component's on-board navigation. Errors name the scenario field.
+/// `nominal`: the spacecraft's truth keys; its true values are drawn from them
+/// (draw_true_spacecraft, stream "<name>.ballistics"), the flight component is told
+/// scenario.flight's.
 core::Result<bool> set_up_spacecraft(SimulatedSpacecraft& v, const CampaignScenario& scenario,
-                                     const SpacecraftSettings& settings, bool active, const core::StateVector& x0_gcrf,
+                                     const SpacecraftSettings& nominal, bool active, const core::StateVector& x0_gcrf,
                                      const GpsWorld* gps = nullptr);
 
 }  // namespace visors::sim

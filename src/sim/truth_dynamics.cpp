@@ -1,9 +1,20 @@
-#include "dynamics/files/force_model_files.hpp"
 #include "sim/truth_dynamics.hpp"
 
+#include <algorithm>
 #include <string>
 
+#include "dynamics/files/force_model_files.hpp"
+
 namespace visors::sim {
+
+SpacecraftSettings draw_true_spacecraft(const SpacecraftSettings& nominal, RandomStream& rng) {
+  const auto deviation = [&rng](double sigma) { return sigma * std::clamp(rng.normal(), -5.0, 5.0); };
+  SpacecraftSettings truth = nominal;
+  truth.mass_kg += deviation(nominal.mass_sigma_kg);
+  truth.cd += deviation(nominal.cd_sigma);
+  truth.cr += deviation(nominal.cr_sigma);
+  return truth;
+}
 
 core::Result<TruthDynamics> make_truth_dynamics(const CampaignScenario& s, const SpacecraftSettings& sc,
                                                 std::string_view name) {

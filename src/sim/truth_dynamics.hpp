@@ -10,6 +10,7 @@
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
 #include "sim/campaign_scenario.hpp"
+#include "sim/random_stream.hpp"
 
 namespace visors::sim {
 
@@ -17,6 +18,11 @@ struct TruthDynamics {
   std::unique_ptr<dynamics::ForceModel> forces;  // the propagator keeps a pointer: never moves
   std::optional<dynamics::OrbitPropagator> propagator;
 };
+
+/// The spacecraft's true values for one run: mass, Cd and Cr each nominal + N(0, its sigma), the
+/// normal draw clamped at 5 sigma (three draws from `rng`, in that order, whatever the sigmas);
+/// propellant and SRP area as given. What the flight software's [flight] values miss.
+SpacecraftSettings draw_true_spacecraft(const SpacecraftSettings& nominal, RandomStream& rng);
 
 /// Errors name "forces (<name>)" or the propagator setting.
 core::Result<TruthDynamics> make_truth_dynamics(const CampaignScenario& scenario, const SpacecraftSettings& spacecraft,

@@ -57,3 +57,49 @@ TEST(NavigationSetup, DefaultTruthReceiverHasTheRealSkysErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+// Ballistic knowledge: the flight software's [flight] values against the truth's [dsc]/[osc].
+TEST(FlightKnowledge, TruthMassDoesNotReachTheFlightSoftware) {
+  const auto s = visors::sim::campaign_from_toml("[dsc]\nmass_kg = 12.0\n").value();
+  EXPECT_EQ(s.flight.dsc_mass_kg, 11.35);
+}
+
+TEST(FlightKnowledge, OnboardForceModelHasTheToldMass) {
+  auto s = default_campaign();
+  s.flight.osc_mass_kg = 10.0;
+  s.osc.mass_kg = 11.0;
+  EXPECT_EQ(visors::sim::onboard_force_model(s.flight, visors::gnc::Spacecraft::kOsc).value().spacecraft().mass, 10.0);
+}
+
+TEST(FlightKnowledge, FlightTableIsRead) {
+  const auto s = visors::sim::campaign_from_toml("[flight]\ncd = 2.4\nosc_mass_kg = 10.5\n").value();
+  EXPECT_EQ(s.flight.cd, 2.4);
+}
+
+TEST(FlightKnowledge, FlightValueOutOfRangeIsNamed) {
+  EXPECT_EQ(visors::sim::campaign_from_toml("[flight]\ncr = 3.0\n").error().field, "flight.cr");
+}
+
+TEST(FlightKnowledge, UnknownFlightKeyIsNamed) {
+  EXPECT_EQ(visors::sim::campaign_from_toml("[flight]\nmass_kg = 3.0\n").error().field, "flight.mass_kg");
+}
+
+TEST(FlightKnowledge, ResolvedFlightTableReadsBack) {
+  auto s = default_campaign();
+  s.flight.drag_area_m2 = 0.41;
+  EXPECT_EQ(visors::sim::campaign_from_toml(visors::sim::campaign_to_toml(s)).value().flight.drag_area_m2, 0.41);
+}
+
+TEST(FlightKnowledge, ResolvedTruthSigmasReadBack) {
+  auto s = default_campaign();
+  s.dsc.cd_sigma = 0.125;
+  EXPECT_EQ(visors::sim::campaign_from_toml(visors::sim::campaign_to_toml(s)).value().dsc.cd_sigma, 0.125);
+}
+
+TEST(FlightKnowledge, TooLargeTruthSigmaIsNamed) {
+  EXPECT_EQ(visors::sim::campaign_from_toml("[osc]\ncd_sigma = 1.0\n").error().field, "osc.cd_sigma");
+}
+
+}  // namespace
