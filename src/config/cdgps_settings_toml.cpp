@@ -22,7 +22,7 @@ struct FlagKey {
   bool nav::CdgpsSettings::*field;
 };
 
-constexpr std::array<NumberKey, 22> kNumbers = {{
+constexpr std::array<NumberKey, 23> kNumbers = {{
     {"max_step_s", &nav::CdgpsSettings::max_step_s},
     {"empirical_tau_s", &nav::CdgpsSettings::empirical_tau_s},
     {"empirical_sigma_mps2", &nav::CdgpsSettings::empirical_sigma_mps2},
@@ -34,6 +34,7 @@ constexpr std::array<NumberKey, 22> kNumbers = {{
     {"velocity_sigma_mps", &nav::CdgpsSettings::velocity_sigma_mps},
     {"clock_sigma_m", &nav::CdgpsSettings::clock_sigma_m},
     {"phase_center_sigma_m", &nav::CdgpsSettings::phase_center_sigma_m},
+    {"min_float_s_before_fix", &nav::CdgpsSettings::min_float_s_before_fix},
     {"graphic_ambiguity_sigma_m", &nav::CdgpsSettings::graphic_ambiguity_sigma_m},
     {"graphic_bias_random_walk_m", &nav::CdgpsSettings::graphic_bias_random_walk_m},
     {"ephemeris_switch_sigma_m", &nav::CdgpsSettings::ephemeris_switch_sigma_m},

@@ -58,6 +58,7 @@ struct CdgpsFilter::Impl {
   IntegerLeastSquares ils;
   FixedSolutionUpdate fixer;
   bool initialised = false;
+  core::GpsTime initialised_at;  // the cold start (min_float_s_before_fix counts from it)
   core::GpsTime t;
   NavVector x = NavVector::Zero();
   NavMatrix P = NavMatrix::Identity();
@@ -188,6 +189,7 @@ void CdgpsFilter::initialise(core::GpsTime t, const core::StateVector& dsc_gcrf,
   m.x_fixed = m.x;
   m.P_fixed = m.P;
   m.initialised = true;
+  m.initialised_at = t;
 }
 
 // One spacecraft's (r, v, a_emp) rows and columns of P carried by Phi (from the mean's two ends),
@@ -725,7 +727,9 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.order_by_consensus(m.graphic_scalars, m.graphic_count);
   m.order_by_consensus(m.sdcp_scalars, m.sdcp_count);
   m.process(settings_, report);
-  if (settings_.ambiguity_resolution) m.resolve(settings_, report);
+  if (settings_.ambiguity_resolution && m.t.seconds_since(m.initialised_at) >= settings_.min_float_s_before_fix) {
+    m.resolve(settings_, report);
+  }
   m.fixed_valid = report.fix_applied;
   return report;
 }

@@ -96,6 +96,12 @@ struct CdgpsSettings {
 
   // Integer ambiguity resolution (digest 6.4-6.5); off: the float filter alone.
   bool ambiguity_resolution = true;
+  // No fix attempt until the float filter has run this long after its cold start [s]. After a
+  // cold start the broadcast records arrive one per second as the receiver decodes them (18-36 s
+  // after lock), so the first epochs hold few satellites whose float ambiguities have not
+  // converged: the closed loop's cold start fixed wrong integers 7 s after it (white receiver
+  // noise, 2 epochs) before this guard. RTKLIB's demo5 waits similarly (arminfix, arthres1).
+  double min_float_s_before_fix = 30.0;
   AcceptanceSettings acceptance{};
   // Fix-and-hold: accepted full fixes fed back into the float filter, each fixed combination once,
   // as a pseudo-measurement of this variance. A DD ambiguity is an integer exactly, so the hold

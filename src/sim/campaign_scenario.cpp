@@ -210,13 +210,17 @@ core::Result<bool> read_propulsion(const toml::table& root, CampaignScenario& s)
   const toml::table* p = table_at(root, "propulsion");
   if (p == nullptr) return true;
   const std::string sec = "propulsion";
-  if (auto e = check_keys(*p, sec, {"magnitude_sigma", "direction_sigma_deg", "isp_s", "isp_sigma_s"})) return *e;
+  if (auto e = check_keys(*p, sec, {"magnitude_sigma", "magnitude_bias_sigma", "direction_sigma_deg", "isp_s", "isp_sigma_s"})) {
+    return *e;
+  }
   auto& v = s.propulsion;
   VISORS_TRY(mag, number_at(*p, sec, "magnitude_sigma", v.magnitude_sigma));
+  VISORS_TRY(bias, number_at(*p, sec, "magnitude_bias_sigma", v.magnitude_bias_sigma));
   VISORS_TRY(dir, number_at(*p, sec, "direction_sigma_deg", v.direction_sigma_rad / core::kDegToRad));
   VISORS_TRY(isp, number_at(*p, sec, "isp_s", v.isp_s));
   VISORS_TRY(isp_sigma, number_at(*p, sec, "isp_sigma_s", v.isp_sigma_s));
   v.magnitude_sigma = mag;
+  v.magnitude_bias_sigma = bias;
   v.direction_sigma_rad = dir * core::kDegToRad;
   v.isp_s = isp;
   v.isp_sigma_s = isp_sigma;
@@ -469,8 +473,8 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += fmt::format("[navigation]\nmode = \"{}\"\nrelative_position_m = {:.17g}\nrelative_velocity_mps = {:.17g}\nabsolute_position_m = {:.17g}\nabsolute_velocity_mps = {:.17g}\ncorrelation_time_s = {:.17g}\n\n",
                      s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal", n.relative_position_m,
                      n.relative_velocity_mps, n.absolute_position_m, n.absolute_velocity_mps, n.correlation_time_s);
-  out += fmt::format("[propulsion]\nmagnitude_sigma = {:.17g}\ndirection_sigma_deg = {:.17g}\nisp_s = {:.17g}\nisp_sigma_s = {:.17g}\n\n",
-                     p.magnitude_sigma, deg(p.direction_sigma_rad), p.isp_s, p.isp_sigma_s);
+  out += fmt::format("[propulsion]\nmagnitude_sigma = {:.17g}\nmagnitude_bias_sigma = {:.17g}\ndirection_sigma_deg = {:.17g}\nisp_s = {:.17g}\nisp_sigma_s = {:.17g}\n\n",
+                     p.magnitude_sigma, p.magnitude_bias_sigma, deg(p.direction_sigma_rad), p.isp_s, p.isp_sigma_s);
   out += spacecraft("dsc", s.dsc);
   out += spacecraft("osc", s.osc);
   const FlightKnowledge& told = s.flight;

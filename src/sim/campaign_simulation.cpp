@@ -18,6 +18,7 @@
 #include "sim/data_provenance.hpp"
 #include "sim/formation_initial_state.hpp"
 #include "sim/host_records.hpp"
+#include "sim/navigation_message.hpp"
 
 namespace visors::sim {
 
@@ -345,7 +346,9 @@ std::optional<gnc::GpsMessage> CampaignSimulation::measure_gps(SimulatedSpacecra
 
 // At most one broadcast record per message: of the first tracked satellite whose data set in
 // force at t (each from t_oe - refresh_s / 2, the first from the start: the receivers of
-// gnss-sim select the same way) the receiver has not decoded yet.
+// gnss-sim select the same way) the receiver has not passed on yet and has decoded by t: its
+// subframes 1-3 received whole since the later of the lock and the set's first broadcast
+// (sim/navigation_message.hpp: 18-36 s).
 void CampaignSimulation::decode_ephemeris(SimulatedSpacecraft& v, core::GpsTime t, gnc::GpsMessage& message) {
   const auto records = gps_->satellites->broadcast_records();
   const double half_refresh_s = 0.5 * scenario_.gnss.broadcast_errors.refresh_s;
@@ -358,6 +361,9 @@ void CampaignSimulation::decode_ephemeris(SimulatedSpacecraft& v, core::GpsTime 
       ++current;
     }
     if (sets.empty() || next > current) continue;
+    const double lock_start_s = t.seconds() - message.epoch.channels[static_cast<std::size_t>(k)].lock_time_s;
+    const double broadcast_from_s = current == 0 ? lock_start_s : records[sets[current]].toe.seconds() - half_refresh_s;
+    if (t.seconds() < ephemeris_decoded_at(std::max(lock_start_s, broadcast_from_s))) continue;
     message.has_ephemeris = true;
     message.ephemeris = records[sets[current]];
     next = current + 1;

@@ -67,7 +67,10 @@ void NavigationScore::count_epoch(Accumulator& a, const gnc::OnboardNavigation& 
   a.last_scored = t;
   if (!navigation.last_report().fix_applied) return;
   a.fixed = c.epochs_fixed;
-  if (a.first_fix_s < 0.0) a.first_fix_s = t_s;
+  if (a.first_fix_s < 0.0) {
+    a.first_fix_s = t_s;
+    a.epochs_before_first_fix = epochs - 1;
+  }
   if (wrong_fix(navigation, t)) ++a.wrong;
 }
 
@@ -139,6 +142,8 @@ nlohmann::json NavigationScore::summary() const {
                            {"relative_antenna_worst_m", a.antenna_outside_worst}}},
         {"epochs_processed", a.epochs},
         {"fix_rate", static_cast<double>(a.fixed) / epochs},
+        {"fix_rate_after_first_fix",
+         a.first_fix_s >= 0.0 ? static_cast<double>(a.fixed) / static_cast<double>(a.epochs - a.epochs_before_first_fix) : 0.0},
         {"wrong_fix_epochs", a.wrong},
         {"wrong_fix_rate", static_cast<double>(a.wrong) / epochs},
         {"time_to_first_fix_s", a.first_fix_s >= 0.0 ? a.first_fix_s - a.first_solution_s : -1.0},

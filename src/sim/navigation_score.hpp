@@ -20,7 +20,9 @@
 // at 1.5 deg/s) where the issue asks so ("outside the slews"), and report them whole too.
 // A fix is wrong when a double difference of the fixed SDCP ambiguities of a processed epoch
 // differs from the truth's (the receivers' integer ambiguities and phase offsets of that epoch)
-// by more than half a cycle; each processed epoch is scored once.
+// by more than half a cycle; each processed epoch is scored once. fix_rate counts every processed
+// epoch, fix_rate_after_first_fix those from the first fixed one on (the float time after the cold
+// start is time_to_first_fix_s).
 
 #include <array>
 #include <cstdint>
@@ -84,6 +86,7 @@ class NavigationScore {
     double antenna_outside_sq = 0.0, position_outside_sq = 0.0;
     double antenna_worst = 0.0, antenna_outside_worst = 0.0;
     std::int64_t epochs = 0, fixed = 0, wrong = 0;  // processed epochs
+    std::int64_t epochs_before_first_fix = 0;      // fix_rate_after_first_fix counts from the first fix
     bool have_scored = false;
     core::GpsTime last_scored;
     double first_solution_s = -1.0, first_fix_s = -1.0;

@@ -35,6 +35,9 @@ core::Result<bool> PropulsionSettings::validate() const {
   }
   if (!(spacing_s >= 0.0) || !std::isfinite(spacing_s)) return core::Error{"spacing_s", "must be finite and >= 0 s"};
   if (!(magnitude_sigma >= 0.0 && magnitude_sigma <= 0.5)) return core::Error{"magnitude_sigma", "must be in [0, 0.5]"};
+  if (!(magnitude_bias_sigma >= 0.0 && magnitude_bias_sigma <= 0.5)) {
+    return core::Error{"magnitude_bias_sigma", "must be in [0, 0.5]"};
+  }
   if (!(direction_sigma_rad >= 0.0 && direction_sigma_rad <= 10.0 * core::kDegToRad)) {
     return core::Error{"direction_sigma_rad", "must be in [0, 10 deg]"};
   }
@@ -56,7 +59,10 @@ core::Result<Propulsion> Propulsion::create(const PropulsionSettings& settings, 
   }
   const double isp_true_s = settings.isp_s + rng.normal(settings.isp_sigma_s);  // drawn once per run
   if (!(isp_true_s > 0.0)) return core::Error{"isp_s", "drawn true specific impulse is not positive"};
-  return Propulsion(settings, wet_mass_kg, propellant_kg, isp_true_s, std::move(rng));
+  Propulsion propulsion(settings, wet_mass_kg, propellant_kg, isp_true_s, std::move(rng));
+  // Clamped so that no nozzle pushes backwards (matters only for sigmas near 0.5).
+  for (double& b : propulsion.nozzle_bias_) b = std::max(-1.0, propulsion.rng_.normal(settings.magnitude_bias_sigma));
+  return propulsion;
 }
 
 // Step 2 of the file comment: J = m |dv| rounded to the quantum, kept within [min, max].
@@ -94,9 +100,13 @@ core::Result<ExecutedImpulse> Propulsion::execute(double t_s, const Eigen::Vecto
   if (!impulse) return impulse.error();
   if (!(propellant_kg_ > 0.0)) return core::Error{"dv_commanded_body_mps", "propellant exhausted"};
 
+  Eigen::Vector3d biased_body = dv_commanded_body_mps;  // each component by the nozzle firing it
+  for (int i = 0; i < 3; ++i) biased_body[i] *= 1.0 + nozzle_bias_[static_cast<std::size_t>(biased_body[i] < 0.0 ? i + 3 : i)];
+  const double bias_factor = biased_body.norm() / dv_commanded_body_mps.norm();
   const double magnitude_factor = std::max(0.0, 1.0 + rng_.normal(settings_.magnitude_sigma));
-  const Eigen::Vector3d direction_body = perturbed_direction(dv_commanded_body_mps.normalized());
-  double dv_mps = impulse.value() * magnitude_factor / mass_kg_;
+  const Eigen::Vector3d direction_body =
+      perturbed_direction(bias_factor > 0.0 ? Eigen::Vector3d(biased_body / biased_body.norm()) : dv_commanded_body_mps.normalized());
+  double dv_mps = impulse.value() * bias_factor * magnitude_factor / mass_kg_;
 
   // Step 5, Tsiolkovsky: dm = m (1 - exp(-dv / (Isp g0))); expm1 keeps the tiny dm accurate.
   const double exhaust_mps = isp_s_ * kStandardGravity;

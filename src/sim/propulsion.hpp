@@ -16,7 +16,12 @@
 //      lie in [min_impulse, max_impulse], else the command is rejected (field
 //      "dv_commanded_body_mps"); a zero command is rejected the same way (below the minimum);
 //   3. rejects the command when no propellant is left (field "dv_commanded_body_mps");
-//   4. applies the errors: magnitude J_q (1 + e_m), e_m ~ N(0, magnitude_sigma), clamped at zero
+//   4. applies the errors: first each nozzle's bias (drawn once per run at creation, after the
+//      specific impulse: six numbers N(0, magnitude_bias_sigma) for the +X, +Y, +Z, -X, -Y, -Z
+//      nozzles, whatever the sigma), scaling each body component of the command by 1 + b of the
+//      nozzle that fires it (the mission paper names thruster biases the real risk: a random
+//      error averages out over the pieces of a burn, a bias does not); then, per impulse, the
+//      magnitude J_q (1 + e_m) |c_b| / |c|, c_b the biased command, e_m ~ N(0, magnitude_sigma), clamped at zero
 //      (a nozzle cannot push backwards; matters only for sigmas near 0.5); direction: the commanded
 //      unit vector rotated about an axis perpendicular to it, at a uniformly random azimuth, by an
 //      angle N(0, direction_sigma_rad), so the angle between commanded and executed directions has
@@ -33,6 +38,7 @@
 // (2.2e-2 N s / (44 s g0) = 5.1e-5 kg) changes |dv| by about dm / 2m = 2.4e-6 relative, far below
 // the quantum (6e-5 / 2.2e-2 = 2.7e-3 relative at the maximum impulse).
 
+#include <array>
 #include <optional>
 
 #include <Eigen/Core>
@@ -58,6 +64,9 @@ struct PropulsionSettings {
   /// 1-sigma direction error [rad] (0.05 deg by default). The mission's range is 0.05 .. 10 deg;
   /// validate() accepts [0, 10 deg].
   double direction_sigma_rad = 0.05 * core::kDegToRad;
+  /// 1-sigma of each nozzle's magnitude bias, drawn once per run (step 4) [-]; validate() accepts
+  /// [0, 0.5]. Off by default; the sensitivity study sweeps it.
+  double magnitude_bias_sigma = 0.0;
   double isp_s = 44.0;        // mean specific impulse [s] (paper table)
   double isp_sigma_s = 2.0;   // 1-sigma of the true specific impulse, drawn once per run [s]
 
@@ -79,7 +88,7 @@ class Propulsion {
  public:
   /// Validates the settings and masses (fields "wet_mass_kg": finite, > 0; "propellant_kg": finite,
   /// in [0, wet_mass_kg)) and draws the true specific impulse N(isp_s, isp_sigma_s) from `rng`
-  /// (field "isp_s" if the drawn value is not positive).
+  /// (field "isp_s" if the drawn value is not positive), then the six nozzle biases (step 4).
   static core::Result<Propulsion> create(const PropulsionSettings& settings, double wet_mass_kg,
                                          double propellant_kg, RandomStream rng);
 
@@ -90,6 +99,8 @@ class Propulsion {
   [[nodiscard]] double mass_kg() const { return mass_kg_; }
   [[nodiscard]] double propellant_kg() const { return propellant_kg_; }
   [[nodiscard]] double isp_s() const { return isp_s_; }  // the true (drawn) value [s]
+  /// The drawn nozzle biases, +X, +Y, +Z, -X, -Y, -Z [-].
+  [[nodiscard]] const std::array<double, 6>& nozzle_bias() const { return nozzle_bias_; }
   /// Time of the last executed impulse [s]; empty before the first.
   [[nodiscard]] std::optional<double> last_impulse_t() const { return last_impulse_t_; }
   [[nodiscard]] const PropulsionSettings& settings() const { return settings_; }
@@ -106,6 +117,7 @@ class Propulsion {
   double propellant_kg_;
   double isp_s_;
   RandomStream rng_;
+  std::array<double, 6> nozzle_bias_{};
   std::optional<double> last_impulse_t_;
 };
 

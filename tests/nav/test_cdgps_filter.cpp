@@ -403,6 +403,16 @@ TEST(CdgpsSettings, NameTheWeightingFloor) {
   EXPECT_EQ(check(s)->field, "min_weighting_elevation_deg");
 }
 
+TEST(CdgpsSettings, NameTheFloatTimeBeforeFixing) {
+  CdgpsSettings s;
+  s.min_float_s_before_fix = -1.0;
+  EXPECT_EQ(check(s)->field, "min_float_s_before_fix");
+}
+
+// The cold-start guard: no fix attempt in the first min_float_s_before_fix (30 s) after
+// initialise() (epoch 0 here, 1 Hz).
+TEST_F(CdgpsFilterRun, NoFixBeforeTheFloatTimeAfterTheColdStart) { EXPECT_GE(result->first_fix, 30); }
+
 TEST(CdgpsSettings, NameTheAcceptanceField) {
   CdgpsSettings s;
   s.acceptance.min_ratio = 0.5;

@@ -255,6 +255,19 @@ TEST(CampaignScenario, ResolvedTargetOffsetReadsBack) {
   EXPECT_NEAR(back.gnc.science.geometry.target_offset_rad.y(), s.target_offset_rad.y(), 1e-18);
 }
 
+TEST(CampaignScenario, NozzleBiasSigmaIsOffByDefault) {
+  EXPECT_EQ(campaign_from_toml("").value().propulsion.magnitude_bias_sigma, 0.0);
+}
+
+TEST(CampaignScenario, ResolvedNozzleBiasSigmaReadsBack) {
+  auto s = campaign_from_toml("[propulsion]\nmagnitude_bias_sigma = 0.02\n").value();
+  EXPECT_EQ(campaign_from_toml(campaign_to_toml(s)).value().propulsion.magnitude_bias_sigma, 0.02);
+}
+
+TEST(CampaignScenario, NozzleBiasSigmaOutOfRangeIsNamed) {
+  EXPECT_EQ(campaign_from_toml("[propulsion]\nmagnitude_bias_sigma = 0.7\n").error().field, "propulsion.magnitude_bias_sigma");
+}
+
 TEST(CampaignScenario, ResolvedForcesTableReadsBack) {
   const auto s = campaign_from_toml("[forces]\npreset = \"onboard\"\n[forces.gravity]\ndegree = 8\norder = 8\n").value();
   const auto back = campaign_from_toml(campaign_to_toml(s)).value();

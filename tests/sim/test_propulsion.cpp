@@ -259,6 +259,62 @@ TEST(Propulsion, DifferentSeedsGiveDifferentIsp) {
 }
 
 // Paper's budget metric: |1| + |-2| + |3| = 6.
+// Nozzle biases (step 4): drawn once per run, one per nozzle, each scaling the component it fires.
+PropulsionSettings biased_settings() {
+  PropulsionSettings s = ideal_settings();
+  s.magnitude_bias_sigma = 0.1;
+  s.spacing_s = 0.0;
+  return s;
+}
+
+TEST(Propulsion, NozzleBiasScalesItsComponentEveryTime) {
+  // A +X command fires the +X nozzle only: executed / commanded = 1 + b(+X) on every impulse.
+  Propulsion p = make(biased_settings());
+  const double b = p.nozzle_bias()[0];
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d dv = dv_for(p, 50 * 6.0e-5);
+    auto e = p.execute(k, dv);
+    ASSERT_TRUE(e.ok());
+    EXPECT_NEAR(e->dv_executed_body_mps.x() / dv.x(), 1.0 + b, 1e-12) << k;
+  }
+}
+
+TEST(Propulsion, OppositeNozzlesHaveTheirOwnBias) {
+  // A -Y command fires the -Y nozzle (index 4).
+  Propulsion p = make(biased_settings());
+  const Eigen::Vector3d dv(0.0, -50 * 6.0e-5 / kMass, 0.0);
+  auto e = p.execute(0.0, dv);
+  ASSERT_TRUE(e.ok());
+  EXPECT_NEAR(e->dv_executed_body_mps.y() / dv.y(), 1.0 + p.nozzle_bias()[4], 1e-12);
+}
+
+TEST(Propulsion, NozzleBiasesHaveTheirSigma) {
+  // Six per run over 2000 runs: the sample std of N(0, 0.1) within 5 standard errors.
+  double sum = 0.0, sum2 = 0.0;
+  constexpr int runs = 2000;
+  for (int k = 0; k < runs; ++k) {
+    const Propulsion p = make(biased_settings(), static_cast<std::uint64_t>(k + 1));
+    for (double b : p.nozzle_bias()) {
+      sum += b;
+      sum2 += b * b;
+    }
+  }
+  const double n = 6.0 * runs;
+  const double mean = sum / n;
+  EXPECT_NEAR(std::sqrt(sum2 / n - mean * mean), 0.1, 5.0 * 0.1 / std::sqrt(2.0 * n));
+}
+
+TEST(Propulsion, ZeroBiasSigmaGivesNoBias) {
+  const Propulsion p = make(ideal_settings());
+  for (double b : p.nozzle_bias()) EXPECT_EQ(b, 0.0);
+}
+
+TEST(Propulsion, BiasSigmaOutOfRangeIsNamed) {
+  PropulsionSettings s;
+  s.magnitude_bias_sigma = 0.6;
+  EXPECT_EQ(s.validate().error().field, "magnitude_bias_sigma");
+}
+
 TEST(Propulsion, ThrusterL1NormSumsAbsoluteComponents) {
   EXPECT_EQ(visors::sim::thruster_l1_norm({1.0, -2.0, 3.0}), 6.0);
 }
