@@ -52,7 +52,9 @@ core::Result<DragConfig> read_drag(const toml::table& t, const std::string& s, D
   d.cosine_exponent = static_cast<int>(exponent);
   d.density_scale = scale;
   d.space_weather = space_weather;
-  d.activity = {f107, f107a, ap};
+  d.activity.f107 = f107;
+  d.activity.f107a = f107a;
+  d.activity.ap = ap;
   return d;
 }
 

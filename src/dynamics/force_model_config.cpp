@@ -16,7 +16,10 @@ ForceModelConfig ForceModelConfig::onboard() {
   ForceModelConfig c;
   c.gravity = {"gravity/GGM01S.gfc", 20, 20, true};
   c.drag.atmosphere = AtmosphereKind::kHarrisPriester;
-  c.drag.activity = {150.0, 150.0, 15.0};  // mean solar activity: the Harris-Priester table's level
+  // Mean solar activity: the Harris-Priester table's level.
+  c.drag.activity.f107 = 150.0;
+  c.drag.activity.f107a = 150.0;
+  c.drag.activity.ap = 15.0;
   c.earth_frame = {"", 600.0};
   return c;
 }
