@@ -5,7 +5,7 @@ namespace visors::dynamics {
 ForceModelConfig ForceModelConfig::truth() {
   ForceModelConfig c;
   c.gravity = {"gravity/GGM05S_d90.gfc", 60, 60, true};
-  c.drag.atmosphere = AtmosphereKind::kHarrisPriesterMaximum;
+  c.drag.atmosphere = AtmosphereKind::kNrlmsise00;
   c.drag.space_weather = "space_weather/SW-Observed_2024-07-01_2025-01-31.csv";
   c.srp.shadow = ShadowModel::kConical;
   c.earth_frame = {"eop/finals2000A_2024-07-01_2025-01-31.txt", 60.0};

@@ -201,16 +201,21 @@ Eigen::Vector3d mismatch_after_one_orbit(ForceModelConfig truth_config, ForceMod
   return core::gcrf_to_rtn_matrix(xt) * (xo.r - xt.r);
 }
 
-// The along-track drag mismatch dominates: the truth's apex densities (2.04e-12 kg/m^3 at 500
-// km) exceed the on-board diurnal mean by ~1.3e-12, i.e. a tangential f = drho/2 Cd A/m v^2 ~
-// 2.6e-6 m/s^2, which drifts (3/2) f t^2 ~ 130 m along-track in one orbit (Clohessy-Wiltshire
-// secular term). That is the size of the real NRLMSISE-00 (F10.7 ~ 245) vs mean-activity
-// Harris-Priester mismatch the mission's filter absorbed with empirical accelerations.
+// The along-track drag mismatch dominates: the truth's NRLMSISE-00 at the observed October 2024
+// activity (F10.7 ~ 245) exceeds the on-board mean-activity Harris-Priester by ~1e-12 kg/m^3 at
+// 500 km, i.e. a tangential f = drho/2 Cd A/m v^2 ~ 2e-6 m/s^2, which drifts (3/2) f t^2 ~ 100 m
+// along-track in one orbit (Clohessy-Wiltshire secular term): the mismatch the mission's filter
+// absorbs with empirical accelerations. Needs the space-weather file (without it the truth's
+// activity is the configured mean, the on-board level).
 TEST(ForceModel, TruthAndOnboardModelsDifferByTheDragMismatchOverOneOrbit) {
+  if (const auto missing = missing_files(ForceModelConfig::truth()); !missing.empty()) {
+    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+  }
   const Eigen::Vector3d d_rtn = mismatch_after_one_orbit(ForceModelConfig::truth(), ForceModelConfig::onboard());
   std::printf("truth vs on-board after one orbit: |dr| %.3f m, RTN (%.3f, %.3f, %.3f) m\n", d_rtn.norm(),
               d_rtn.x(), d_rtn.y(), d_rtn.z());
-  // analytic (3/2) f t^2 ~ 130 m above; measured 128 m (2026-11), bounds 30 .. 500 m
+  // analytic (3/2) f t^2 ~ 100 m above; measured 109 m with NRLMSISE-00 (128 m with the former
+  // Harris-Priester-maximum truth), 2026-11; bounds 30 .. 500 m
   EXPECT_GT(std::abs(d_rtn.y()), 30.0);
   EXPECT_LT(std::abs(d_rtn.y()), 500.0);
 }
