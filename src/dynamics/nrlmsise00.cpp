@@ -122,6 +122,7 @@ namespace {
 // The expansions evaluated from the inputs alone (the straightforward path).
 class DirectExpansions {
  public:
+  static constexpr bool kCachedPath = false;
   DirectExpansions(const Nrlmsise00Coefficients& c, const Basis& b, int day_of_year, const SolarActivity& a)
       : full_(full_tables(c)), lower_(lower_tables(c)), b_(b), day_(day_of_year), a_(a),
         history_(d::history_mode(a)) {}
@@ -151,6 +152,7 @@ class DirectExpansions {
 // The expansions from the cached day terms and the phase identities (the fast path).
 class CachedExpansions {
  public:
+  static constexpr bool kCachedPath = true;
   using Model = Nrlmsise00Atmosphere::Model;
   CachedExpansions(const Model& m, const Model::DayCache& cache, const Basis& b)
       : m_(m), cache_(cache), b_(b), history_(d::history_mode(cache.activity)) {}
@@ -169,7 +171,7 @@ class CachedExpansions {
  private:
   [[nodiscard]] double magnetic_of(std::size_t k) const {
     const auto& cached = cache_.full[k].magnetic;
-    return cached ? *cached : d::magnetic_function(*m_.full[k], cache_.activity, b_.latitude_deg);
+    return cached ? *cached : d::magnetic_function_cached(*m_.full[k], cache_.full[k], b_.latitude_deg);
   }
   const Model& m_;
   const Model::DayCache& cache_;
@@ -199,7 +201,8 @@ d::ThermosphereProfile thermosphere_profile(const Nrlmsise00Coefficients& c, con
   const double bottom_mean = c.ptm[4] * c.ptl[3][0];
   const double gradient = c.ptm[8] * c.pma[8][0] * (1.0 + (vary ? e.lower(pma_index(8)) : 0.0)) * node_t[3] *
                           node_t[3] / (bottom_mean * bottom_mean);
-  return d::ThermosphereProfile(g, t_inf, t_lb, sigma, c.ptm[5], z_a, node_t, gradient, z <= kHighestTurbopause);
+  return d::ThermosphereProfile(g, t_inf, t_lb, sigma, c.ptm[5], z_a, node_t, gradient, z <= kHighestTurbopause,
+                                Expansions::kCachedPath);
 }
 
 // The diffusive density at z blended with the fully mixed one below the turbopause: `b_zh`
@@ -386,9 +389,9 @@ Nrlmsise00Output to_output(const Densities& n) {
   return out;
 }
 
-Basis basis_of(const Nrlmsise00Input& in, bool with_ut_harmonics) {
+Basis basis_of(const Nrlmsise00Input& in, bool cached_path) {
   return d::make_basis(in.latitude_deg, in.longitude_deg, in.local_solar_time_h, in.ut_seconds, in.activity.f107a,
-                       with_ut_harmonics);
+                       cached_path);
 }
 
 std::optional<core::Error> activity_problem(const SolarActivity& a) {

@@ -35,7 +35,7 @@ double weighted_ap_history(double e, const FullTable& p, const std::array<double
 }  // namespace
 
 Basis make_basis(double latitude_deg, double longitude_deg, double lst_h, double ut_seconds, double f107a,
-                 bool with_ut_harmonics) {
+                 bool cached_path) {
   Basis b;
   b.latitude_deg = latitude_deg;
   b.longitude_deg = longitude_deg;
@@ -75,13 +75,22 @@ Basis make_basis(double latitude_deg, double longitude_deg, double lst_h, double
   // Local-time harmonics (Hedin 1987 eq. A22: tau = kHour lst).
   b.sin_lt1 = std::sin(kHour * lst_h);
   b.cos_lt1 = std::cos(kHour * lst_h);
-  b.sin_lt2 = std::sin(2.0 * kHour * lst_h);
-  b.cos_lt2 = std::cos(2.0 * kHour * lst_h);
-  b.sin_lt3 = std::sin(3.0 * kHour * lst_h);
-  b.cos_lt3 = std::cos(3.0 * kHour * lst_h);
+  if (cached_path) {
+    const double cs = b.cos_lt1;
+    const double sn = b.sin_lt1;
+    b.cos_lt2 = cs * cs - sn * sn;
+    b.sin_lt2 = 2.0 * sn * cs;
+    b.cos_lt3 = cs * (cs * cs - 3.0 * sn * sn);
+    b.sin_lt3 = sn * (3.0 * cs * cs - sn * sn);
+  } else {
+    b.sin_lt2 = std::sin(2.0 * kHour * lst_h);
+    b.cos_lt2 = std::cos(2.0 * kHour * lst_h);
+    b.sin_lt3 = std::sin(3.0 * kHour * lst_h);
+    b.cos_lt3 = std::cos(3.0 * kHour * lst_h);
+  }
   b.cos_lon = std::cos(kDegree * longitude_deg);
   b.sin_lon = std::sin(kDegree * longitude_deg);
-  if (with_ut_harmonics) {
+  if (cached_path) {
     b.cos_ut = std::cos(kSecond * ut_seconds);
     b.sin_ut = std::sin(kSecond * ut_seconds);
     const double ut_lon = kSecond * ut_seconds + 2.0 * kDegree * longitude_deg;
@@ -91,6 +100,30 @@ Basis make_basis(double latitude_deg, double longitude_deg, double lst_h, double
   return b;
 }
 
+namespace {
+
+// The decay factor of the history mode (eq. A24a's "exp1"), capped as published.
+double history_decay(const FullTable& p, double latitude_deg) {
+  const double e = std::exp(-10800.0 * std::abs(p[51]) / (1.0 + p[138] * (45.0 - std::abs(latitude_deg))));
+  return e > 0.99999 ? 0.99999 : e;
+}
+
+}  // namespace
+
+double magnetic_function_cached(const FullTable& p, const FullDayTerms& day, double latitude_deg) {
+  if (p[51] == 0.0) return 0.0;
+  const double e = history_decay(p, latitude_deg);
+  const auto& g = day.history_scaled;
+  const double e2 = e * e;
+  const double e3 = e2 * e;
+  const double e4 = e2 * e2;
+  const double e8 = e4 * e4;
+  const double e12 = e8 * e4;
+  const double e19 = e12 * e4 * e3;
+  const double sum = 1.0 + (1.0 - e19) / (1.0 - e) * std::sqrt(e);
+  return (g[0] + (g[1] * e + g[2] * e2 + g[3] * e3 + (g[4] * e4 + g[5] * e12) * (1.0 - e8) / (1.0 - e))) / sum;
+}
+
 double magnetic_function(const FullTable& p, const SolarActivity& activity, double latitude_deg) {
   if (!history_mode(activity)) {
     const double a = activity.ap - 4.0;
@@ -98,9 +131,7 @@ double magnetic_function(const FullTable& p, const SolarActivity& activity, doub
     return a + (p[44] - 1.0) * (a + (std::exp(-p44 * a) - 1.0) / p44);
   }
   if (p[51] == 0.0) return 0.0;
-  double e = std::exp(-10800.0 * std::abs(p[51]) / (1.0 + p[138] * (45.0 - std::abs(latitude_deg))));
-  if (e > 0.99999) e = 0.99999;
-  return weighted_ap_history(e, p, *activity.ap_history);
+  return weighted_ap_history(history_decay(p, latitude_deg), p, *activity.ap_history);
 }
 
 bool magnetic_depends_on_latitude(const FullTable& p, const SolarActivity& activity) {
@@ -120,6 +151,9 @@ FullDayTerms full_day_terms(const FullTable& p, int day_of_year, const SolarActi
   d.flux = p[19] * df * (1.0 + p[59] * dfa) + p[20] * df * df + p[21] * dfa + p[29] * dfa * dfa;
   d.f1 = 1.0 + (p[47] * dfa + p[19] * df + p[20] * df * df);
   d.f2 = 1.0 + (p[49] * dfa + p[19] * df + p[20] * df * df);
+  if (history_mode(activity)) {
+    for (std::size_t k = 0; k < 6; ++k) d.history_scaled[k] = history_scaled_ap((*activity.ap_history)[k + 1], p);
+  }
   if (!magnetic_depends_on_latitude(p, activity)) d.magnetic = magnetic_function(p, activity, 0.0);
   return d;
 }

@@ -50,10 +50,13 @@ struct Basis {
   double dfa = 0.0;  // f107a - 150 [sfu]
 };
 
-/// The basis at a latitude, longitude, local time, UT and 81-day mean flux. `with_ut_harmonics`
-/// also fills cos_ut .. sin_ut_lon (the cached path's identities need them).
+/// The basis at a latitude, longitude, local time, UT and 81-day mean flux. `cached_path`: the
+/// harmonics of 2 tau and 3 tau from those of tau by the double- and triple-angle identities
+/// (cos 2t = c^2 - s^2, sin 2t = 2 s c, cos 3t = c (c^2 - 3 s^2), sin 3t = s (3 c^2 - s^2)), and
+/// cos_ut .. sin_ut_lon filled (the phase identities need them); otherwise each harmonic is
+/// taken directly, as published.
 Basis make_basis(double latitude_deg, double longitude_deg, double lst_h, double ut_seconds, double f107a,
-                 bool with_ut_harmonics);
+                 bool cached_path);
 
 /// Per full table: what depends only on the day of year and the activity.
 struct FullDayTerms {
@@ -61,8 +64,10 @@ struct FullDayTerms {
   double f1 = 0.0, f2 = 0.0;                              // F10.7 factors of the annual term and the tides
   double flux = 0.0;                                      // the F10.7 term
   // The geomagnetic function (magnetic_function) when it does not depend on latitude, else
-  // nullopt (computed per call).
+  // nullopt (computed per call from history_scaled).
   std::optional<double> magnetic;
+  // History mode: the scaled ap g(ap1) .. g(ap6) of eq. A24d (they do not depend on latitude).
+  std::array<double, 6> history_scaled{};
 };
 
 /// Per lower table: what depends only on the day of year.
@@ -103,6 +108,9 @@ inline bool history_mode(const SolarActivity& a) { return a.ap_history.has_value
 double magnetic_function(const FullTable& p, const SolarActivity& activity, double latitude_deg);
 /// Whether that function depends on latitude (history mode with p[138] != 0).
 bool magnetic_depends_on_latitude(const FullTable& p, const SolarActivity& activity);
+/// The history-mode function from the day terms' history_scaled (the same value as
+/// magnetic_function, with the powers of the decay factor by repeated multiplication).
+double magnetic_function_cached(const FullTable& p, const FullDayTerms& day, double latitude_deg);
 
 FullDayTerms full_day_terms(const FullTable& p, int day_of_year, const SolarActivity& activity);
 LowerDayTerms lower_day_terms(const LowerTable& p, int day_of_year);

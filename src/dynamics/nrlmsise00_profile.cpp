@@ -96,9 +96,9 @@ template class ClampedSpline<5>;
 
 ThermosphereProfile::ThermosphereProfile(const Gravity& g, double t_inf, double t_lb, double sigma, double z_lb,
                                          double z_a, const std::array<double, kNodes - 1>& node_t,
-                                         double bottom_gradient, bool need_spline)
+                                         double bottom_gradient, bool need_spline, bool exp_log)
     : g_(g), t_inf_(t_inf), t_lb_(t_lb), sigma_(sigma), z_lb_(z_lb), z_a_(z_a), node_t_(node_t),
-      bottom_gradient_(bottom_gradient) {
+      bottom_gradient_(bottom_gradient), exp_log_(exp_log) {
   const double r = g.radius;
   t_a_ = t_inf - (t_inf - t_lb) * std::exp(-sigma * zeta(z_a, z_lb, r));
   g_lb_ = g.surface / std::pow(1.0 + z_lb / r, 2.0);
@@ -124,27 +124,44 @@ ThermosphereProfile::ThermosphereProfile(const Gravity& g, double t_inf, double 
 }
 
 ThermosphereProfile ThermosphereProfile::isothermal(double kelvin, bool need_spline) const {
-  return ThermosphereProfile(g_, kelvin, kelvin, sigma_, z_lb_, z_a_, node_t_, bottom_gradient_, need_spline);
+  return ThermosphereProfile(g_, kelvin, kelvin, sigma_, z_lb_, z_a_, node_t_, bottom_gradient_, need_spline,
+                             exp_log_);
 }
 
 double ThermosphereProfile::spline_x(double z) const {
   return zeta(std::max(z, kLowerNodes.back()), z_a_, g_.radius) / zeta_span_;
 }
 
+const ThermosphereProfile::AboveZa& ThermosphereProfile::above_za(double z) const {
+  const double zz = std::max(z, z_a_);
+  if (memo_.z == zz) return memo_;
+  memo_.z = zz;
+  memo_.zeta = zeta(zz, z_lb_, g_.radius);
+  memo_.t = t_inf_ - (t_inf_ - t_lb_) * std::exp(-sigma_ * memo_.zeta);
+  if (exp_log_ && memo_.t > 0.0) memo_.log_ratio = std::log(t_lb_ / memo_.t);
+  return memo_;
+}
+
 double ThermosphereProfile::temperature(double z) const {
-  if (z >= z_a_) return t_inf_ - (t_inf_ - t_lb_) * std::exp(-sigma_ * zeta(z, z_lb_, g_.radius));
+  if (z >= z_a_) return above_za(z).t;
   return 1.0 / spline_.value(spline_x(z));
 }
 
 double ThermosphereProfile::density(double z, double d_lb, double amu, double alpha) const {
   // Above z_a (Hedin 1987 eq. A12-A13): with gamma = M g_lb / (sigma R T_inf),
   //   n = n_lb (T_lb / T)^(1 + alpha + gamma) exp(-sigma gamma zeta(z, z_lb)).
-  const double zeta_lb = zeta(std::max(z, z_a_), z_lb_, g_.radius);
-  const double t = t_inf_ - (t_inf_ - t_lb_) * std::exp(-sigma_ * zeta_lb);
+  const AboveZa& a = above_za(z);
   const double gamma = amu * g_lb_ / (sigma_ * kGasConstant * t_inf_);
-  double decay = std::exp(-sigma_ * gamma * zeta_lb);
-  if (decay > 50.0 || t <= 0.0) decay = 50.0;  // the published guard
-  const double above = d_lb * std::pow(t_lb_ / t, 1.0 + alpha + gamma) * decay;
+  double above = 0.0;
+  if (exp_log_ && a.t > 0.0) {
+    // The published guard below caps exp(-sigma gamma zeta) at 50.
+    const double decay_log = std::min(-sigma_ * gamma * a.zeta, std::log(50.0));
+    above = d_lb * std::exp((1.0 + alpha + gamma) * a.log_ratio + decay_log);
+  } else {
+    double decay = std::exp(-sigma_ * gamma * a.zeta);
+    if (decay > 50.0 || a.t <= 0.0) decay = 50.0;  // the published guard
+    above = d_lb * std::pow(t_lb_ / a.t, 1.0 + alpha + gamma) * decay;
+  }
   if (z >= z_a_) return above;
   // Below z_a (Hedin 1991): hydrostatic integration of the spline temperature,
   //   n = n(z_a) (T_a / T)^(1 + alpha) exp(-M g_a zeta_span / R  integral(1/T dx)).

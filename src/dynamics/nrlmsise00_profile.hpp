@@ -53,8 +53,12 @@ class ThermosphereProfile {
 
   /// `node_t` the temperatures at 110, 100, 90, 72.5 km [K], `bottom_gradient` dT/dz at 72.5 km
   /// as the model defines it (tgn1[1]); the spline is built only when `need_spline`.
+  /// `exp_log`: density() above z_a as n_lb exp((1 + alpha + gamma) ln(T_lb/T) - sigma gamma zeta),
+  /// one exponential with the logarithm shared by the species at one height (the cached path),
+  /// instead of the published power times exponential (the same value to ~1e-15 relative).
   ThermosphereProfile(const Gravity& g, double t_inf, double t_lb, double sigma, double z_lb, double z_a,
-                      const std::array<double, kNodes - 1>& node_t, double bottom_gradient, bool need_spline);
+                      const std::array<double, kNodes - 1>& node_t, double bottom_gradient, bool need_spline,
+                      bool exp_log = false);
 
   /// Temperature at `z` [K] (z below 72.5 km is taken as 72.5).
   [[nodiscard]] double temperature(double z) const;
@@ -65,6 +69,7 @@ class ThermosphereProfile {
   /// The profile with the same shape factor sigma and nodes but T_inf = T_lb = `kelvin` (the
   /// published anomalous-O profile), with its spline only when `need_spline`.
   [[nodiscard]] ThermosphereProfile isothermal(double kelvin, bool need_spline) const;
+  [[nodiscard]] double sigma() const { return sigma_; }
 
   [[nodiscard]] double t_inf() const { return t_inf_; }
   [[nodiscard]] double t_lb() const { return t_lb_; }
@@ -74,6 +79,15 @@ class ThermosphereProfile {
 
  private:
   [[nodiscard]] double spline_x(double z) const;  // normalised geopotential height below z_a
+  // zeta(max(z, z_a), z_lb), the Bates temperature there and ln(T_lb / T), kept for the last
+  // height asked (every species is evaluated at the same height).
+  struct AboveZa {
+    double z = -1.0;
+    double zeta = 0.0;
+    double t = 0.0;
+    double log_ratio = 0.0;
+  };
+  const AboveZa& above_za(double z) const;
 
   Gravity g_;
   double t_inf_, t_lb_, sigma_, z_lb_, z_a_;
@@ -84,6 +98,8 @@ class ThermosphereProfile {
   double g_lb_ = 0.0;       // gravity at z_lb
   double g_a_ = 0.0;        // gravity at z_a
   ClampedSpline<kNodes> spline_;
+  bool exp_log_ = false;
+  mutable AboveZa memo_;
 };
 
 /// The middle-atmosphere temperature profile below 72.5 km (the model's densm): a spline of 1/T

@@ -9,14 +9,13 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/constants.hpp"
-#include "core/files/text_file.hpp"
 #include "core/geodetic.hpp"
 #include "core/gps_time.hpp"
 #include "dynamics/files/nrlmsise00_file.hpp"
 #include "dynamics/nrlmsise00.hpp"
-#include "support/temp_file.hpp"
 
 namespace {
 
@@ -158,4 +157,317 @@ TEST(Nrlmsise00, PublishedCasesEveryOutputToItsPrintedDigits) {
   }
 }
 
+// gtd7d adds anomalous O to gtd7's total mass: rho_d - rho = 16 amu n(O*) with the model's amu
+// 1.66e-24 g (the published gtd7d); to rounding of the sums (a few ulp of rho).
+TEST(Nrlmsise00, DragDensityAddsSixteenAmuOfAnomalousOxygen) {
+  const Nrlmsise00Atmosphere m = model();
+  for (const PublishedCase& c : kPublished) {
+    const Nrlmsise00Output o = m.evaluate(input_of(c)).value();
+    EXPECT_NEAR(o.mass_density_with_anomalous_o - o.mass_density, 16.0 * 1.66e-27 * o.anomalous_o,
+                1e-14 * o.mass_density_with_anomalous_o)
+        << "case " << c.number;
+  }
+}
+
+// Random inputs over the model's whole domain, in runs that repeat a day and an activity (the
+// cache reused) and change them (the cache refreshed), daily-Ap and ap-history modes.
+std::vector<Nrlmsise00Input> random_inputs(unsigned seed, int count) {
+  std::mt19937_64 rng(seed);
+  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  std::vector<Nrlmsise00Input> inputs;
+  Nrlmsise00Input in;
+  for (int k = 0; k < count; ++k) {
+    if (k % 7 == 0) {  // a new day and activity every 7 inputs
+      in.day_of_year = std::uniform_int_distribution<int>(1, 366)(rng);
+      in.activity.f107 = uniform(65.0, 300.0);
+      in.activity.f107a = uniform(65.0, 250.0);
+      in.activity.ap = uniform(0.0, 300.0);
+      in.activity.ap_history.reset();
+      if (k % 2 == 0) {
+        std::array<double, 7> ap{};
+        for (double& a : ap) a = uniform(0.0, 300.0);
+        in.activity.ap_history = ap;
+      }
+    }
+    in.ut_seconds = uniform(0.0, 86400.0);
+    // Heights over every regime: troposphere to exosphere, with the boundaries' neighbourhoods.
+    in.altitude_km = k % 3 == 0 ? uniform(0.0, 1000.0) : uniform(60.0, 130.0);
+    in.latitude_deg = uniform(-90.0, 90.0);
+    in.longitude_deg = uniform(-180.0, 180.0);
+    in.local_solar_time_h = in.ut_seconds / 3600.0 + in.longitude_deg / 15.0;
+    inputs.push_back(in);
+  }
+  return inputs;
+}
+
+double relative_difference(double a, double b) {
+  if (a == b) return 0.0;
+  return std::abs(a - b) / std::max(std::abs(a), std::abs(b));
+}
+
+// The cached evaluation (day/activity terms kept, phase cosines by the angle-sum identity) equals
+// the straightforward one, which evaluates the published expressions as written. Reference:
+// evaluate_uncached, the independent path; 1e-12 relative bounds the rounding of the identities
+// through the exponentials (measured 2026-11: see the printed value).
+TEST(Nrlmsise00, CachedEvaluationEqualsTheStraightforwardOne) {
+  const Nrlmsise00Atmosphere m = model();
+  double worst = 0.0;
+  for (const Nrlmsise00Input& in : random_inputs(29, 20000)) {
+    const auto fast = m.evaluate(in);
+    ASSERT_TRUE(fast.ok()) << fast.error().describe();
+    const std::array<double, 11> a = published_units(fast.value());
+    const std::array<double, 11> b = published_units(m.evaluate_uncached(in));
+    for (std::size_t q = 0; q < 11; ++q) {
+      const double d = relative_difference(a[q], b[q]);
+      worst = std::max(worst, d);
+      ASSERT_LE(d, 1e-12) << kQuantity[q] << " at " << in.altitude_km << " km, day " << in.day_of_year;
+    }
+  }
+  std::printf("[ measured ] cached vs straightforward: max relative difference %.2e\n", worst);
+}
+
+// The query path: position -> geodetic (WGS-84), UTC time -> day of year and seconds, local
+// solar time UT/3600 + lon/15 (the model's documented convention).
+TEST(Nrlmsise00, QueryUsesGeodeticPositionUtcDayAndMeanSolarTime) {
+  const visors::core::GeodeticPosition where{40.0 * visors::core::kDegToRad, -105.0 * visors::core::kDegToRad, 450e3};
+  visors::dynamics::AtmosphereQuery q;
+  q.t = visors::core::GpsTime::parse("2024-10-01T06:30:00", visors::core::TimeScale::kUtc).value();
+  q.r_itrf = visors::core::itrf_from_geodetic(where);
+  q.activity.f107 = 244.6;
+  q.activity.f107a = 215.3;
+  q.activity.ap = 5.0;
+  const Nrlmsise00Input in = Nrlmsise00Atmosphere::input_at(q);
+  EXPECT_EQ(in.day_of_year, 275);  // 2024 is a leap year: 274 days before October 1
+  EXPECT_DOUBLE_EQ(in.ut_seconds, 6.5 * 3600.0);
+  EXPECT_NEAR(in.latitude_deg, 40.0, 1e-9);  // geodetic round trip, core/geodetic.hpp's accuracy
+  EXPECT_NEAR(in.longitude_deg, -105.0, 1e-9);
+  EXPECT_NEAR(in.altitude_km, 450.0, 1e-9);
+  EXPECT_NEAR(in.local_solar_time_h, 6.5 - 7.0, 1e-9);
+  const Nrlmsise00Atmosphere m = model();
+  EXPECT_EQ(m.density(q), m.evaluate(in).value().mass_density_with_anomalous_o);
+}
+
+TEST(Nrlmsise00, QueryOutsideTheHeightRangeOrNonFiniteIsZero) {
+  const Nrlmsise00Atmosphere m = model();
+  visors::dynamics::AtmosphereQuery q;
+  q.t = visors::core::GpsTime::parse("2024-10-01T00:00:00", visors::core::TimeScale::kUtc).value();
+  q.r_itrf = visors::core::itrf_from_geodetic({0.0, 0.0, 1001e3});
+  EXPECT_EQ(m.density(q), 0.0);
+  q.r_itrf = visors::core::itrf_from_geodetic({0.0, 0.0, -1.0});
+  EXPECT_EQ(m.density(q), 0.0);
+  q.r_itrf = Eigen::Vector3d(std::nan(""), 0.0, 0.0);
+  EXPECT_EQ(m.density(q), 0.0);
+  q.r_itrf = visors::core::itrf_from_geodetic({0.0, 0.0, 500e3});
+  q.activity.f107 = std::nan("");
+  EXPECT_EQ(m.density(q), 0.0);  // an invalid activity gives no NaN
+}
+
+TEST(Nrlmsise00, InputProblemsNameTheField) {
+  const Nrlmsise00Input good = input_of(kPublished[0]);
+  EXPECT_FALSE(Nrlmsise00Atmosphere::input_problem(good));
+  auto field_of = [&](auto change) {
+    Nrlmsise00Input in = good;
+    change(in);
+    const auto problem = Nrlmsise00Atmosphere::input_problem(in);
+    return problem ? problem->field : std::string("(accepted)");
+  };
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.day_of_year = 367; }), "day_of_year");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.ut_seconds = -1.0; }), "ut_seconds");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.altitude_km = 1000.5; }), "altitude_km");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.latitude_deg = std::nan(""); }), "latitude_deg");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.longitude_deg = 400.0; }), "longitude_deg");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.local_solar_time_h = 50.0; }), "local_solar_time_h");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.activity.f107 = 0.0; }), "activity.f107");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.activity.f107a = -1.0; }), "activity.f107a");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) { in.activity.ap = -0.1; }), "activity.ap");
+  EXPECT_EQ(field_of([](Nrlmsise00Input& in) {
+              in.activity.ap_history = std::array<double, 7>{4, 4, 4, std::nan(""), 4, 4, 4};
+            }),
+            "activity.ap_history[3]");
+  const Nrlmsise00Atmosphere m = model();
+  Nrlmsise00Input bad = good;
+  bad.altitude_km = -1.0;
+  ASSERT_FALSE(m.evaluate(bad).ok());
+  EXPECT_EQ(m.evaluate(bad).error().field, "altitude_km");
+}
+
+TEST(Nrlmsise00, CreateRejectsANonFiniteCoefficientNamingIt) {
+  Nrlmsise00Coefficients c = coefficients();
+  c.pd[3][51] = std::nan("");
+  const auto m = Nrlmsise00Atmosphere::create(c);
+  ASSERT_FALSE(m.ok());
+  EXPECT_EQ(m.error().field, "pd[3][51]");
+}
+
+// ---- The coefficient file reader -----------------------------------------------------------
+
+// The repository's file: 10 tables, 3300 numbers. References: the first and last numbers of
+// three tables as the file prints them (the C port's block data, data/SOURCES.md).
+TEST(Nrlmsise00File, ReadsTheRepositoryTables) {
+  const Nrlmsise00Coefficients& c = coefficients();
+  EXPECT_EQ(c.pt[0], 9.86573E-01);
+  EXPECT_EQ(c.pd[0][0], 1.09979E+00);
+  EXPECT_EQ(c.pd[8][0], 6.04050E-02);
+  EXPECT_EQ(c.ptm[5], 1.20000E+02);  // z_lb = 120 km
+  EXPECT_EQ(c.pdl[1][15], 1.23435E+02);  // z_a = 123.435 km
+  EXPECT_EQ(c.pavgm[0], 2.61000E+02);
+  EXPECT_EQ(c.pma[9][99], 2.0);  // parameter set 2
+}
+
+// A small valid file of the right shape written from the repository's tables, then altered.
+std::string file_text(const Nrlmsise00Coefficients& c) {
+  std::string text = "# test file\n";
+  auto table = [&](const char* name, std::size_t rows, std::size_t cols, const double* const* row_data) {
+    char header[64];
+    std::snprintf(header, sizeof header, "array %s %zu %zu\n", name, rows, cols);
+    text += header;
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t k = 0; k < cols; ++k) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, k ? " %.17g" : "%.17g", row_data[r][k]);
+        text += buf;
+      }
+      text += '\n';
+    }
+  };
+  const double* pt[] = {c.pt.data()};
+  const double* ps[] = {c.ps.data()};
+  const double* ptm[] = {c.ptm.data()};
+  const double* sam[] = {c.sam.data()};
+  const double* pavgm[] = {c.pavgm.data()};
+  const double* pd[9];
+  for (std::size_t r = 0; r < 9; ++r) pd[r] = c.pd[r].data();
+  const double* pdl[] = {c.pdl[0].data(), c.pdl[1].data()};
+  const double* pdm[8];
+  for (std::size_t r = 0; r < 8; ++r) pdm[r] = c.pdm[r].data();
+  const double* ptl[4];
+  for (std::size_t r = 0; r < 4; ++r) ptl[r] = c.ptl[r].data();
+  const double* pma[10];
+  for (std::size_t r = 0; r < 10; ++r) pma[r] = c.pma[r].data();
+  table("pt", 1, 150, pt);
+  table("pd", 9, 150, pd);
+  table("ps", 1, 150, ps);
+  table("pdl", 2, 25, pdl);
+  table("ptm", 1, 10, ptm);
+  table("pdm", 8, 10, pdm);
+  table("ptl", 4, 100, ptl);
+  table("pma", 10, 100, pma);
+  table("sam", 1, 100, sam);
+  table("pavgm", 1, 10, pavgm);
+  return text;
+}
+
+// The line number (1-based) of the first line starting with `prefix`.
+std::size_t line_of(const std::string& text, const std::string& prefix) {
+  std::size_t line = 1;
+  for (std::size_t pos = 0; pos < text.size();) {
+    if (text.compare(pos, prefix.size(), prefix) == 0) return line;
+    pos = text.find('\n', pos);
+    if (pos == std::string::npos) break;
+    ++pos;
+    ++line;
+  }
+  return 0;
+}
+
+TEST(Nrlmsise00File, WrittenTablesReadBackIdentically) {
+  const auto c = parse_nrlmsise00_coefficients(file_text(coefficients()), "test");
+  ASSERT_TRUE(c.ok()) << c.error().describe();
+  EXPECT_EQ(c.value().pd, coefficients().pd);  // %.17g round-trips every double
+  EXPECT_EQ(c.value().pma, coefficients().pma);
+}
+
+TEST(Nrlmsise00File, ATruncatedTableNamesItsLineAndTable) {
+  std::string text = file_text(coefficients());
+  // Drop the last row of pd: the next header arrives after 8 of its 9 rows.
+  const std::size_t header = line_of(text, "array ps");
+  std::size_t start = 0;
+  for (std::size_t k = 1; k < header - 1; ++k) start = text.find('\n', start) + 1;
+  text.erase(start, text.find('\n', start) + 1 - start);
+  const auto c = parse_nrlmsise00_coefficients(text, "test");
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().field, "line " + std::to_string(header - 1));
+  EXPECT_NE(c.error().message.find("table pd has 8 of its 9 rows"), std::string::npos) << c.error().message;
+}
+
+TEST(Nrlmsise00File, ATableCutByTheEndOfTheFileIsNamed) {
+  std::string text = file_text(coefficients());
+  text.erase(text.rfind("array pavgm"));
+  text += "array pavgm 1 10\n";
+  const auto c = parse_nrlmsise00_coefficients(text, "test");
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().field, "pavgm");
+}
+
+TEST(Nrlmsise00File, ABadNumberNamesLineTableRowAndColumn) {
+  std::string text = file_text(coefficients());
+  const std::size_t line = line_of(text, "array pdm") + 3;  // pdm row 2
+  std::size_t start = 0;
+  for (std::size_t k = 1; k < line; ++k) start = text.find('\n', start) + 1;
+  const std::size_t second = text.find(' ', start) + 1;  // column 1
+  text.replace(second, text.find(' ', second) - second, "1.0E+0x");
+  const auto c = parse_nrlmsise00_coefficients(text, "test");
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().field, "line " + std::to_string(line));
+  EXPECT_NE(c.error().message.find("table pdm row 2 column 1: '1.0E+0x'"), std::string::npos) << c.error().message;
+}
+
+TEST(Nrlmsise00File, AShortRowNamesItsCount) {
+  std::string text = file_text(coefficients());
+  const std::size_t line = line_of(text, "array ptm") + 1;
+  std::size_t start = 0;
+  for (std::size_t k = 1; k < line; ++k) start = text.find('\n', start) + 1;
+  text.erase(text.rfind(' ', text.find('\n', start)), text.find('\n', start) - text.rfind(' ', text.find('\n', start)));
+  const auto c = parse_nrlmsise00_coefficients(text, "test");
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().field, "line " + std::to_string(line));
+  EXPECT_NE(c.error().message.find("table ptm row 0: 9 numbers, expected 10"), std::string::npos) << c.error().message;
+}
+
+TEST(Nrlmsise00File, AWrongSizeAnUnknownOrARepeatedTableIsRejected) {
+  const std::string text = file_text(coefficients());
+  std::string resized = text;
+  resized.replace(resized.find("array ptm 1 10"), 14, "array ptm 1 50");
+  const auto a = parse_nrlmsise00_coefficients(resized, "test");
+  ASSERT_FALSE(a.ok());
+  EXPECT_NE(a.error().message.find("table ptm must be 1 x 10, the header says 1 x 50"), std::string::npos);
+  const auto b = parse_nrlmsise00_coefficients(text + "array pz 1 1\n0\n", "test");
+  ASSERT_FALSE(b.ok());
+  EXPECT_NE(b.error().message.find("unknown table 'pz'"), std::string::npos);
+  const std::size_t sam = text.find("array sam");
+  const auto c = parse_nrlmsise00_coefficients(text + text.substr(sam, text.find("array pavgm") - sam), "test");
+  ASSERT_FALSE(c.ok());
+  EXPECT_NE(c.error().message.find("table sam appears twice"), std::string::npos) << c.error().message;
+}
+
+TEST(Nrlmsise00File, AMissingTableIsNamed) {
+  std::string text = file_text(coefficients());
+  const std::size_t start = text.find("array sam");
+  text.erase(start, text.find("array pavgm") - start);
+  const auto c = parse_nrlmsise00_coefficients(text, "test");
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().field, "sam");
+}
+
+TEST(Nrlmsise00File, AnInvalidTableValueIsNamedByEntry) {
+  std::string text = file_text(coefficients());
+  // The parameter-set marker of pma[4] (element 99, the last of its row) set to 3.
+  const std::size_t line = line_of(text, "array pma") + 5;
+  std::size_t start = 0;
+  for (std::size_t k = 1; k < line; ++k) start = text.find('\n', start) + 1;
+  const std::size_t last = text.rfind(' ', text.find('\n', start)) + 1;
+  text.erase(last, text.find('\n', start) - last);
+  text.insert(last, 1, '3');
+  const auto c = parse_nrlmsise00_coefficients(text, "test");
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().field, "pma[4][99]");
+}
+
+TEST(Nrlmsise00File, AMissingFileIsAnError) {
+  const auto c = read_nrlmsise00_coefficients("/nonexistent/nrlmsise00_coefficients.txt");
+  ASSERT_FALSE(c.ok());
+  EXPECT_NE(c.error().message.find("cannot open"), std::string::npos);
+}
+
 }  // namespace
+
