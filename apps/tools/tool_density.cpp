@@ -9,7 +9,7 @@
 //         "exospheric_temperature_k"}
 // harris-priester: the diurnal-bulge model with the embedded M&G table (mean activity), exponent
 // n of cos(psi/2) (default 6). harris-priester-max: rho_max everywhere (the truth world's
-// high-activity stand-in). f107 is used as the 81-day mean that selects the table (with the one
+// former high-activity stand-in, now NRLMSISE-00's fallback). f107 is used as the 81-day mean that selects the table (with the one
 // embedded table it changes nothing; it is required so that callers state the activity).
 // The geodetic height needs the Earth-fixed position: "r_itrf" if given (it must be the same
 // point: |r_itrf| = |r_gcrf| to 1e-6 relative), else r_itrf = gcrf_to_itrf_matrix(time,
