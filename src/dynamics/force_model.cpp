@@ -135,26 +135,29 @@ void ForceModel::refresh_earth_orientation(core::GpsTime t) {
 void ForceModel::refresh_solar_activity(core::GpsTime t) {
   if (!space_weather_) return;
   if (activity_start_ && t >= *activity_start_ && t.seconds_since(*activity_start_) < activity_period_) return;
-  const bool history = config_.drag.atmosphere == AtmosphereKind::kNrlmsise00 && config_.drag.ap_history;
-  activity_period_ = history ? 10800.0 : 86400.0;
   core::CalendarTime start = t.calendar(core::TimeScale::kUtc);
-  start.hour = history ? start.hour / 3 * 3 : 0;
-  start.minute = start.second = 0;
+  const int hour = start.hour;
+  start.hour = start.minute = start.second = 0;
   start.nanosecond = 0;
   activity_start_ = core::GpsTime::from_calendar(start, core::TimeScale::kUtc).value();
+  activity_period_ = 86400.0;
   auto activity = space_weather_->at(t);
-  if (!activity) {
+  if (!activity) {  // the configured activity for the whole UTC day
     activity_ = config_.drag.activity;
     ++space_weather_misses_;
     return;
   }
   activity_ = activity.value();
-  if (!history) return;
+  if (config_.drag.atmosphere != AtmosphereKind::kNrlmsise00 || !config_.drag.ap_history) return;
+  // The 3-hour ap interval holding t.
+  start.hour = hour / 3 * 3;
+  activity_start_ = core::GpsTime::from_calendar(start, core::TimeScale::kUtc).value();
+  activity_period_ = 10800.0;
   auto ap = space_weather_->ap_history(t);
   if (ap) {
     activity_.ap_history = ap.value();
   } else {
-    ++space_weather_misses_;  // the daily-Ap mode for this interval
+    ++ap_history_misses_;  // the daily-Ap mode for this interval
   }
 }
 

@@ -94,11 +94,12 @@ class ForceModel {
   [[nodiscard]] double gm() const { return gm_; }
   [[nodiscard]] double earth_radius() const { return radius_; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
-  /// Space-weather lookups outside the table: a UTC day outside it (the configured constant
-  /// activity was used), or with NRLMSISE-00 an ap history reaching before its start (the day's
-  /// activity without history: the daily-Ap mode); and EOP lookups outside the EOP table (the
-  /// last values were kept).
+  /// UTC days outside the space-weather table (the configured constant activity was used),
+  /// 3-hour intervals whose NRLMSISE-00 ap history reaches before the table's start (the day's
+  /// activity in the daily-Ap mode was used) and EOP lookups outside the EOP table (the last
+  /// values were kept).
   [[nodiscard]] std::int64_t space_weather_misses() const { return space_weather_misses_; }
+  [[nodiscard]] std::int64_t ap_history_misses() const { return ap_history_misses_; }
   [[nodiscard]] std::int64_t eop_misses() const { return eop_misses_; }
 
  private:
@@ -129,6 +130,7 @@ class ForceModel {
     Eigen::Vector3d moon_gcrf = Eigen::Vector3d::Zero();  // [m]
   } at_time_;
   std::int64_t space_weather_misses_ = 0;
+  std::int64_t ap_history_misses_ = 0;
   std::int64_t eop_misses_ = 0;
 };
 

@@ -140,16 +140,32 @@ TEST(ForceModel, CreateTakesTheDataAndReadsNoFile) {
 }
 
 // Outside the space-weather file's dates (2024-07-01..2025-01-31) the configured activity is used
-// and each such UTC day is counted once, so the caller can warn.
+// and each such UTC day is counted once (also across the truth's 3-hour ap intervals), so the
+// caller can warn.
 TEST(ForceModel, CountsDaysOutsideTheSpaceWeatherTable) {
   ForceModel forces = make(ForceModelConfig::truth());
   const GpsTime outside = GpsTime::parse("2025-03-01T00:00:00", core::TimeScale::kUtc).value();
   const core::StateVector x = mission_chief(forces.gm());
-  for (double dt : {0.0, 3600.0, 86400.0 + 10.0}) (void)forces.acceleration(outside + dt, x);
+  for (double dt : {0.0, 3600.0, 5 * 3600.0, 86400.0 + 10.0}) (void)forces.acceleration(outside + dt, x);
   if (const auto missing = missing_files(ForceModelConfig::truth()); !missing.empty()) {
     GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
   }
   EXPECT_EQ(forces.space_weather_misses(), 2);
+  EXPECT_EQ(forces.ap_history_misses(), 0);
+}
+
+// The table starts 2024-07-01: on 07-02 the daily activity exists (f107 of 07-01) but not the 57 h
+// of ap history, so those 3-hour intervals run NRLMSISE-00 in its daily-Ap mode and are counted.
+TEST(ForceModel, CountsIntervalsWithoutApHistory) {
+  if (const auto missing = missing_files(ForceModelConfig::truth()); !missing.empty()) {
+    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+  }
+  ForceModel forces = make(ForceModelConfig::truth());
+  const GpsTime day2 = GpsTime::parse("2024-07-02T00:00:00", core::TimeScale::kUtc).value();
+  const core::StateVector x = mission_chief(forces.gm());
+  for (double dt : {0.0, 3600.0, 4 * 3600.0}) (void)forces.acceleration(day2 + dt, x);  // intervals 0, 0, 1
+  EXPECT_EQ(forces.ap_history_misses(), 2);
+  EXPECT_EQ(forces.space_weather_misses(), 0);
 }
 
 // The truth's NRLMSISE-00 (issue 29): the density the force model uses for drag at the mission
