@@ -206,7 +206,7 @@ d::ThermosphereProfile thermosphere_profile(const Nrlmsise00Coefficients& c, con
 }
 
 // The diffusive density at z blended with the fully mixed one below the turbopause: `b_zh`
-// receives the mixed density at the turbopause height zh (Hedin 1987 eqs. A13-A15).
+// receives the mixed density at the turbopause height zh (Hedin 1987 appendix; the published dnet).
 double with_mixing(const d::ThermosphereProfile& prof, double z, double diffusive, double d_lb, double amu, double alpha,
                    double zh, double zhm, double xmm, double& b_zh) {
   b_zh = prof.density(zh, d_lb, amu - xmm, alpha - 1.0);
@@ -221,7 +221,7 @@ double density_at_zlb(const Nrlmsise00Coefficients& c, const Expansions& e, std:
 }
 
 // long-function: the eight species of the published thermosphere in their order, each with its
-// mixing and correction terms (Picone et al. 2002 sec. 2; Hedin 1987 eqs. A13-A21).
+// mixing and correction terms (Picone et al. 2002; Hedin 1987 appendix; the published gts7).
 template <class Expansions>
 Densities thermosphere(const Nrlmsise00Coefficients& c, const Gravity& g, const Basis& b, int day_of_year,
                        double f107a, double z, const Expansions& e) {
@@ -301,7 +301,7 @@ Densities thermosphere(const Nrlmsise00Coefficients& c, const Gravity& g, const 
                                  pdm[6][4] * pdl[0][0]);
     out.n *= d::chemistry_factor(z, pdm[6][3] * pdl[0][5], pdm[6][7] * pdl[0][4], pdm[6][6] * pdl[0][3]);
   }
-  // Anomalous O (Picone et al. 2002 sec. 2.2): an isothermal (T = tho) diffusive profile times a
+  // Anomalous O (Picone et al. 2002): an isothermal (T = tho) diffusive profile times a
   // Chapman-like height factor of scale zsht about zmho.
   const double db16h = density_at_zlb(c, e, 7, 8);
   const double tho = pdm[7][9] * pdl[0][6];

@@ -13,7 +13,7 @@
 //     with the fully mixed profile below its turbopause, times chemistry/dissociation
 //     corrections; T_inf, T_lb, the gradient and the densities at z_lb are each
 //     exp or (1 + G(L)) of a spherical-harmonic expansion G(L) in latitude, local time, day of
-//     year, UT, longitude, F10.7 and Ap (Hedin 1987 eqs. A1-A24);
+//     year, UT, longitude, F10.7 and Ap (Hedin 1987 appendix; eq. A22 the expansion);
 //   * below 72.5 km a spline temperature profile of the middle atmosphere (nodes 72.5 ... 0 km)
 //     and hydrostatic, fully mixed densities joined linearly to the thermosphere above 62.5 km.
 //
@@ -39,7 +39,7 @@
 //     d[5]);
 //   * mass_density_with_anomalous_o: gtd7d's "effective total mass density for drag", which adds
 //     16 amu times the anomalous-O density. Anomalous O (hot O and O+ above ~500 km, Picone et al.
-//     2002 sec. 2.2) was fitted to satellite drag data, so this is the density that reproduces
+//     2002) was fitted to satellite drag data, so this is the density that reproduces
 //     drag; density() returns it (docs/nrlmsise00.md compares the two).
 //
 // The model's own numerical constants are used as published (degrees to radians 1.74533e-2,
@@ -115,8 +115,8 @@ class Nrlmsise00Atmosphere final : public AtmosphereModel {
   /// Everything the model gives at `input`, after input_problem.
   [[nodiscard]] core::Result<Nrlmsise00Output> evaluate(const Nrlmsise00Input& input) const;
 
-  /// The same, computed from scratch without the day/activity cache and without the trigonometric
-  /// identities of the cached path: the straightforward evaluation of the published equations,
+  /// The same, computed from scratch without the day/activity cache and without the identities
+  /// of the cached path (phase and multiple-angle trigonometry, exp-log densities): the straightforward evaluation of the published equations,
   /// against which the fast path is tested (the two agree to ~1e-13 relative). Input as
   /// evaluate(); not checked (precondition: input_problem is nullopt).
   [[nodiscard]] Nrlmsise00Output evaluate_uncached(const Nrlmsise00Input& input) const;

@@ -6,7 +6,7 @@
 //
 // The names and the 0-based index layout are those of the data file (its header; the C port's
 // arrays): the FORTRAN PD(i, j) is pd[j-1][i-1]. What each table holds (Hedin 1987, "MSIS-86
-// thermospheric model", JGR 92(A5) 4649, appendix; Picone et al. 2002 sec. 2):
+// thermospheric model", JGR 92(A5) 4649, appendix; Picone et al. 2002):
 //   pt     the expansion G(L) of the exospheric temperature T_inf;
 //   pd     one expansion per density at z_lb: rows He, O, N2, T_lb (the temperature at z_lb),
 //          O2, Ar, H, N, anomalous O;

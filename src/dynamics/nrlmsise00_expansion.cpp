@@ -145,7 +145,7 @@ FullDayTerms full_day_terms(const FullTable& p, int day_of_year, const SolarActi
   d.cd18 = std::cos(2.0 * kDay * (day - p[17]));
   d.cd14 = std::cos(kDay * (day - p[13]));
   d.cd39 = std::cos(2.0 * kDay * (day - p[38]));
-  // F10.7 (Hedin 1987 eq. A22, the F10.7 terms; Picone et al. 2002 sec. 2.1 adds the dfa^2 term).
+  // F10.7 (Hedin 1987 eq. A22, the F10.7 terms; NRLMSISE-00 adds the dfa^2 term, Picone et al. 2002).
   const double df = activity.f107 - activity.f107a;
   const double dfa = activity.f107a - 150.0;
   d.flux = p[19] * df * (1.0 + p[59] * dfa) + p[20] * df * df + p[21] * dfa + p[29] * dfa * dfa;

@@ -148,7 +148,7 @@ double ThermosphereProfile::temperature(double z) const {
 }
 
 double ThermosphereProfile::density(double z, double d_lb, double amu, double alpha) const {
-  // Above z_a (Hedin 1987 eq. A12-A13): with gamma = M g_lb / (sigma R T_inf),
+  // Above z_a (Hedin 1987 appendix; the published densu): with gamma = M g_lb / (sigma R T_inf),
   //   n = n_lb (T_lb / T)^(1 + alpha + gamma) exp(-sigma gamma zeta(z, z_lb)).
   const AboveZa& a = above_za(z);
   const double gamma = amu * g_lb_ / (sigma_ * kGasConstant * t_inf_);

@@ -1,6 +1,6 @@
 #pragma once
 // Temperature and density profiles of NRLMSISE-00 (internal to nrlmsise00.cpp), in the model's
-// units (km, K, cm^-3, g/cm^3, cm/s^2): Hedin (1987, JGR 92(A5) 4649) appendix eqs. A1-A16 as
+// units (km, K, cm^-3, g/cm^3, cm/s^2): Hedin (1987, JGR 92(A5) 4649) appendix as
 // revised for MSISE-90 (Hedin 1991, JGR 96(A2) 1159: the spline profile below z_a), and the
 // NRL code's routines densu, densm, dnet, ccor, ccor2, glatf, scalh.
 
@@ -27,7 +27,7 @@ double scale_height(const Gravity& g, double z, double amu, double kelvin);
 
 /// A cubic spline through N nodes with given end slopes (clamped), its value and its integral
 /// from the first node: the spline of 1/T in normalised geopotential height the model uses
-/// (Hedin 1991 sec. 2). Outside the nodes the end polynomials are extended.
+/// (Hedin 1991). Outside the nodes the end polynomials are extended.
 template <std::size_t N>
 class ClampedSpline {
  public:
