@@ -103,6 +103,10 @@ std::vector<std::string> run_warnings(const dynamics::ForceModel& model) {
     warnings.push_back(fmt::format("forces.drag.space_weather: {} UTC days outside the table's dates used the "
                                    "configured f107/f107a/ap", model.space_weather_misses()));
   }
+  if (model.ap_history_misses() > 0) {
+    warnings.push_back(fmt::format("forces.drag.space_weather: {} 3-hour intervals without 57 h of ap history before "
+                                   "them ran NRLMSISE-00 in its daily-Ap mode", model.ap_history_misses()));
+  }
   if (model.eop_misses() > 0) {
     warnings.push_back(fmt::format("forces.earth_frame.eop: {} lookups outside the table's dates kept the last values",
                                    model.eop_misses()));

@@ -23,25 +23,28 @@ core::Result<GravityConfig> read_gravity(const toml::table& t, const std::string
 
 core::Result<DragConfig> read_drag(const toml::table& t, const std::string& s, DragConfig d) {
   if (auto e = check_keys(t, s, {"enabled", "atmosphere", "cosine_exponent", "density_scale",
-                                 "space_weather", "f107", "f107a", "ap"})) {
+                                 "space_weather", "f107", "f107a", "ap", "nrlmsise00_coefficients", "ap_history"})) {
     return *e;
   }
+  const char* kinds[] = {"harris-priester", "harris-priester-max", "nrlmsise00"};
   VISORS_TRY(enabled, bool_at(t, s, "enabled", d.enabled));
-  VISORS_TRY(atmosphere, string_at(t, s, "atmosphere",
-                                   d.atmosphere == AtmosphereKind::kHarrisPriester ? "harris-priester"
-                                                                                   : "harris-priester-max"));
+  VISORS_TRY(atmosphere, string_at(t, s, "atmosphere", kinds[static_cast<int>(d.atmosphere)]));
   VISORS_TRY(exponent, integer_at(t, s, "cosine_exponent", d.cosine_exponent));
   VISORS_TRY(scale, number_at(t, s, "density_scale", d.density_scale));
   VISORS_TRY(space_weather, string_at(t, s, "space_weather", d.space_weather));
   VISORS_TRY(f107, number_at(t, s, "f107", d.activity.f107));
   VISORS_TRY(f107a, number_at(t, s, "f107a", d.activity.f107a));
   VISORS_TRY(ap, number_at(t, s, "ap", d.activity.ap));
-  if (atmosphere == "harris-priester") {
+  VISORS_TRY(coefficients, string_at(t, s, "nrlmsise00_coefficients", d.nrlmsise00_coefficients));
+  VISORS_TRY(ap_history, bool_at(t, s, "ap_history", d.ap_history));
+  if (atmosphere == kinds[0]) {
     d.atmosphere = AtmosphereKind::kHarrisPriester;
-  } else if (atmosphere == "harris-priester-max") {
+  } else if (atmosphere == kinds[1]) {
     d.atmosphere = AtmosphereKind::kHarrisPriesterMaximum;
+  } else if (atmosphere == kinds[2]) {
+    d.atmosphere = AtmosphereKind::kNrlmsise00;
   } else {
-    return Error{field_name(s, "atmosphere"), "must be \"harris-priester\" or \"harris-priester-max\""};
+    return Error{field_name(s, "atmosphere"), "must be \"harris-priester\", \"harris-priester-max\" or \"nrlmsise00\""};
   }
   if (exponent < 1 || exponent > 12) return Error{field_name(s, "cosine_exponent"), "must be in [1, 12]"};
   if (!(scale > 0.0)) return Error{field_name(s, "density_scale"), "must be > 0"};
@@ -52,7 +55,11 @@ core::Result<DragConfig> read_drag(const toml::table& t, const std::string& s, D
   d.cosine_exponent = static_cast<int>(exponent);
   d.density_scale = scale;
   d.space_weather = space_weather;
-  d.activity = {f107, f107a, ap};
+  d.nrlmsise00_coefficients = coefficients;
+  d.ap_history = ap_history;
+  d.activity.f107 = f107;
+  d.activity.f107a = f107a;
+  d.activity.ap = ap;
   return d;
 }
 

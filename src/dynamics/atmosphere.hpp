@@ -4,6 +4,9 @@
 // needing geodetic position, local time and space weather) without touching drag or the
 // propagators.
 
+#include <array>
+#include <optional>
+
 #include <Eigen/Core>
 
 #include "core/gps_time.hpp"
@@ -16,6 +19,12 @@ struct SolarActivity {
   double f107 = 150.0;   // [sfu] (1e-22 W m^-2 Hz^-1)
   double f107a = 150.0;  // [sfu]
   double ap = 15.0;      // daily planetary index [2 nT]
+  /// The NRLMSISE-00 ap array [2 nT], when the 3-hourly history is known: [0] daily Ap, [1] the
+  /// 3-hourly ap of the current interval, [2], [3], [4] those 3, 6 and 9 h before, [5] the mean
+  /// of the eight from 12 to 33 h before, [6] the mean of the eight from 36 to 57 h before
+  /// (SpaceWeatherTable::ap_history). With it NRLMSISE-00 runs in its ap-history mode; models
+  /// without a geomagnetic history ignore it.
+  std::optional<std::array<double, 7>> ap_history;
 };
 
 struct AtmosphereQuery {

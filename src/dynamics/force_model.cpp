@@ -7,6 +7,7 @@
 #include "core/rtn_frame.hpp"
 #include "dynamics/drag.hpp"
 #include "dynamics/harris_priester.hpp"
+#include "dynamics/nrlmsise00.hpp"
 #include "dynamics/solar_radiation_pressure.hpp"
 #include "dynamics/third_body.hpp"
 
@@ -19,12 +20,41 @@ Error nested(const std::string& section, const Error& e) {
   return {e.field.empty() ? section : section + "." + e.field, e.message};
 }
 
-core::Result<std::unique_ptr<AtmosphereModel>> atmosphere_for(const DragConfig& config) {
+// An atmosphere's density times a constant factor (DragConfig::density_scale for models without
+// a scale of their own).
+class ScaledAtmosphere final : public AtmosphereModel {
+ public:
+  ScaledAtmosphere(std::unique_ptr<AtmosphereModel> model, double scale) : model_(std::move(model)), scale_(scale) {}
+  [[nodiscard]] double density(const AtmosphereQuery& query) const override { return scale_ * model_->density(query); }
+
+ private:
+  std::unique_ptr<AtmosphereModel> model_;
+  double scale_;
+};
+
+// NRLMSISE-00 from `coefficients`, or (without them) the Harris-Priester maximum that stands in
+// for it, with a warning.
+core::Result<std::unique_ptr<AtmosphereModel>> atmosphere_for(const DragConfig& config,
+                                                              const std::optional<Nrlmsise00Coefficients>& coefficients,
+                                                              std::optional<std::string>& fallback) {
+  if (config.atmosphere == AtmosphereKind::kNrlmsise00 && coefficients) {
+    if (!(config.density_scale > 0.0) || !std::isfinite(config.density_scale)) {
+      return Error{"drag.density_scale", "must be finite and > 0"};
+    }
+    auto msis = Nrlmsise00Atmosphere::create(*coefficients);
+    if (!msis) return nested("drag.nrlmsise00_coefficients", msis.error());
+    std::unique_ptr<AtmosphereModel> model = std::make_unique<Nrlmsise00Atmosphere>(std::move(msis).value());
+    if (config.density_scale == 1.0) return model;
+    return std::unique_ptr<AtmosphereModel>(std::make_unique<ScaledAtmosphere>(std::move(model), config.density_scale));
+  }
+  if (config.atmosphere == AtmosphereKind::kNrlmsise00 && !fallback) {
+    fallback = "drag.atmosphere: NRLMSISE-00 without its coefficient tables; using the Harris-Priester maximum";
+  }
   HarrisPriesterSettings settings;
   settings.cosine_exponent = config.cosine_exponent;
   settings.density_scale = config.density_scale;
-  settings.bulge = config.atmosphere == AtmosphereKind::kHarrisPriesterMaximum ? HarrisPriesterBulge::kApexMaximum
-                                                                               : HarrisPriesterBulge::kDiurnal;
+  settings.bulge = config.atmosphere == AtmosphereKind::kHarrisPriester ? HarrisPriesterBulge::kDiurnal
+                                                                        : HarrisPriesterBulge::kApexMaximum;
   auto hp = HarrisPriesterAtmosphere::create(settings);
   if (!hp) return nested("drag", hp.error());
   return std::unique_ptr<AtmosphereModel>(std::make_unique<HarrisPriesterAtmosphere>(std::move(hp).value()));
@@ -71,10 +101,11 @@ core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, cons
   model.gravity_.emplace(std::move(gravity).value());
 
   if (config.drag.enabled) {
-    auto atmosphere = atmosphere_for(config.drag);
+    auto atmosphere = atmosphere_for(config.drag, data.nrlmsise00, data.atmosphere_fallback);
     if (!atmosphere) return atmosphere.error();
     model.atmosphere_ = std::move(atmosphere).value();
     model.space_weather_ = std::move(data.space_weather);
+    if (data.atmosphere_fallback) model.warnings_.push_back(*data.atmosphere_fallback);
   }
   if (data.space_weather_fallback) model.warnings_.push_back(*data.space_weather_fallback);
   model.eop_table_ = std::move(data.eop);
@@ -98,21 +129,35 @@ void ForceModel::refresh_earth_orientation(core::GpsTime t) {
   }
 }
 
-// Space weather is daily: it is looked up again only when t leaves the cached UTC day (a day
-// ending in a leap second is treated as 86400 s long, which moves one second to the next day).
+// Space weather is daily, and with NRLMSISE-00 its ap history changes every 3 hours: it is looked
+// up again only when t leaves the cached UTC day or 3-hour interval (a day ending in a leap
+// second is treated as 86400 s long, which moves one second to the next interval).
 void ForceModel::refresh_solar_activity(core::GpsTime t) {
   if (!space_weather_) return;
-  if (activity_day_start_ && t >= *activity_day_start_ && t.seconds_since(*activity_day_start_) < 86400.0) return;
-  core::CalendarTime midnight = t.calendar(core::TimeScale::kUtc);
-  midnight.hour = midnight.minute = midnight.second = 0;
-  midnight.nanosecond = 0;
-  activity_day_start_ = core::GpsTime::from_calendar(midnight, core::TimeScale::kUtc).value();
+  if (activity_start_ && t >= *activity_start_ && t.seconds_since(*activity_start_) < activity_period_) return;
+  core::CalendarTime start = t.calendar(core::TimeScale::kUtc);
+  const int hour = start.hour;
+  start.hour = start.minute = start.second = 0;
+  start.nanosecond = 0;
+  activity_start_ = core::GpsTime::from_calendar(start, core::TimeScale::kUtc).value();
+  activity_period_ = 86400.0;
   auto activity = space_weather_->at(t);
-  if (activity) {
-    activity_ = activity.value();
-  } else {
+  if (!activity) {  // the configured activity for the whole UTC day
     activity_ = config_.drag.activity;
     ++space_weather_misses_;
+    return;
+  }
+  activity_ = activity.value();
+  if (config_.drag.atmosphere != AtmosphereKind::kNrlmsise00 || !config_.drag.ap_history) return;
+  // The 3-hour ap interval holding t.
+  start.hour = hour / 3 * 3;
+  activity_start_ = core::GpsTime::from_calendar(start, core::TimeScale::kUtc).value();
+  activity_period_ = 10800.0;
+  auto ap = space_weather_->ap_history(t);
+  if (ap) {
+    activity_.ap_history = ap.value();
+  } else {
+    ++ap_history_misses_;  // the daily-Ap mode for this interval
   }
 }
 

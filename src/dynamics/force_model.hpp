@@ -21,6 +21,7 @@
 #include "dynamics/atmosphere.hpp"
 #include "dynamics/force_model_config.hpp"
 #include "dynamics/gravity_field.hpp"
+#include "dynamics/nrlmsise00_coefficients.hpp"
 #include "dynamics/space_weather.hpp"
 #include "dynamics/spherical_harmonic_gravity.hpp"
 
@@ -51,7 +52,11 @@ struct ForceModelData {
   std::optional<SpaceWeatherTable> space_weather;
   /// The table of earth_frame.eop; nullopt: zero polar motion and UT1-UTC.
   std::optional<core::EopTable> eop;
+  /// The tables of drag.nrlmsise00_coefficients, used when drag.atmosphere is kNrlmsise00;
+  /// nullopt: Harris-Priester maximum instead (with atmosphere_fallback's warning).
+  std::optional<Nrlmsise00Coefficients> nrlmsise00;
   std::optional<std::string> gravity_fallback;
+  std::optional<std::string> atmosphere_fallback;
   std::optional<std::string> space_weather_fallback;
   std::optional<std::string> eop_fallback;
 };
@@ -65,7 +70,8 @@ class ForceModel {
 
   /// The model of `config` with `data` (no file is read); an error names the configuration
   /// field. warnings() holds data's fallbacks in the order gravity, degree truncation (when
-  /// gravity.degree exceeds the field's), space weather, EOP.
+  /// gravity.degree exceeds the field's), atmosphere (NRLMSISE-00 asked for without its
+  /// coefficients: Harris-Priester maximum), space weather, EOP.
   static core::Result<ForceModel> create(const ForceModelConfig& config, const SpacecraftProperties& spacecraft,
                                          ForceModelData data);
 
@@ -88,9 +94,12 @@ class ForceModel {
   [[nodiscard]] double gm() const { return gm_; }
   [[nodiscard]] double earth_radius() const { return radius_; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
-  /// UTC days outside the space-weather table (the configured constant activity was used) and
-  /// EOP lookups outside the EOP table (the last values were kept).
+  /// UTC days outside the space-weather table (the configured constant activity was used),
+  /// 3-hour intervals whose NRLMSISE-00 ap history reaches before the table's start (the day's
+  /// activity in the daily-Ap mode was used) and EOP lookups outside the EOP table (the last
+  /// values were kept).
   [[nodiscard]] std::int64_t space_weather_misses() const { return space_weather_misses_; }
+  [[nodiscard]] std::int64_t ap_history_misses() const { return ap_history_misses_; }
   [[nodiscard]] std::int64_t eop_misses() const { return eop_misses_; }
 
  private:
@@ -106,8 +115,9 @@ class ForceModel {
   std::optional<SphericalHarmonicGravity> gravity_;
   std::unique_ptr<AtmosphereModel> atmosphere_;
   std::optional<SpaceWeatherTable> space_weather_;
-  SolarActivity activity_;                   // of the UTC day [activity_day_start_, +1 day)
-  std::optional<core::GpsTime> activity_day_start_;
+  SolarActivity activity_;  // of the interval [activity_start_, + activity_period_)
+  std::optional<core::GpsTime> activity_start_;
+  double activity_period_ = 86400.0;  // a UTC day, or 3 h when the atmosphere uses the ap history [s]
   std::optional<core::EopTable> eop_table_;
   std::optional<core::GpsTime> eop_epoch_;
   core::EarthOrientation eop_;
@@ -120,6 +130,7 @@ class ForceModel {
     Eigen::Vector3d moon_gcrf = Eigen::Vector3d::Zero();  // [m]
   } at_time_;
   std::int64_t space_weather_misses_ = 0;
+  std::int64_t ap_history_misses_ = 0;
   std::int64_t eop_misses_ = 0;
 };
 

@@ -35,8 +35,8 @@ struct GravityConfig {
 
 enum class AtmosphereKind {
   kHarrisPriester,         // modified Harris-Priester, diurnal bulge (on board)
-  kHarrisPriesterMaximum,  // apex (maximum) densities everywhere: the truth's stand-in for
-                           // NRLMSISE-00 at the 2024 solar maximum
+  kHarrisPriesterMaximum,  // apex (maximum) densities everywhere (a crude high-activity stand-in)
+  kNrlmsise00,             // NRLMSISE-00 (dynamics/nrlmsise00.hpp), the truth
 };
 
 struct DragConfig {
@@ -46,7 +46,16 @@ struct DragConfig {
   double density_scale = 1.0;
   /// CelesTrak space-weather CSV (data-relative or absolute); empty: use `activity` constantly.
   std::string space_weather;
+  /// With NRLMSISE-00 and a space-weather file: drive the model's ap-history mode (switch 9 = -1)
+  /// with the file's 3-hourly ap, refreshed every 3 hours; false: the daily-Ap mode, refreshed
+  /// daily. The history mode follows storms within the day; the price is a forcing that jumps
+  /// every 3 hours (as the published model's input does), which integrators cross with an error
+  /// of order (jump x step) that is not truncation error (tests/dynamics/test_orbit_propagator.cpp).
+  bool ap_history = true;
   SolarActivity activity;
+  /// NRLMSISE-00 coefficient tables (data-relative or absolute), read when `atmosphere` is
+  /// kNrlmsise00; not found: Harris-Priester maximum with a warning.
+  std::string nrlmsise00_coefficients = "atmosphere/nrlmsise00_coefficients.txt";
 };
 
 enum class ShadowModel { kNone, kCylindrical, kConical };
@@ -76,8 +85,9 @@ struct ForceModelConfig {
   /// filter's estimate, or a test input).
   Eigen::Vector3d empirical_rtn = Eigen::Vector3d::Zero();
 
-  /// Ground truth (mission paper Table 3): GGM05S 60x60, maximum-activity atmosphere with the
-  /// observed space weather, SRP with the conical (penumbra) shadow, Sun and Moon, EOP from the IERS file, frame refresh 60 s.
+  /// Ground truth (mission paper Table 3): GGM05S 60x60, NRLMSISE-00 driven by the observed space
+  /// weather (F10.7, daily Ap and the 3-hourly ap history), SRP with the conical (penumbra)
+  /// shadow, Sun and Moon, EOP from the IERS file, frame refresh 60 s.
   static ForceModelConfig truth();
   /// On-board numerical model: GGM01S 20x20, Harris-Priester with mean activity, SRP with the
   /// cylindrical shadow, Sun, Moon,

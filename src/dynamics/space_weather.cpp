@@ -68,4 +68,30 @@ core::Result<double> SpaceWeatherTable::ap_3hourly(core::GpsTime t) const {
   return days_[*i].ap[static_cast<std::size_t>(std::clamp(hour / 3, 0, 7))];
 }
 
+core::Result<std::array<double, 7>> SpaceWeatherTable::ap_history(core::GpsTime t) const {
+  const auto day = day_index(t, 0);
+  if (!day.ok()) return day.error();
+  // The 3-hourly value k intervals (3 h each) before t's.
+  auto ap_before = [&](int k) { return ap_3hourly(t - 10800.0 * k); };
+  std::array<double, 7> ap{};
+  ap[0] = days_[*day].ap_daily;
+  for (int k = 0; k < 4; ++k) {
+    const auto v = ap_before(k);
+    if (!v.ok()) return v.error();
+    ap[static_cast<std::size_t>(k) + 1] = *v;
+  }
+  // Means of the eight values 12-33 h and 36-57 h before (intervals 4-11 and 12-19 back).
+  for (int block = 0; block < 2; ++block) {
+    double sum = 0.0;
+    for (int k = 4 + 8 * block; k < 12 + 8 * block; ++k) {
+      const auto v = ap_before(k);
+      if (!v.ok()) return core::Error{"t", "the ap history of " + t.format(core::TimeScale::kUtc, 0) +
+                                               " UTC reaches before the space-weather table (" + v.error().message + ")"};
+      sum += *v;
+    }
+    ap[static_cast<std::size_t>(5 + block)] = sum / 8.0;
+  }
+  return ap;
+}
+
 }  // namespace visors::dynamics

@@ -45,6 +45,13 @@ class SpaceWeatherTable {
   /// Valid over every day of the table.
   [[nodiscard]] core::Result<double> ap_3hourly(core::GpsTime t) const;
 
+  /// The NRLMSISE-00 ap array at `t` (Picone et al. 2002; the model's documentation of its ap
+  /// input): [0] daily Ap of t's UTC day, [1] ap_3hourly(t), [2..4] ap_3hourly(t - 3, 6, 9 h),
+  /// [5] the mean of ap_3hourly(t - 12 h, t - 15 h, ..., t - 33 h), [6] the mean of
+  /// ap_3hourly(t - 36 h, ..., t - 57 h). Needs the table from 57 h before t's interval: valid
+  /// from the third day's 09:00 UTC; before, an error naming "t".
+  [[nodiscard]] core::Result<std::array<double, 7>> ap_history(core::GpsTime t) const;
+
   [[nodiscard]] std::size_t size() const { return days_.size(); }
   [[nodiscard]] long first_mjd() const { return first_mjd_; }  // UTC day [d]
   [[nodiscard]] long last_mjd() const { return first_mjd_ + static_cast<long>(days_.size()) - 1; }

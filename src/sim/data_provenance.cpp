@@ -29,10 +29,15 @@ core::Result<DataFileUse> describe_data_file(const std::filesystem::path& path) 
 }
 
 std::vector<DataFileUse> data_files_of(const CampaignScenario& s) {
-  const std::pair<const char*, const std::string*> keys[] = {{"gnss.nav_file", &s.gnss.nav_file},
-                                                             {"forces.gravity.model", &s.forces.gravity.model},
-                                                             {"forces.drag.space_weather", &s.forces.drag.space_weather},
-                                                             {"forces.earth_frame.eop", &s.forces.earth_frame.eop}};
+  // The NRLMSISE-00 tables are read only when the truth's drag uses that model.
+  const std::string none;
+  const bool msis = s.forces.drag.enabled && s.forces.drag.atmosphere == dynamics::AtmosphereKind::kNrlmsise00;
+  const std::pair<const char*, const std::string*> keys[] = {
+      {"gnss.nav_file", &s.gnss.nav_file},
+      {"forces.gravity.model", &s.forces.gravity.model},
+      {"forces.drag.nrlmsise00_coefficients", msis ? &s.forces.drag.nrlmsise00_coefficients : &none},
+      {"forces.drag.space_weather", &s.forces.drag.space_weather},
+      {"forces.earth_frame.eop", &s.forces.earth_frame.eop}};
   std::vector<DataFileUse> out;
   for (const auto& [key, name] : keys) {
     if (name->empty()) continue;

@@ -26,8 +26,9 @@ struct DataFileUse {
 /// prime 0x100000001b3).
 core::Result<DataFileUse> describe_data_file(const std::filesystem::path& path);
 
-/// The files of the scenario's keys gnss.nav_file, forces.gravity.model, forces.drag.space_weather
-/// and forces.earth_frame.eop (those set), found or not.
+/// The files of the scenario's keys gnss.nav_file, forces.gravity.model,
+/// forces.drag.nrlmsise00_coefficients (when the truth's drag is NRLMSISE-00),
+/// forces.drag.space_weather and forces.earth_frame.eop (those set), found or not.
 std::vector<DataFileUse> data_files_of(const CampaignScenario& scenario);
 
 }  // namespace visors::sim

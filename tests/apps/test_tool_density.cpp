@@ -1,10 +1,15 @@
 // `visors tool density` through the real binary.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "apps/run_tool.hpp"
+#include "core/gps_time.hpp"
+#include "dynamics/files/nrlmsise00_file.hpp"
+#include "dynamics/nrlmsise00.hpp"
 
 namespace {
 
@@ -109,4 +114,84 @@ TEST(ToolDensity, BadExponentExitCode2NamesField) {
   EXPECT_NE(run.err.find("exponent"), std::string::npos) << run.err;
 }
 
+// NRLMSISE-00 through the tool. The reference is the library model (dynamics/nrlmsise00.hpp,
+// itself checked against the 17 published test cases in tests/dynamics/test_nrlmsise00.cpp)
+// evaluated at the inputs the tool documents: day of year 275 and UT 43200 s of
+// 2024-10-01T12:00:00, lst = 12 + lon/15 h. The property tested is the tool's handling of its
+// inputs (time, units, local time, ap_array), not the model again.
+constexpr char kMsis[] =
+    R"({"model":"nrlmsise00","time":"2024-10-01T12:00:00","lat_deg":45,"lon_deg":-100,"alt_m":500000,)"
+    R"("f107":244.6,"f107a":215.3,"ap":5)";
+
+std::string msis_input(const std::string& extra = "") { return std::string(kMsis) + extra + "}"; }
+
+visors::dynamics::Nrlmsise00Output library_model(bool with_history) {
+  const auto c = visors::dynamics::files::read_nrlmsise00_coefficients(std::string(VISORS_SOURCE_DIR) +
+                                                                       "/data/atmosphere/nrlmsise00_coefficients.txt");
+  EXPECT_TRUE(c.ok());
+  const auto model = visors::dynamics::Nrlmsise00Atmosphere::create(c.value()).value();
+  visors::dynamics::Nrlmsise00Input in;
+  in.day_of_year = 275;  // 2024-10-01 (leap year: 274 days before October)
+  in.ut_seconds = 43200.0;
+  in.altitude_km = 500.0;
+  in.latitude_deg = 45.0;
+  in.longitude_deg = -100.0;
+  in.local_solar_time_h = 12.0 - 100.0 / 15.0;
+  in.activity.f107 = 244.6;
+  in.activity.f107a = 215.3;
+  in.activity.ap = 5.0;
+  if (with_history) in.activity.ap_history = std::array<double, 7>{5, 3, 4, 6, 7, 5, 9};
+  return model.evaluate(in).value();
+}
+
+TEST(ToolDensity, Nrlmsise00MatchesTheModelAtTheDocumentedInputs) {
+  const auto run = visors::test::run_tool("density", msis_input());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto want = library_model(false);
+  // JSON text round trip (17 significant digits): a few ulp.
+  EXPECT_NEAR(run.json()["density"].get<double>(), want.mass_density_with_anomalous_o,
+              1e-15 * want.mass_density_with_anomalous_o);
+  EXPECT_NEAR(run.json()["density_without_anomalous_o"].get<double>(), want.mass_density, 1e-15 * want.mass_density);
+  EXPECT_NEAR(run.json()["temperature_k"].get<double>(), want.temperature, 1e-12);
+  EXPECT_NEAR(run.json()["exospheric_temperature_k"].get<double>(), want.exospheric_temperature, 1e-12);
+}
+
+TEST(ToolDensity, Nrlmsise00ApArraySelectsTheHistoryMode) {
+  const auto run = visors::test::run_tool("density", msis_input(R"(,"ap_array":[5,3,4,6,7,5,9])"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto want = library_model(true);
+  // JSON text round trip, a few ulp (first NRLMSISE-00 test).
+  EXPECT_NEAR(run.json()["density"].get<double>(), want.mass_density_with_anomalous_o,
+              1e-15 * want.mass_density_with_anomalous_o);
+}
+
+TEST(ToolDensity, Nrlmsise00BadInputExitCode2NamesField) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"model":"nrlmsise00","time":"2024-10-01T12:00:00","lat_deg":45,"lon_deg":-100,"alt_m":1.5e6,)"
+       R"("f107":244.6,"f107a":215.3,"ap":5})",
+       "alt_m"},
+      {R"({"model":"nrlmsise00","time":"2024-10-01T12:00:00","lat_deg":95,"lon_deg":-100,"alt_m":5e5,)"
+       R"("f107":244.6,"f107a":215.3,"ap":5})",
+       "lat_deg"},
+      {R"({"model":"nrlmsise00","time":"2024-13-01T12:00:00","lat_deg":45,"lon_deg":-100,"alt_m":5e5,)"
+       R"("f107":244.6,"f107a":215.3,"ap":5})",
+       "time"},
+      {R"({"model":"nrlmsise00","time":"2024-10-01T12:00:00","lat_deg":45,"lon_deg":-100,"alt_m":5e5,)"
+       R"("f107":244.6,"ap":5})",
+       "f107a"},
+      {R"({"model":"nrlmsise00","time":"2024-10-01T12:00:00","lat_deg":45,"lon_deg":-100,"alt_m":5e5,)"
+       R"("f107":-1,"f107a":215.3,"ap":5})",
+       "f107"},
+      {msis_input(R"(,"ap_array":[5,3,4])"), "ap_array"},
+      {msis_input(R"(,"ap_array":[5,3,4,6,-7,5,9])"), "ap_array[4]"},
+      {msis_input(R"(,"r_gcrf":[1,2,3])"), "r_gcrf"},
+  };
+  for (const auto& [input, field] : cases) {
+    const auto run = visors::test::run_tool("density", input);
+    EXPECT_EQ(run.exit_code, 2) << input;
+    EXPECT_NE(run.err.find(field), std::string::npos) << field << ": " << run.err;
+  }
+}
+
 }  // namespace
+

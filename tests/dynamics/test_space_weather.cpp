@@ -181,4 +181,44 @@ TEST(SpaceWeatherTable, NegativeApIsRejected) {
   EXPECT_EQ(SpaceWeatherTable::create(60584, days).error().field, "days[0]");
 }
 
+// The NRLMSISE-00 ap array (the model's documentation of its AP input, e.g. the NRL gtd7 comment:
+// daily Ap; 3-hourly ap now, 3, 6, 9 h before; the means of the eight from 12 to 33 h and from 36
+// to 57 h before). Synthetic days whose interval i of day d has ap = 10 d + i, so each expected
+// element is computed by hand below.
+std::vector<SpaceWeatherTable::Day> numbered_days() {
+  std::vector<SpaceWeatherTable::Day> days;
+  for (int d = 0; d < 3; ++d) {
+    SpaceWeatherTable::Day day{"2024-10-0" + std::to_string(d + 1), 200.0, 200.0, 90.0 + d, {}};
+    for (int i = 0; i < 8; ++i) day.ap[static_cast<std::size_t>(i)] = 10.0 * d + i;
+    days.push_back(day);
+  }
+  return days;
+}
+
+TEST(SpaceWeatherTable, ApHistoryFollowsTheNrlmsiseDefinition) {
+  const auto t = SpaceWeatherTable::create(60584, numbered_days()).value();
+  // 2024-10-03 13:30 UTC: day 2, interval 4 (12-15 UTC).
+  const auto ap = t.ap_history(utc("2024-10-03T13:30:00"));
+  ASSERT_TRUE(ap.ok()) << ap.error().describe();
+  EXPECT_EQ((*ap)[0], 92.0);  // daily Ap of day 2
+  EXPECT_EQ((*ap)[1], 24.0);  // current interval
+  EXPECT_EQ((*ap)[2], 23.0);  // 3 h before
+  EXPECT_EQ((*ap)[3], 22.0);  // 6 h before
+  EXPECT_EQ((*ap)[4], 21.0);  // 9 h before
+  // 12..33 h before: day 2 interval 0 and day 1 intervals 7..1: (20 + 17 + ... + 11) / 8.
+  EXPECT_EQ((*ap)[5], (20.0 + 17 + 16 + 15 + 14 + 13 + 12 + 11) / 8.0);
+  // 36..57 h before: day 1 interval 0 and day 0 intervals 7..1: (10 + 7 + ... + 1) / 8.
+  EXPECT_EQ((*ap)[6], (10.0 + 7 + 6 + 5 + 4 + 3 + 2 + 1) / 8.0);
+}
+
+TEST(SpaceWeatherTable, ApHistoryNeeds57HoursOfTable) {
+  const auto t = SpaceWeatherTable::create(60584, numbered_days()).value();
+  // Day 2 09:00 (interval 3): 57 h before is day 0 00:00, the table's first interval.
+  EXPECT_TRUE(t.ap_history(utc("2024-10-03T09:00:00")).ok());
+  const auto early = t.ap_history(utc("2024-10-03T08:59:59"));
+  ASSERT_FALSE(early.ok());
+  EXPECT_EQ(early.error().field, "t");
+}
+
 }  // namespace
+

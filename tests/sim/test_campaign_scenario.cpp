@@ -274,4 +274,24 @@ TEST(CampaignScenario, ResolvedForcesTableReadsBack) {
   EXPECT_EQ(back.forces.gravity.degree, 8);
 }
 
+// [forces.drag] chooses NRLMSISE-00 (config/force_model_toml.hpp), the truth preset's default.
+TEST(CampaignScenario, DragAtmosphereNrlmsise00IsRead) {
+  EXPECT_EQ(default_campaign().forces.drag.atmosphere, visors::dynamics::AtmosphereKind::kNrlmsise00);
+  const auto s = campaign_from_toml(
+                     "[forces]\npreset = \"onboard\"\n[forces.drag]\natmosphere = \"nrlmsise00\"\nap_history = false\n")
+                     .value();
+  EXPECT_EQ(s.forces.drag.atmosphere, visors::dynamics::AtmosphereKind::kNrlmsise00);
+  EXPECT_FALSE(s.forces.drag.ap_history);
+  const auto back = campaign_from_toml(campaign_to_toml(s)).value();
+  EXPECT_EQ(back.forces.drag.atmosphere, visors::dynamics::AtmosphereKind::kNrlmsise00);
+}
+
+TEST(CampaignScenario, UnknownDragAtmosphereIsNamed) {
+  const auto s = campaign_from_toml("[forces.drag]\natmosphere = \"jacchia\"\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().field.find("forces.drag.atmosphere"), std::string::npos) << s.error().field;
+  EXPECT_NE(s.error().message.find("\"nrlmsise00\""), std::string::npos) << s.error().message;
+}
+
 }  // namespace
+

@@ -330,9 +330,10 @@ TEST_F(GnssManeuverRun, ExecutedEqualsCommandedWithoutErrors) {
 
 // The truth velocity jumps by the executed dv across the impulse: the difference to the run
 // without maneuvers, between the epochs just before and just after each piece, changes by dv.
-// Tolerance: the truth velocities are written to 1e-6 m/s (four roundings of 0.5e-6 m/s in the
-// double difference: 2e-6 m/s); the dynamics of the up to 0.2 m offset over 1 s add ~1e-7 m/s
-// (gravity gradient ~ 2 n^2 x 0.2 m).
+// Tolerance: the truth velocities are written to 1e-6 m/s per component (four roundings of
+// 0.5e-6 m/s in the double difference: 2e-6 m/s per component, sqrt(3) x 2e-6 = 3.5e-6 m/s in
+// norm); the dynamics of the up to 0.2 m offset over 1 s add ~1e-7 m/s (gravity gradient
+// ~ 2 n^2 x 0.2 m).
 TEST_F(GnssManeuverRun, TruthVelocityJumpsByTheExecutedDv) {
   const auto rows = read_csv(with_->dir / "maneuvers.csv");
   const auto with = read_truth(with_->dir).at("osc");
@@ -346,11 +347,12 @@ TEST_F(GnssManeuverRun, TruthVelocityJumpsByTheExecutedDv) {
     const auto k0 = static_cast<std::size_t>(std::floor(t));  // the epoch at or before the piece: pre-impulse
     const auto k1 = k0 + 1;
     const Eigen::Vector3d jump = (with[k1].v - without[k1].v) - (with[k0].v - without[k0].v);
-    EXPECT_LT((jump - exe).norm(), 2.1e-6) << "t " << t;
+    EXPECT_LT((jump - exe).norm(), 3.6e-6) << "t " << t;
   }
-  // the first piece alone: at the next epoch the whole difference is its dv (two roundings: 1e-6)
+  // the first piece alone: at the next epoch the whole difference is its dv (two roundings: 1e-6
+  // per component, 1.7e-6 in norm; measured 1.108e-6 with the NRLMSISE-00 truth, 2026-11)
   const Eigen::Vector3d first(num(rows[0][5]), num(rows[0][6]), num(rows[0][7]));
-  EXPECT_LT((with[11].v - without[11].v - first).norm(), 1.1e-6);
+  EXPECT_LT((with[11].v - without[11].v - first).norm(), 1.8e-6);
   EXPECT_LT((with[10].v - without[10].v).norm(), 1e-12);  // the row at 10 s is before the impulse
   // the DSC does not maneuver: identical truth
   for (std::size_t k = 0; k < before_dsc.size(); ++k) EXPECT_EQ(before_dsc[k].v, ref_dsc[k].v);

@@ -1,7 +1,8 @@
 #pragma once
 // Data search path: reference data files (gravity fields, EOP, space weather, GPS ephemerides)
 // are found at run time through VISORS_DATA_PATH (':'-separated folders), then the repository's
-// own data/ folder. Nothing is copied into the repository. Ground side (visors_core_files): flight
+// own data/ folder, which ships only what the default runs need and is small (its provenance in
+// data/SOURCES.md: the NRLMSISE-00 coefficient tables). Ground side (visors_core_files): flight
 // code gets the data, never a path.
 
 #include <filesystem>

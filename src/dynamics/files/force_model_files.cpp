@@ -7,6 +7,7 @@
 #include "core/files/data_path.hpp"
 #include "core/files/eop_file.hpp"
 #include "dynamics/files/icgem_file.hpp"
+#include "dynamics/files/nrlmsise00_file.hpp"
 #include "dynamics/files/space_weather_file.hpp"
 #include "dynamics/gravity_field.hpp"
 
@@ -30,8 +31,20 @@ core::Result<GravityField> gravity_field_for(const GravityConfig& config, std::o
   return embedded;
 }
 
-// The space-weather and EOP tables into `data`, or the first table file found but unreadable.
+// The space-weather, NRLMSISE-00 and EOP tables into `data`, or the first table file found but
+// unreadable.
 std::optional<Error> load_tables(const ForceModelConfig& config, ForceModelData& data) {
+  if (config.drag.enabled && config.drag.atmosphere == AtmosphereKind::kNrlmsise00) {
+    const auto path = core::files::find_data_file(config.drag.nrlmsise00_coefficients);
+    if (path) {
+      auto tables = read_nrlmsise00_coefficients(*path);
+      if (!tables) return nested("drag.nrlmsise00_coefficients", tables.error());
+      data.nrlmsise00.emplace(std::move(tables).value());
+    } else {
+      data.atmosphere_fallback = "drag.nrlmsise00_coefficients: '" + config.drag.nrlmsise00_coefficients +
+                                 "' not found; Harris-Priester maximum densities instead of NRLMSISE-00";
+    }
+  }
   if (config.drag.enabled && !config.drag.space_weather.empty()) {
     const auto path = core::files::find_data_file(config.drag.space_weather);
     if (path) {
