@@ -105,8 +105,8 @@ void add_garbage(SimulatedSpacecraft& v, core::GpsTime t, RandomStream& rng, Hos
 CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder, const RunOptions& options)
     : scenario_(scenario),
       recorder_(&recorder),
-      components_(std::make_unique<PairedWorker>(options.parallel_components)),
-      sky_(scenario.target_offset_rad) {
+      sky_(scenario.target_offset_rad),
+      components_(std::make_unique<PairedWorker>(options.parallel_components)) {
   const CampaignScenario& s = scenario_;
   vehicles_[0].id = Spacecraft::kDsc;
   vehicles_[0].name = "dsc";
