@@ -14,6 +14,16 @@ inline constexpr std::string_view kEventsFile = "events.csv";
 inline constexpr std::string_view kSummaryFile = "summary.json";
 inline constexpr std::string_view kReportFile = "report.html";
 inline constexpr std::string_view kNavigationFile = "navigation.csv";  // [navigation] mode = "cdgps" only
+inline constexpr std::string_view kAlignmentSamplesFile = "alignment_samples.csv";
+
+/// The columns of alignment_samples.csv: every step inside an observation window, the truth the
+/// score used (GCRF, centres of mass, body-to-GCRF quaternions scalar first, the target's apparent
+/// unit direction from the DSC), in order.
+inline constexpr std::array<std::string_view, 28> kAlignmentSampleColumns{
+    "index",      "t_s",        "dsc_x_m",    "dsc_y_m",    "dsc_z_m",    "dsc_vx_mps", "dsc_vy_mps",
+    "dsc_vz_mps", "dsc_qw",     "dsc_qx",     "dsc_qy",     "dsc_qz",     "osc_x_m",    "osc_y_m",
+    "osc_z_m",    "osc_vx_mps", "osc_vy_mps", "osc_vz_mps", "osc_qw",     "osc_qx",     "osc_qy",
+    "osc_qz",     "target_x",   "target_y",   "target_z",   "lateral_m",  "lateral_velocity_mps", "focus_m"};
 
 /// The columns of timeseries.csv, in order.
 inline constexpr std::array<std::string_view, 26> kTimeseriesColumns{

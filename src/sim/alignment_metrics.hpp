@@ -39,9 +39,23 @@ struct AlignmentResult {
   }
 };
 
-/// Folds one sample of the window into `result` (worst values). Positions [m], velocities [m/s],
+/// One sample's values: lateral and lateral-velocity errors [m, m/s] and the signed separation
+/// along the line of sight minus the focal distance [m].
+struct AlignmentSample {
+  double lateral_m = 0.0;
+  double lateral_velocity_mps = 0.0;
+  double focus_signed_m = 0.0;
+};
+
+/// The sample of payload points p, their inertial velocities v (GCRF [m], [m/s]) and the target's
+/// apparent unit direction from the DSC (the file comment's formulas).
+AlignmentSample alignment_sample(const Eigen::Vector3d& p_osc, const Eigen::Vector3d& v_osc, const Eigen::Vector3d& p_dsc,
+                                 const Eigen::Vector3d& v_dsc, const Eigen::Vector3d& sun_unit,
+                                 const AlignmentRequirements& requirements);
+
+/// Folds one sample of the window into `result` (worst values) and returns it. Positions [m], velocities [m/s],
 /// GCRF; sun_unit: the target's apparent direction from the DSC.
-void add_alignment_sample(AlignmentResult& result, const Eigen::Vector3d& p_osc, const Eigen::Vector3d& v_osc,
+AlignmentSample add_alignment_sample(AlignmentResult& result, const Eigen::Vector3d& p_osc, const Eigen::Vector3d& v_osc,
                           const Eigen::Vector3d& p_dsc, const Eigen::Vector3d& v_dsc, const Eigen::Vector3d& sun_unit,
                           const AlignmentRequirements& requirements);
 

@@ -627,7 +627,10 @@ void CampaignSimulation::record_metrics() {
     if (ts_ >= p.start_s && ts_ <= p.end_s) {
       const Eigen::Vector3d p_osc = osc.x_gcrf.r + osc.q_body_to_gcrf * osc.geometry->payload_from_com_body_m();
       const Eigen::Vector3d p_dsc = dsc.x_gcrf.r + dsc.q_body_to_gcrf * dsc.geometry->payload_from_com_body_m();
-      add_alignment_sample(p.result, p_osc, osc.x_gcrf.v, p_dsc, dsc.x_gcrf.v, dsc.target_unit_gcrf, requirements_);
+      const AlignmentSample sample =
+          add_alignment_sample(p.result, p_osc, osc.x_gcrf.v, p_dsc, dsc.x_gcrf.v, dsc.target_unit_gcrf, requirements_);
+      recorder_->alignment_sample(p.result.index, ts_, dsc.x_gcrf, dsc.q_body_to_gcrf, osc.x_gcrf, osc.q_body_to_gcrf,
+                                  dsc.target_unit_gcrf, sample);
     } else if (ts_ > p.end_s) {
       p.done = true;
       const bool ok = p.result.success(requirements_);
@@ -687,6 +690,28 @@ core::Result<bool> CampaignSimulation::propagate_truth(core::GpsTime t) {
   return true;
 }
 
+// What the run drew for each spacecraft (docs/run-directory.md "truth"): the body vectors from the
+// structural origin (true centre of mass, payload reference point and line of sight, GPS phase
+// centre), the true mass, Cd, Cr and the propulsion's Isp and nozzle biases.
+nlohmann::json CampaignSimulation::truth_summary() const {
+  const auto vector = [](const Eigen::Vector3d& x) { return nlohmann::json::array({x.x(), x.y(), x.z()}); };
+  nlohmann::json out;
+  for (const SimulatedSpacecraft& v : vehicles_) {
+    nlohmann::json t{{"com_body_m", vector(v.geometry->com_body_m())},
+                     {"payload_body_m", vector(v.geometry->payload_body_m())},
+                     {"payload_axis_body", vector(v.geometry->payload_axis_body())},
+                     {"phase_center_error_body_m", vector(v.geometry->phase_center_error_body_m())},
+                     {"mass_kg", v.true_spacecraft.mass_kg},
+                     {"cd", v.true_spacecraft.cd},
+                     {"cr", v.true_spacecraft.cr},
+                     {"isp_s", v.propulsion->isp_s()},
+                     {"nozzle_bias", v.propulsion->nozzle_bias()}};
+    if (v.receiver) t["phase_center_body_m"] = vector(v.receiver->phase_center_body_m());
+    out[std::string(v.name)] = t;
+  }
+  return out;
+}
+
 nlohmann::json CampaignSimulation::summary(double wall_s) const {
   const CampaignScenario& s = scenario_;
   nlohmann::json summary;
@@ -729,6 +754,7 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
     dv[std::string(v.name)] = by_mode;
   }
   summary["delta_v_mps"] = dv;
+  summary["truth"] = truth_summary();
   summary["paper_budget_mps"] = {{"standby_per_week", 0.3488}, {"transfer_to_science", 0.4934},
                                  {"transfer_to_standby", 0.4844}, {"science_per_observation", 0.0048}};
   summary["min_separation_rn_m"] = min_sep_rn_m_;

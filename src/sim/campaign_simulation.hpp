@@ -76,6 +76,7 @@ class CampaignSimulation {
   [[nodiscard]] bool ended() const { return ended_; }
   /// The figures of merit (docs/run-directory.md, summary.json), `wall_s` as given.
   [[nodiscard]] nlohmann::json summary(double wall_s) const;
+  [[nodiscard]] nlohmann::json truth_summary() const;
 
  private:
   struct PendingObservation {

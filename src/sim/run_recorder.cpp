@@ -55,9 +55,13 @@ core::Result<RunRecorder> RunRecorder::open(const std::filesystem::path& dir, co
   auto ev = open_file(dir / std::string(report::kEventsFile));
   if (!ev.ok()) return ev.error();
   r.events_ = std::move(ev).value();
+  auto samples = open_file(dir / std::string(report::kAlignmentSamplesFile));
+  if (!samples.ok()) return samples.error();
+  r.alignment_samples_ = std::move(samples).value();
   write_header(r.timeseries_.get(), report::kTimeseriesColumns);
   write_header(r.observations_.get(), report::kObservationColumns);
   write_header(r.events_.get(), report::kEventColumns);
+  write_header(r.alignment_samples_.get(), report::kAlignmentSampleColumns);
   return r;
 }
 
@@ -100,6 +104,25 @@ void RunRecorder::observation(const AlignmentResult& result, bool success) {
              observations_.get());
 }
 
+void RunRecorder::alignment_sample(int index, double t_s, const core::StateVector& dsc_gcrf, const Eigen::Quaterniond& q_dsc,
+                                   const core::StateVector& osc_gcrf, const Eigen::Quaterniond& q_osc,
+                                   const Eigen::Vector3d& target_unit_gcrf, const AlignmentSample& sample) {
+  std::string line = fmt::format("{},{:.17g}", index, t_s);
+  const auto add = [&line](const Eigen::Vector3d& v) {
+    for (int i = 0; i < 3; ++i) line += fmt::format(",{:.17g}", v(i));
+  };
+  const auto add_q = [&line](const Eigen::Quaterniond& q) { line += fmt::format(",{:.17g},{:.17g},{:.17g},{:.17g}", q.w(), q.x(), q.y(), q.z()); };
+  add(dsc_gcrf.r);
+  add(dsc_gcrf.v);
+  add_q(q_dsc);
+  add(osc_gcrf.r);
+  add(osc_gcrf.v);
+  add_q(q_osc);
+  add(target_unit_gcrf);
+  line += fmt::format(",{:.17g},{:.17g},{:.17g}\n", sample.lateral_m, sample.lateral_velocity_mps, sample.focus_signed_m);
+  std::fputs(line.c_str(), alignment_samples_.get());
+}
+
 void RunRecorder::event(double t_s, std::string_view spacecraft, std::string_view kind, std::string_view detail) {
   std::fputs(fmt::format("{:.17g},{},{},{}\n", t_s, spacecraft, kind, quoted(detail)).c_str(), events_.get());
 }
@@ -109,6 +132,7 @@ core::Result<bool> RunRecorder::finish(const nlohmann::json& summary) {
   observations_.reset();
   events_.reset();
   navigation_.reset();
+  alignment_samples_.reset();
   const auto path = dir_ / std::string(report::kSummaryFile);
   std::ofstream out(path);
   if (!out) return core::Error{"output file " + path.string(), "cannot be written"};

@@ -10,9 +10,11 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "core/files/output_file.hpp"
+#include "core/state_vector.hpp"
 #include "core/status.hpp"
 #include "sim/alignment_metrics.hpp"
 #include "sim/navigation_score.hpp"
@@ -51,6 +53,11 @@ class RunRecorder {
   void navigation(double t_s, std::string_view spacecraft, const NavigationSample& sample, double fixed_fraction,
                   bool in_slew, bool in_observation);
   void observation(const AlignmentResult& result, bool success);
+  /// An alignment_samples.csv row: attempt `index` at t_s, both spacecraft's true centre-of-mass
+  /// states (GCRF) and attitudes, the target's apparent direction from the DSC, the sample's values.
+  void alignment_sample(int index, double t_s, const core::StateVector& dsc_gcrf, const Eigen::Quaterniond& q_dsc,
+                        const core::StateVector& osc_gcrf, const Eigen::Quaterniond& q_osc,
+                        const Eigen::Vector3d& target_unit_gcrf, const AlignmentSample& sample);
   void event(double t_s, std::string_view spacecraft, std::string_view kind, std::string_view detail);
   /// Writes summary.json and closes the files.
   core::Result<bool> finish(const nlohmann::json& summary);
@@ -66,7 +73,7 @@ class RunRecorder {
   RunRecorder() = default;
 
   std::filesystem::path dir_;
-  File timeseries_, observations_, events_, navigation_;
+  File timeseries_, observations_, events_, navigation_, alignment_samples_;
 };
 
 }  // namespace visors::sim

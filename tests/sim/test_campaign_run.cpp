@@ -1,6 +1,7 @@
 // Shortened closed-loop system tests of `visors run` (the full campaign is a README command and a
 // benchmark): a science leg from the science orbit, determinism, the escape scenario.
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <filesystem>
@@ -103,6 +104,41 @@ TEST_F(ScienceLeg, RunDirectoryHasEveryFile) {
   for (const char* name : {"scenario.toml", "timeseries.csv", "observations.csv", "events.csv", "summary.json"}) {
     EXPECT_TRUE(std::filesystem::exists(dir_ / name)) << name;
   }
+}
+
+// Issue 29: the run directory alone is enough to recompute an attempt's lateral error. From
+// alignment_samples.csv (true states, attitudes, the target's apparent direction) and the drawn
+// body vectors of summary.json's "truth", the payload points p = r + q (payload - com), the
+// lateral error |d - (d.s) s| and its worst over the window, independently of the simulator's
+// code: the same as observations.csv to the files' 17 digits.
+TEST_F(ScienceLeg, LateralErrorIsRecomputedFromTheFilesAlone) {
+  std::ifstream in(dir_ / "alignment_samples.csv");
+  std::string line;
+  std::getline(in, line);  // header
+  const auto body = [](const nlohmann::json& t, const char* key) {
+    return Eigen::Vector3d(t[key][0].get<double>(), t[key][1].get<double>(), t[key][2].get<double>());
+  };
+  const nlohmann::json truth = nlohmann::json::parse(read(dir_ / "summary.json"))["truth"];
+  const Eigen::Vector3d lever_dsc = body(truth["dsc"], "payload_body_m") - body(truth["dsc"], "com_body_m");
+  const Eigen::Vector3d lever_osc = body(truth["osc"], "payload_body_m") - body(truth["osc"], "com_body_m");
+  double worst = 0.0;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream fields(line);
+    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
+    ASSERT_EQ(v.size(), 28U);
+    const Eigen::Quaterniond q_dsc(v[8], v[9], v[10], v[11]), q_osc(v[18], v[19], v[20], v[21]);
+    const Eigen::Vector3d p_dsc = Eigen::Vector3d(v[2], v[3], v[4]) + q_dsc * lever_dsc;
+    const Eigen::Vector3d p_osc = Eigen::Vector3d(v[12], v[13], v[14]) + q_osc * lever_osc;
+    const Eigen::Vector3d s(v[22], v[23], v[24]);
+    const Eigen::Vector3d d = p_osc - p_dsc;
+    worst = std::max(worst, (d - d.dot(s) * s).norm());
+    ++rows;
+  }
+  EXPECT_GT(rows, 0);
+  // 1e-8 m: the 17-digit text of positions near 7e6 m carries ~1e-9 m per coordinate.
+  EXPECT_NEAR(worst, summary_["observations"][0]["lateral_error_m"].get<double>(), 1e-8);
 }
 
 TEST_F(ScienceLeg, ResolvedScenarioIsValid) { EXPECT_TRUE(campaign_from_toml(read(dir_ / "scenario.toml")).ok()); }
