@@ -15,6 +15,7 @@ inline constexpr std::string_view kSummaryFile = "summary.json";
 inline constexpr std::string_view kReportFile = "report.html";
 inline constexpr std::string_view kNavigationFile = "navigation.csv";  // [navigation] mode = "cdgps" only
 inline constexpr std::string_view kAlignmentSamplesFile = "alignment_samples.csv";
+inline constexpr std::string_view kFlightConfigFile = "flight_config.json";
 
 /// The columns of alignment_samples.csv: every step inside an observation window, the truth the
 /// score used (GCRF, centres of mass, body-to-GCRF quaternions scalar first, the target's apparent

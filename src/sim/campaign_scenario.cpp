@@ -276,11 +276,10 @@ core::Result<bool> read_spacecraft(const toml::table& root, const std::string& s
   if (auto ok = in_range(cd, 0.0, 5.0, sec + ".cd"); !ok) return ok.error();
   if (auto ok = in_range(cr, 0.0, 2.0, sec + ".cr"); !ok) return ok.error();
   if (auto ok = in_range(area, 0.0, 10.0, sec + ".srp_area_m2"); !ok) return ok.error();
-  // At most a tenth of the nominal: the draw is clamped at 5 sigma, so the true value stays
-  // positive and physical.
-  if (auto ok = in_range(mass_sigma, 0.0, 0.1 * mass / 5.0, sec + ".mass_sigma_kg"); !ok) return ok.error();
-  if (auto ok = in_range(cd_sigma, 0.0, 0.1 * cd, sec + ".cd_sigma"); !ok) return ok.error();
-  if (auto ok = in_range(cr_sigma, 0.0, 0.1 * cr, sec + ".cr_sigma"); !ok) return ok.error();
+  // At most a fifth of the nominal: the draw is clamped at 5 sigma, so the true value stays >= 0.
+  if (auto ok = in_range(mass_sigma, 0.0, 0.2 * mass, sec + ".mass_sigma_kg"); !ok) return ok.error();
+  if (auto ok = in_range(cd_sigma, 0.0, 0.2 * cd, sec + ".cd_sigma"); !ok) return ok.error();
+  if (auto ok = in_range(cr_sigma, 0.0, 0.2 * cr, sec + ".cr_sigma"); !ok) return ok.error();
   v = SpacecraftSettings{mass, propellant, cd, cr, area, mass_sigma, cd_sigma, cr_sigma};
   return true;
 }
@@ -290,8 +289,12 @@ core::Result<bool> read_flight_knowledge(const toml::table& root, CampaignScenar
   const toml::table* t = table_at(root, "flight");
   if (t == nullptr) return true;
   const std::string sec = "flight";
-  if (auto e = check_keys(*t, sec, {"dsc_mass_kg", "osc_mass_kg", "cd", "cr", "drag_area_m2", "srp_area_m2"})) return *e;
+  if (auto e = check_keys(*t, sec, {"dsc_mass_kg", "osc_mass_kg", "cd", "cr", "drag_area_m2", "srp_area_m2", "eop_file"})) {
+    return *e;
+  }
   FlightKnowledge& k = s.flight;
+  VISORS_TRY(eop_file, string_at(*t, sec, "eop_file", k.eop_file));
+  k.eop_file = eop_file;
   const struct {
     const char* key;
     double* value;
@@ -478,8 +481,8 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += spacecraft("dsc", s.dsc);
   out += spacecraft("osc", s.osc);
   const FlightKnowledge& told = s.flight;
-  out += fmt::format("[flight]\ndsc_mass_kg = {:.17g}\nosc_mass_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\ndrag_area_m2 = {:.17g}\nsrp_area_m2 = {:.17g}\n\n",
-                     told.dsc_mass_kg, told.osc_mass_kg, told.cd, told.cr, told.drag_area_m2, told.srp_area_m2);
+  out += fmt::format("[flight]\ndsc_mass_kg = {:.17g}\nosc_mass_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\ndrag_area_m2 = {:.17g}\nsrp_area_m2 = {:.17g}\neop_file = \"{}\"\n\n",
+                     told.dsc_mass_kg, told.osc_mass_kg, told.cd, told.cr, told.drag_area_m2, told.srp_area_m2, told.eop_file);
   out += fmt::format("[geometry]\ncom_variation_sigma_m = {:.17g}\ncom_knowledge_error_m = {:.17g}\npayload_position_sigma_m = {:.17g}\npayload_pointing_sigma_arcsec = {:.17g}\nphase_center_knowledge_sigma_m = {:.17g}\n\n",
                      s.geometry.com_sigma_m, s.geometry.com_knowledge_error_m, s.geometry.payload_position_sigma_m,
                      s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad, s.geometry.phase_center_knowledge_sigma_m);

@@ -65,6 +65,9 @@ struct FlightKnowledge {
   double cr = 1.8;
   double drag_area_m2 = 0.35;  // the mean of the attitudes' 0.15-0.55 m^2
   double srp_area_m2 = 0.35;
+  /// The IERS file the ground uplinks the Earth orientation at the start from (data-relative or
+  /// absolute; empty or not found: zero EOP). The truth's own is [forces] earth_frame.eop.
+  std::string eop_file = "eop/finals2000A_2024-07-01_2025-01-31.txt";
 };
 
 /// A fault that lasts: from start_s [s since t0] for duration_s [s]; disabled when start_s < 0.

@@ -16,6 +16,7 @@
 #include "core/files/data_path.hpp"
 #include "core/rtn_frame.hpp"
 #include "sim/data_provenance.hpp"
+#include "sim/flight_config.hpp"
 #include "sim/formation_initial_state.hpp"
 #include "sim/host_records.hpp"
 #include "sim/navigation_message.hpp"
@@ -140,6 +141,10 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
       recorder.event(0.0, "sim", "warning", sim.fallbacks_.back());
     }
   }
+  // What the flight components are created with (the functions set_up_spacecraft uses).
+  auto config = flight_config_json(sim.scenario_);
+  if (!config.ok()) return config.error();
+  if (auto ok = recorder.flight_config(config.value()); !ok) return ok.error();
   const GpsWorld* gps = sim.gps_ ? &*sim.gps_ : nullptr;
   SimulatedSpacecraft& dsc = sim.vehicles_[0];
   SimulatedSpacecraft& osc = sim.vehicles_[1];

@@ -37,7 +37,8 @@ std::vector<DataFileUse> data_files_of(const CampaignScenario& s) {
       {"forces.gravity.model", &s.forces.gravity.model},
       {"forces.drag.nrlmsise00_coefficients", msis ? &s.forces.drag.nrlmsise00_coefficients : &none},
       {"forces.drag.space_weather", &s.forces.drag.space_weather},
-      {"forces.earth_frame.eop", &s.forces.earth_frame.eop}};
+      {"forces.earth_frame.eop", &s.forces.earth_frame.eop},
+      {"flight.eop_file", s.navigation_mode == NavigationMode::kCdgps ? &s.flight.eop_file : &none}};
   std::vector<DataFileUse> out;
   for (const auto& [key, name] : keys) {
     if (name->empty()) continue;

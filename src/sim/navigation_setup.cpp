@@ -7,6 +7,7 @@
 #include "core/files/data_path.hpp"
 #include "core/files/eop_file.hpp"
 #include "dynamics/files/force_model_files.hpp"
+#include "sim/flight_config.hpp"
 
 namespace visors::sim {
 
@@ -21,23 +22,18 @@ core::Result<nav::CdgpsSettings> cdgps_settings(const CampaignScenario& s) {
 
 core::Result<dynamics::ForceModel> onboard_force_model(const FlightKnowledge& knowledge, gnc::Spacecraft craft) {
   const std::string_view name = craft == gnc::Spacecraft::kDsc ? "dsc" : "osc";
-  dynamics::SpacecraftProperties p;
-  p.mass = craft == gnc::Spacecraft::kDsc ? knowledge.dsc_mass_kg : knowledge.osc_mass_kg;
-  p.cd = knowledge.cd;
-  p.cr = knowledge.cr;
-  p.drag_area = knowledge.drag_area_m2;
-  p.srp_area = knowledge.srp_area_m2;
+  const dynamics::SpacecraftProperties p = flight_spacecraft_properties(knowledge, craft);
   auto model = dynamics::files::load_force_model(dynamics::ForceModelConfig::onboard(), p);
   if (!model.ok()) return core::Error{std::string(name) + " on-board force model", model.error().describe()};
   return std::move(model).value();
 }
 
 core::Result<core::EarthOrientation> uplinked_earth_orientation(const CampaignScenario& s) {
-  if (s.forces.earth_frame.eop.empty()) return core::EarthOrientation{};
-  const auto path = core::files::find_data_file(s.forces.earth_frame.eop);
+  if (s.flight.eop_file.empty()) return core::EarthOrientation{};
+  const auto path = core::files::find_data_file(s.flight.eop_file);
   if (!path) return core::EarthOrientation{};
   auto table = core::files::read_eop_file(*path);
-  if (!table.ok()) return core::Error{"forces.earth_frame.eop", table.error().describe()};
+  if (!table.ok()) return core::Error{"flight.eop_file", table.error().describe()};
   auto at = table.value().at(s.t0);
   return at.ok() ? at.value() : core::EarthOrientation{};
 }

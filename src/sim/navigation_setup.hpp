@@ -24,8 +24,8 @@ core::Result<nav::CdgpsSettings> cdgps_settings(const CampaignScenario& scenario
 /// software is told of its mass, coefficients and areas ([flight]). Errors name the spacecraft.
 core::Result<dynamics::ForceModel> onboard_force_model(const FlightKnowledge& knowledge, gnc::Spacecraft craft);
 
-/// The Earth orientation uplinked to the spacecraft: the IERS values at the run's start from the
-/// scenario's EOP file (zero when it names none, or the file is not found). Without them the
+/// The Earth orientation uplinked to the spacecraft: the IERS values at the run's start from
+/// [flight] eop_file (zero when it names none, or the file is not found), not the truth's file. Without them the
 /// filter's GCRF turns against the truth's by UT1-UTC and polar motion: ~35 m at 500 km in
 /// October 2024.
 core::Result<core::EarthOrientation> uplinked_earth_orientation(const CampaignScenario& scenario);

@@ -127,6 +127,14 @@ void RunRecorder::event(double t_s, std::string_view spacecraft, std::string_vie
   std::fputs(fmt::format("{:.17g},{},{},{}\n", t_s, spacecraft, kind, quoted(detail)).c_str(), events_.get());
 }
 
+core::Result<bool> RunRecorder::flight_config(const nlohmann::json& config) const {
+  const auto path = dir_ / std::string(report::kFlightConfigFile);
+  std::ofstream out(path);
+  if (!out) return core::Error{"output file " + path.string(), "cannot be written"};
+  out << config.dump(2) << '\n';
+  return true;
+}
+
 core::Result<bool> RunRecorder::finish(const nlohmann::json& summary) {
   timeseries_.reset();
   observations_.reset();

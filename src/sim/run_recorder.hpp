@@ -59,6 +59,8 @@ class RunRecorder {
                         const core::StateVector& osc_gcrf, const Eigen::Quaterniond& q_osc,
                         const Eigen::Vector3d& target_unit_gcrf, const AlignmentSample& sample);
   void event(double t_s, std::string_view spacecraft, std::string_view kind, std::string_view detail);
+  /// Writes flight_config.json (sim/flight_config.hpp). Errors name the path.
+  core::Result<bool> flight_config(const nlohmann::json& config) const;
   /// Writes summary.json and closes the files.
   core::Result<bool> finish(const nlohmann::json& summary);
 

@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "sim/flight_config.hpp"
 #include "sim/navigation_setup.hpp"
 #include "sim/random_stream.hpp"
 
@@ -43,10 +44,7 @@ core::Result<bool> set_up_receiver(SimulatedSpacecraft& v, const CampaignScenari
 
 core::Result<bool> set_up_avionics(SimulatedSpacecraft& v, const CampaignScenario& s, bool active, const std::string& prefix,
                                    const GpsWorld* gps) {
-  gnc::GncConfig config = s.gnc;
-  config.self = v.id;
-  config.active = active;
-  config.mass_kg = v.id == gnc::Spacecraft::kDsc ? s.flight.dsc_mass_kg : s.flight.osc_mass_kg;  // what it is told
+  const gnc::GncConfig config = flight_gnc_config(s, v.id, active);
   std::optional<gnc::OnboardNavigation> onboard;
   if (gps != nullptr) {
     if (auto ok = set_up_receiver(v, s, *gps, prefix); !ok) return ok.error();
