@@ -61,8 +61,8 @@ bool try_cold_start(nav::CdgpsFilter& filter, nav::ColdStart& cold, const nav::G
   if (epochs[0] == nullptr || epochs[1] == nullptr) return false;
   const auto* attitudes = attitudes_at(in, epochs[0]->t.seconds_since(in.scenario.t0));
   if (attitudes == nullptr) return false;
-  const auto solution = cold.add(*epochs[0], *epochs[1], antenna_geometry((*attitudes)[0].body_to_gcrf, in.scenario),
-                                 antenna_geometry((*attitudes)[1].body_to_gcrf, in.scenario), in.ephemerides, frame);
+  const auto solution = cold.add(*epochs[0], *epochs[1], antenna_geometry((*attitudes)[0].body_to_gcrf),
+                                 antenna_geometry((*attitudes)[1].body_to_gcrf), in.ephemerides, frame);
   if (!solution) return false;
   filter.initialise(solution->t, solution->dsc_gcrf, solution->osc_gcrf, solution->dsc_clock_m, solution->osc_clock_m);
   return true;
@@ -225,8 +225,8 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
       continue;
     }
     f.predict(t);
-    const nav::CdgpsEpochInput input{epochs[0], epochs[1], antenna_geometry((*attitudes)[0].body_to_gcrf, in.scenario),
-                                     antenna_geometry((*attitudes)[1].body_to_gcrf, in.scenario)};
+    const nav::CdgpsEpochInput input{epochs[0], epochs[1], antenna_geometry((*attitudes)[0].body_to_gcrf),
+                                     antenna_geometry((*attitudes)[1].body_to_gcrf)};
     const nav::CdgpsEpochReport report = f.update(input, in.ephemerides, frame);
     // The LRF is on the OSC: the DSC's filter gets its range over the crosslink.
     const bool laser_here = r.fuse_laser && (local == Craft::kOsc || !crosslink_lost);

@@ -11,8 +11,10 @@
 #include "baseline/receiver_observables.hpp"
 #include "core/files/csv_file.hpp"
 #include "core/files/text_file.hpp"
+#include "gnc/onboard_navigation.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/files/rinex_obs_file.hpp"
+#include "sim/navigation_setup.hpp"
 #include "sim/random_stream.hpp"
 #include "sim/spacecraft_geometry.hpp"
 
@@ -180,11 +182,13 @@ core::Result<bool> read_phase_truth(const std::filesystem::path& path, RunInputs
 
 }  // namespace
 
-nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf, const sim::CampaignScenario& s) {
+nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf) {
   nav::AntennaGeometry a;
   a.body_to_gcrf = body_to_gcrf.toRotationMatrix();
-  a.arp_body_m = s.gnss.receiver.antenna_body_m - sim::GeometrySettings{}.com_nominal_body_m;
-  a.pco_body_m = s.gnss.receiver.phase_center_offset_m * Eigen::Vector3d::UnitZ();
+  // The flight software's calibrated antenna, not the truth receiver's (docs/truth-and-knowledge.md).
+  const gnc::OnboardNavigationSettings told;
+  a.arp_body_m = told.antenna_arp_body_m;
+  a.pco_body_m = told.antenna_pco_m * Eigen::Vector3d::UnitZ();
   a.boresight_body = Eigen::Vector3d::UnitZ();  // gnss-sim's nominal boresight
   return a;
 }
@@ -226,11 +230,7 @@ core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
     sim::RandomStream rng(in.scenario.seed, std::string(names[k]) + ".geometry");  // as gnss-sim draws it
     const auto geometry = sim::SpacecraftGeometry::draw(in.scenario.geometry, rng);
     in.payload_lever_error_body_m[k] = geometry.payload_from_com_body_m() - geometry.payload_from_com_nominal_body_m();
-    // The filter's lever (the flight software's nominal antenna, nav/cdgps_filter.hpp): antenna
-    // reference point plus the calibrated offset along body +Z, from the nominal centre of mass.
-    const sim::GpsReceiverSettings& rx = in.scenario.gnss.receiver;
-    const Eigen::Vector3d known = rx.antenna_body_m + rx.phase_center_offset_m * Eigen::Vector3d::UnitZ() - geometry.com_nominal_body_m();
-    in.antenna_lever_error_body_m[k] = in.true_antenna_lever_body_m[k] - known;
+    in.antenna_lever_error_body_m[k] = in.true_antenna_lever_body_m[k] - sim::known_antenna_lever_body_m();
   }
   return in;
 }

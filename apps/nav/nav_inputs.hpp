@@ -84,8 +84,9 @@ struct RunInputs {
 inline long long key_ms(double t_s) { return std::llround(t_s * 1000.0); }
 
 /// The antenna as the spacecraft knows it: the attitude (body to GCRF), the nominal centre of
-/// mass, the antenna reference point and the phase-centre offset along the boresight (body +Z).
-nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf, const sim::CampaignScenario& s);
+/// mass, the antenna reference point and the phase-centre offset along the boresight (body +Z):
+/// the flight software's calibrated values (gnc::OnboardNavigationSettings), not the truth's.
+nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf);
 
 /// The laser range's end points as the spacecraft know them: the nominal payload reference points
 /// (sim/spacecraft_geometry.hpp: the OSC's photon sieve, the DSC's detector) from the nominal

@@ -20,6 +20,7 @@
 #include "sim/formation_initial_state.hpp"
 #include "sim/host_records.hpp"
 #include "sim/navigation_message.hpp"
+#include "sim/navigation_setup.hpp"
 
 namespace visors::sim {
 
@@ -424,12 +425,10 @@ void CampaignSimulation::score_navigation() {
   truth.dsc_body_to_gcrf = dsc.q_body_to_gcrf.toRotationMatrix();
   truth.osc_body_to_gcrf = osc.q_body_to_gcrf.toRotationMatrix();
   // True minus known lever arm from the centre of mass to the phase centre: the known one is the
-  // flight software's (nominal centre of mass, antenna reference point, calibrated offset along
-  // body +Z), the true one the receiver's (drawn centre of mass, tilted boresight, phase-centre
-  // error).
-  const GpsReceiverSettings& rx = scenario_.gnss.receiver;
-  const auto lever_error = [&rx](const SimulatedSpacecraft& v) -> Eigen::Vector3d {
-    const Eigen::Vector3d known = rx.antenna_body_m + rx.phase_center_offset_m * Eigen::Vector3d::UnitZ() - v.geometry->com_nominal_body_m();
+  // flight software's, the true one the receiver's (drawn centre of mass, tilted boresight,
+  // phase-centre error).
+  const Eigen::Vector3d known = known_antenna_lever_body_m();
+  const auto lever_error = [&known](const SimulatedSpacecraft& v) -> Eigen::Vector3d {
     return (v.receiver->phase_center_body_m() - v.geometry->com_body_m()) - known;
   };
   truth.dsc_lever_error_m = lever_error(dsc);

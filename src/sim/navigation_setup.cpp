@@ -51,6 +51,11 @@ core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const C
   return settings;
 }
 
+Eigen::Vector3d known_antenna_lever_body_m() {
+  const gnc::OnboardNavigationSettings told;
+  return told.antenna_arp_body_m + told.antenna_pco_m * Eigen::Vector3d::UnitZ();
+}
+
 core::Result<gnc::OnboardNavigation> make_onboard_navigation(const CampaignScenario& s, gnc::Spacecraft self) {
   auto settings = onboard_navigation_settings(s);
   if (!settings.ok()) return settings.error();
