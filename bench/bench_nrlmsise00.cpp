@@ -1,4 +1,4 @@
-// NRLMSISE-00 cost per density evaluation (issue 29 item 4: the campaign makes ~2.4 million truth
+// NRLMSISE-00 cost per density evaluation (the campaign makes ~2.4 million truth
 // density evaluations and must stay <= 60 s in total). Points along the mission chief's 500 km
 // orbit, 1 s apart, October 2024 activity: the path the truth force model takes (AtmosphereModel
 // query, cached day/activity terms), the straightforward evaluation for comparison, and the
@@ -28,7 +28,7 @@ constexpr int kPoints = 5700;  // one orbit at 1 s
 
 // Queries along one orbit of the mission chief (GCRF from Keplerian elements, ITRF with zero EOP),
 // with October 2024 activity (F10.7 244.6 of 2024-10-01 as the previous day's, its centred mean
-// 215.3, Ap 5: shared/data/SOURCES.md sec. 2) and a quiet ap history.
+// 215.3, Ap 5: CelesTrak's observed space weather) and a quiet ap history.
 std::vector<AtmosphereQuery> orbit_queries(bool with_history) {
   std::vector<AtmosphereQuery> queries;
   const double gm = 3.986004415e14;

@@ -54,7 +54,7 @@ const StateVector kGeocentre{};
 TEST(ApparentSun, AstronomicalAlmanac1982May1RightAscension) {
   // The Astronomical Almanac for 1982, apparent Sun at 1982 May 1, 0h dynamical time:
   // 02h31m32.58s +14d54'34.9" (quoted in the IDL Astronomy Library's sunpos documentation).
-  // Tolerance 0.5" (the issue's bound; the printed precision is 0.15" in RA, 0.1" in Dec).
+  // Tolerance 0.5" (the required bound; the printed precision is 0.15" in RA, 0.1" in Dec).
   const GpsTime t = at_0h_tt(1982, 5, 1);
   const Eigen::Vector2d rd = ra_dec_of_date(t, visors::astro::sun_view(t, kGeocentre).apparent_unit_gcrf);
   const double ra_ref_h = 2.0 + 31.0 / 60.0 + 32.58 / 3600.0;

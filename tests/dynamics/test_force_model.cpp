@@ -168,7 +168,7 @@ TEST(ForceModel, CountsIntervalsWithoutApHistory) {
   EXPECT_EQ(forces.space_weather_misses(), 0);
 }
 
-// The truth's NRLMSISE-00 (issue 29): the density the force model uses for drag at the mission
+// The truth's NRLMSISE-00 (docs/nrlmsise00.md): the density the force model uses for drag at the mission
 // chief (500 km) equals the model evaluated directly at the same point with the activity of the
 // space-weather table (f107, f107a, daily Ap and the 3-hourly ap history): the plumbing. The
 // second time is in the same UTC day but another 3-hour interval of the storm of 2024-10-10

@@ -50,7 +50,7 @@ Nrlmsise00Atmosphere model() {
 // The 17 test cases of the NRLMSISE-00 distribution: inputs, and gtd7's outputs as printed by
 // the C package's test program (D. Brodowski's nrlmsise-00 C release, DOCUMENTATION, "nrlmsise-test
 // should generate the following output"; identical to the NRL FORTRAN test output and to
-// Orekit's NRLMSISE00Test.checkLegacy; shared/data/SOURCES.md sec. 5). CGS units: number
+// Orekit's NRLMSISE00Test.checkLegacy). CGS units: number
 // densities cm^-3, mass density g/cm^3 (gtd7's d[5], WITHOUT anomalous O), temperatures K.
 // Switches: all on; cases 16-17 in the ap-history mode (switch 9 = -1) with every ap = 100.
 // Note: lst is an input of its own (not UT/3600 + lon/15 in cases 6 and 7).

@@ -106,7 +106,7 @@ TEST_F(ScienceLeg, RunDirectoryHasEveryFile) {
   }
 }
 
-// Issue 29: the run directory alone is enough to recompute an attempt's lateral error. From
+// The run directory alone is enough to recompute an attempt's lateral error. From
 // alignment_samples.csv (true states, attitudes, the target's apparent direction) and the drawn
 // body vectors of summary.json's "truth", the payload points p = r + q (payload - com), the
 // lateral error |d - (d.s) s| and its worst over the window, independently of the simulator's

@@ -1,5 +1,5 @@
 // flight_config.json (sim/flight_config.hpp): the flight components' configuration as created,
-// untouched by any truth key (issue 29: "dispersing any truth key leaves it byte-identical").
+// untouched by any truth key: dispersing one leaves it byte-identical (docs/truth-and-knowledge.md).
 #include <gtest/gtest.h>
 
 #include <string>

@@ -52,7 +52,7 @@ TEST(SkyTruth, InterpolatedEphemerisMatchesTheSeries) {
 
 TEST(SkyTruth, ApparentSunAgreesWithTheFlightCode) {
   // Two implementations (ERFA's astrometry vs astro/apparent_sun.cpp) of the same definition
-  // over one day of a 500 km orbit: the issue's bound is 0.5"; they agree far better.
+  // over one day of a 500 km orbit: the required bound is 0.5"; they agree far better.
   visors::sim::SkyTruth sky;
   const GpsTime t0 = *GpsTime::from_calendar({2024, 10, 1, 0, 0, 0, 0}, TimeScale::kGps);
   const double n = std::sqrt(3.986004418e14 / std::pow(6878136.3, 3));
