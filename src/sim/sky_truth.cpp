@@ -59,7 +59,7 @@ SkyTruth::EarthEphemeris SkyTruth::earth(core::GpsTime t) {
 }
 
 astro::SunView SkyTruth::sun(core::GpsTime t, const core::StateVector& observer_gcrf) {
-  EarthEphemeris e = earth(t);
+  EarthEphemeris e = earth(t);  // eraApcs takes non-const arrays
   double pv[2][3];
   for (int i = 0; i < 3; ++i) {
     pv[0][i] = observer_gcrf.r[i];
@@ -68,19 +68,18 @@ astro::SunView SkyTruth::sun(core::GpsTime t, const core::StateVector& observer_
   eraASTROM astrom;
   const core::JulianDate jd = t.jd_tt();
   eraApcs(jd.jd1, jd.jd2, pv, e.barycentric_pv, e.heliocentric_p, &astrom);
-  // The Sun's barycentric position (= Earth's barycentric - heliocentric) at the emission time.
-  const auto sun_from_observer_au = [&](core::GpsTime emitted) {
-    const EarthEphemeris at = earth(emitted);
+  // The Sun's barycentric position (= Earth's barycentric - heliocentric) at `at`, from the observer.
+  const auto sun_from_observer_au = [&astrom](const EarthEphemeris& at) {
     Eigen::Vector3d d;
     for (int i = 0; i < 3; ++i) d[i] = at.barycentric_pv[0][i] - at.heliocentric_p[i] - astrom.eb[i];
     return d;
   };
   astro::SunView out;
-  const Eigen::Vector3d geometric = sun_from_observer_au(t);
+  const Eigen::Vector3d geometric = sun_from_observer_au(e);
   out.distance_m = geometric.norm() * kAuM;
   out.geometric_unit_gcrf = geometric.normalized();
   Eigen::Vector3d emitted = geometric;
-  for (int k = 0; k < 3; ++k) emitted = sun_from_observer_au(t - emitted.norm() * kAuM / core::kSpeedOfLight);
+  for (int k = 0; k < 3; ++k) emitted = sun_from_observer_au(earth(t - emitted.norm() * kAuM / core::kSpeedOfLight));
   double pnat[3] = {emitted.x() / emitted.norm(), emitted.y() / emitted.norm(), emitted.z() / emitted.norm()};
   double ppr[3];
   eraAb(pnat, astrom.v, astrom.em, astrom.bm1, ppr);
