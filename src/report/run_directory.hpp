@@ -36,6 +36,12 @@ inline constexpr std::array<std::string_view, 26> kTimeseriesColumns{
 /// The columns of observations.csv and events.csv, in order.
 inline constexpr std::array<std::string_view, 6> kObservationColumns{
     "index", "t_s", "lateral_error_m", "lateral_velocity_mps", "focus_error_m", "success"};
+/// The columns observations.csv carries after kObservationColumns (figures beside the score, which
+/// the report does not need): the worst angle over the window between each spacecraft's true
+/// payload line of sight (drawn mounting tilt, ADCS control error) and the target's apparent
+/// direction [arcsec].
+inline constexpr std::array<std::string_view, 2> kObservationPointingColumns{"payload_pointing_dsc_arcsec",
+                                                                            "payload_pointing_osc_arcsec"};
 inline constexpr std::array<std::string_view, 4> kEventColumns{"t_s", "spacecraft", "kind", "detail"};
 
 /// The columns of navigation.csv (each component's on-board navigation against the truth, one

@@ -32,6 +32,9 @@ struct AlignmentResult {
   /// Sun, x the local vertical (the DSC's radial direction) projected normal to z, y = z x x.
   Eigen::Vector2d lateral_detector_m = Eigen::Vector2d::Zero();
   double focus_signed_m = 0.0;  // at the worst focus sample, separation along z minus focal distance [m]
+  /// Worst angle over the window between each spacecraft's true payload line of sight and the
+  /// target's apparent direction (DSC, OSC) [rad]: the field of view, not part of the score.
+  Eigen::Vector2d payload_pointing_rad = Eigen::Vector2d::Zero();
   int samples = 0;
   [[nodiscard]] bool success(const AlignmentRequirements& req) const {
     return samples > 0 && lateral_error_m <= req.lateral_error_m && lateral_velocity_mps <= req.lateral_velocity_mps &&

@@ -257,6 +257,34 @@ core::Result<bool> read_geometry(const toml::table& root, CampaignScenario& s) {
   return true;
 }
 
+// [attitude]: the bus ADCS of both spacecraft, truth (sim/adcs_model.hpp): rate in deg/s, errors
+// in arcsec per body axis, correlation times in s.
+core::Result<bool> read_attitude(const toml::table& root, CampaignScenario& s) {
+  const toml::table* t = table_at(root, "attitude");
+  if (t == nullptr) return true;
+  const std::string sec = "attitude";
+  if (auto e = check_keys(*t, sec, {"slew_rate_deg_s", "pointing_sigma_arcsec", "pointing_tau_s", "jitter_sigma_arcsec",
+                                    "knowledge_sigma_arcsec", "knowledge_tau_s"})) {
+    return *e;
+  }
+  AdcsSettings& a = s.adcs;
+  constexpr double arcsec = core::kArcsecToRad;
+  VISORS_TRY(rate, number_at(*t, sec, "slew_rate_deg_s", a.slew_rate_radps / core::kDegToRad));
+  VISORS_TRY(pointing, vector3_at(*t, sec, "pointing_sigma_arcsec", Eigen::Vector3d(a.pointing_sigma_rad / arcsec)));
+  VISORS_TRY(pointing_tau, number_at(*t, sec, "pointing_tau_s", a.pointing_tau_s));
+  VISORS_TRY(jitter, vector3_at(*t, sec, "jitter_sigma_arcsec", Eigen::Vector3d(a.jitter_sigma_rad / arcsec)));
+  VISORS_TRY(knowledge, vector3_at(*t, sec, "knowledge_sigma_arcsec", Eigen::Vector3d(a.knowledge_sigma_rad / arcsec)));
+  VISORS_TRY(knowledge_tau, number_at(*t, sec, "knowledge_tau_s", a.knowledge_tau_s));
+  a.slew_rate_radps = rate * core::kDegToRad;
+  a.pointing_sigma_rad = pointing * arcsec;
+  a.pointing_tau_s = pointing_tau;
+  a.jitter_sigma_rad = jitter * arcsec;
+  a.knowledge_sigma_rad = knowledge * arcsec;
+  a.knowledge_tau_s = knowledge_tau;
+  if (auto ok = a.validate(); !ok) return Error{"attitude." + ok.error().field, ok.error().message};
+  return true;
+}
+
 core::Result<bool> read_spacecraft(const toml::table& root, const std::string& sec, SpacecraftSettings& v) {
   const toml::table* t = table_at(root, sec);
   if (t == nullptr) return true;
@@ -426,7 +454,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (!parsed.ok()) return parsed.error();
   const toml::table& root = parsed.value();
   if (auto e = check_keys(root, "", {"name", "seed", "time", "chief", "formation", "campaign", "navigation", "propulsion",
-                                     "dsc", "osc", "flight", "geometry", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
+                                     "dsc", "osc", "flight", "geometry", "attitude", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
     return *e;
   }
   CampaignScenario s = default_campaign();
@@ -436,7 +464,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   s.name = name;
   s.seed = static_cast<std::uint64_t>(seed);
   for (auto* reader : {&read_time, &read_chief, &read_campaign, &read_navigation, &read_nav_tunables, &read_propulsion,
-                       &read_geometry, &read_links_and_faults, &read_gnc}) {
+                       &read_geometry, &read_attitude, &read_links_and_faults, &read_gnc}) {
     if (auto ok = reader(root, s); !ok) return ok.error();
   }
   if (auto ok = read_spacecraft(root, "dsc", s.dsc); !ok) return ok.error();
@@ -486,6 +514,14 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += fmt::format("[geometry]\ncom_variation_sigma_m = {:.17g}\ncom_knowledge_error_m = {:.17g}\npayload_position_sigma_m = {:.17g}\npayload_pointing_sigma_arcsec = {:.17g}\nphase_center_knowledge_sigma_m = {:.17g}\n\n",
                      s.geometry.com_sigma_m, s.geometry.com_knowledge_error_m, s.geometry.payload_position_sigma_m,
                      s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad, s.geometry.phase_center_knowledge_sigma_m);
+  const AdcsSettings& a = s.adcs;
+  const auto arcsec3 = [](const Eigen::Vector3d& rad) {
+    const Eigen::Vector3d x = rad / core::kArcsecToRad;
+    return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", x.x(), x.y(), x.z());
+  };
+  out += fmt::format("[attitude]\nslew_rate_deg_s = {:.17g}\npointing_sigma_arcsec = {}\npointing_tau_s = {:.17g}\njitter_sigma_arcsec = {}\nknowledge_sigma_arcsec = {}\nknowledge_tau_s = {:.17g}\n\n",
+                     deg(a.slew_rate_radps), arcsec3(a.pointing_sigma_rad), a.pointing_tau_s, arcsec3(a.jitter_sigma_rad),
+                     arcsec3(a.knowledge_sigma_rad), a.knowledge_tau_s);
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
   out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\nleast_squares_burns_before_s = [{:.17g}]\n\n",
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,

@@ -16,6 +16,7 @@
 #include "core/status.hpp"
 #include "dynamics/force_model_config.hpp"
 #include "gnc/gnc_config.hpp"
+#include "sim/adcs_model.hpp"
 #include "sim/gnss_settings.hpp"
 #include "sim/propulsion.hpp"
 #include "sim/spacecraft_geometry.hpp"
@@ -128,6 +129,9 @@ struct CampaignScenario {
   /// Truth geometry errors of both spacecraft ([geometry]; the nominal points are not scenario
   /// keys): centre-of-mass variation and knowledge error, payload mounting and pointing.
   GeometrySettings geometry;
+  /// The bus ADCS of both spacecraft ([attitude], truth): its slew rate, control error and the
+  /// error of the attitude it reports to the flight software (sim/adcs_model.hpp).
+  AdcsSettings adcs;
   double crosslink_delay_s = 0.5;
   double crosslink_drop_probability = 0.0;
   dynamics::ForceModelConfig forces = dynamics::ForceModelConfig::truth();

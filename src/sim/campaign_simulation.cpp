@@ -220,12 +220,15 @@ core::Result<bool> CampaignSimulation::step() {
   return true;
 }
 
-// Truth attitude (zenith pointing, slews for observations towards the target's apparent
-// direction) and the attitude-dependent drag area.
+// Truth attitude: the commanded one (zenith pointing, slews for observations towards the target's
+// apparent direction) with the ADCS's control error; the attitude the ADCS reports, with its
+// determination error; the attitude-dependent drag area.
 void CampaignSimulation::update_attitude(core::GpsTime t) {
   for (SimulatedSpacecraft& v : vehicles_) {
     v.target_unit_gcrf = sky_.target_unit_gcrf(t, v.x_gcrf);
-    v.q_body_to_gcrf = v.attitude->body_to_gcrf(ts_, v.x_gcrf.r, v.x_gcrf.v, v.target_unit_gcrf);
+    v.adcs->step(ts_);
+    v.q_body_to_gcrf = v.adcs->true_attitude(v.attitude->body_to_gcrf(ts_, v.x_gcrf.r, v.x_gcrf.v, v.target_unit_gcrf));
+    v.q_reported_body_to_gcrf = v.adcs->reported_attitude(v.q_body_to_gcrf);
     v.truth.forces->set_drag_area(v.drag.projected_area_m2(air_velocity_body_unit(v.x_gcrf, v.q_body_to_gcrf)));
   }
 }
@@ -266,7 +269,7 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
       continue;
     }
     stepped[k] = true;
-    records.add(v, gnc::TimeAtTone{t, v.q_body_to_gcrf});
+    records.add(v, gnc::TimeAtTone{t, v.q_reported_body_to_gcrf});
     if (gps_) {
       if (in_window(scenario_.fault.gps_outage, gps_outage_victim_, k)) {
         v.receiver->reacquire_all();  // the receiver restarts when the outage ends
@@ -635,6 +638,12 @@ void CampaignSimulation::record_metrics() {
           add_alignment_sample(p.result, p_osc, osc.x_gcrf.v, p_dsc, dsc.x_gcrf.v, dsc.target_unit_gcrf, requirements_);
       recorder_->alignment_sample(p.result.index, ts_, dsc.x_gcrf, dsc.q_body_to_gcrf, osc.x_gcrf, osc.q_body_to_gcrf,
                                   dsc.target_unit_gcrf, sample);
+      for (std::size_t k = 0; k < 2; ++k) {
+        const SimulatedSpacecraft& v = vehicles_[k];
+        const Eigen::Vector3d los_gcrf = v.q_body_to_gcrf * v.geometry->payload_axis_body();
+        const double angle = std::atan2(los_gcrf.cross(v.target_unit_gcrf).norm(), los_gcrf.dot(v.target_unit_gcrf));
+        p.result.payload_pointing_rad(static_cast<Eigen::Index>(k)) = std::max(p.result.payload_pointing_rad(static_cast<Eigen::Index>(k)), angle);
+      }
     } else if (ts_ > p.end_s) {
       p.done = true;
       const bool ok = p.result.success(requirements_);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/constants.hpp"
 #include "report/run_directory.hpp"
 
 namespace visors::sim {
@@ -18,9 +19,9 @@ core::Result<core::files::OutputFile> open_file(const std::filesystem::path& pat
 }
 
 template <std::size_t N>
-void write_header(std::FILE* f, const std::array<std::string_view, N>& columns) {
+void write_header(std::FILE* f, const std::array<std::string_view, N>& columns, bool more = false) {
   for (std::size_t i = 0; i < N; ++i) std::fprintf(f, "%s%.*s", i ? "," : "", static_cast<int>(columns[i].size()), columns[i].data());
-  std::fputc('\n', f);
+  std::fputc(more ? ',' : '\n', f);
 }
 
 // CSV quoting of free text: doubled quotes inside double quotes.
@@ -59,7 +60,8 @@ core::Result<RunRecorder> RunRecorder::open(const std::filesystem::path& dir, co
   if (!samples.ok()) return samples.error();
   r.alignment_samples_ = std::move(samples).value();
   write_header(r.timeseries_.get(), report::kTimeseriesColumns);
-  write_header(r.observations_.get(), report::kObservationColumns);
+  write_header(r.observations_.get(), report::kObservationColumns, true);
+  write_header(r.observations_.get(), report::kObservationPointingColumns);
   write_header(r.events_.get(), report::kEventColumns);
   write_header(r.alignment_samples_.get(), report::kAlignmentSampleColumns);
   return r;
@@ -98,8 +100,10 @@ void RunRecorder::timeseries(const TimeseriesRow& row) {
 }
 
 void RunRecorder::observation(const AlignmentResult& result, bool success) {
-  std::fputs(fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", result.index, result.t_s, result.lateral_error_m,
-                         result.lateral_velocity_mps, result.focus_error_m, success ? 1 : 0)
+  const Eigen::Vector2d pointing_arcsec = result.payload_pointing_rad / core::kArcsecToRad;
+  std::fputs(fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{},{:.6g},{:.6g}\n", result.index, result.t_s, result.lateral_error_m,
+                         result.lateral_velocity_mps, result.focus_error_m, success ? 1 : 0, pointing_arcsec.x(),
+                         pointing_arcsec.y())
                  .c_str(),
              observations_.get());
 }

@@ -19,12 +19,16 @@ core::Result<bool> set_up_truth(SimulatedSpacecraft& v, const CampaignScenario& 
   auto propulsion = Propulsion::create(s.propulsion, sc.mass_kg, sc.propellant_kg, RandomStream(s.seed, prefix + ".propulsion"));
   if (!propulsion.ok()) return core::Error{prefix + "." + propulsion.error().field, propulsion.error().message};
   v.propulsion.emplace(std::move(propulsion).value());
+  // The commanded attitude slews at the ADCS's own rate ([attitude]), not the rate the flight
+  // software plans with (gnc.science.slew_rate_radps); settling is not part of the truth attitude.
   AttitudeSettings attitude_settings;
-  attitude_settings.slew_rate_radps = s.gnc.science.slew_rate_radps;
-  attitude_settings.settling_s = s.gnc.science.slew_settle_s;
+  attitude_settings.slew_rate_radps = s.adcs.slew_rate_radps;
   auto attitude = AttitudeProfile::create(attitude_settings);
-  if (!attitude.ok()) return core::Error{"gnc.science." + attitude.error().field, attitude.error().message};
+  if (!attitude.ok()) return core::Error{"attitude.slew_rate_deg_s", attitude.error().message};
   v.attitude.emplace(std::move(attitude).value());
+  auto adcs = AdcsModel::create(s.adcs, RandomStream(s.seed, prefix + ".adcs"));
+  if (!adcs.ok()) return core::Error{"attitude." + adcs.error().field, adcs.error().message};
+  v.adcs.emplace(std::move(adcs).value());
   RandomStream geometry_rng(s.seed, prefix + ".geometry");
   v.geometry.emplace(SpacecraftGeometry::draw(s.geometry, geometry_rng));
   return true;

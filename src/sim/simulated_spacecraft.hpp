@@ -1,6 +1,6 @@
 #pragma once
 // One spacecraft of the closed-loop campaign as the simulator holds it: its truth (state, force
-// model and propagator, attitude profile and drag area, propulsion with its errors, payload
+// model and propagator, commanded attitude, ADCS errors and drag area, propulsion with its errors, payload
 // geometry with its errors), its sensors (ideal navigation, the crosslink inbox), its GNC flight
 // component, and what the host application keeps for it (commands and telemetry to deliver at the
 // next step, FDIR persistence, executed delta-v).
@@ -14,6 +14,7 @@
 #include "core/state_vector.hpp"
 #include "core/status.hpp"
 #include "gnc/record_interface.hpp"
+#include "sim/adcs_model.hpp"
 #include "sim/attitude_profile.hpp"
 #include "sim/campaign_scenario.hpp"
 #include "sim/crosslink.hpp"
@@ -39,7 +40,10 @@ struct SimulatedSpacecraft {
   SpacecraftSettings true_spacecraft;
   /// The observation target's apparent direction from this spacecraft this step (sim/sky_truth.hpp).
   Eigen::Vector3d target_unit_gcrf = Eigen::Vector3d::UnitX();
-  std::optional<AttitudeProfile> attitude;
+  std::optional<AttitudeProfile> attitude;  // the commanded attitude (slews at the ADCS's rate)
+  std::optional<AdcsModel> adcs;            // its control error and the error of what it reports
+  /// The attitude the ADCS reports to the flight component this step (time at tone).
+  Eigen::Quaterniond q_reported_body_to_gcrf = Eigen::Quaterniond::Identity();
   DragArea drag = DragArea::visors_6u();
   std::optional<Propulsion> propulsion;
   std::optional<SpacecraftGeometry> geometry;

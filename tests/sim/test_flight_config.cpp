@@ -43,6 +43,9 @@ INSTANTIATE_TEST_SUITE_P(
                       "[gnss.receiver]\nantenna_body_m = [0.0, 0.01, 0.1]\n", "[gnss.lrf]\nsigma_m = 0.004\n",
                       "[propulsion]\nmagnitude_sigma = 0.2\n", "[propulsion]\nmagnitude_bias_sigma = 0.05\n",
                       "[propulsion]\ndirection_sigma_deg = 1.0\n", "[propulsion]\nisp_s = 40.0\n",
+                      "[attitude]\nslew_rate_deg_s = 1.0\n", "[attitude]\npointing_sigma_arcsec = [10.0, 10.0, 10.0]\n",
+                      "[attitude]\npointing_tau_s = 10.0\n", "[attitude]\njitter_sigma_arcsec = [1.0, 2.0, 3.0]\n",
+                      "[attitude]\nknowledge_sigma_arcsec = [20.0, 20.0, 20.0]\n", "[attitude]\nknowledge_tau_s = 5.0\n",
                       "[crosslink]\ndelay_s = 1.0\n", "[crosslink]\ndrop_probability = 0.1\n",
                       "[forces]\npreset = \"onboard\"\n"));
 
