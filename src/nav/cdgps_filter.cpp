@@ -660,6 +660,14 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
     }
   }
   report.fix_applied = true;
+  if (report.fix.outcome == FixOutcome::kFixed) {
+    // The full fix's integers in the original DD space (ils.solution().a, best candidate), in
+    // the order of the DD rows: dd_prns[1..].
+    const auto& integers = ils.solution().a;
+    for (Eigen::Index r = 0; r < dd.size(); ++r) {
+      report.dd_integer_cycles[static_cast<std::size_t>(r + 1)] = std::llround(integers(r, 0));
+    }
+  }
   if (s.hold && report.fix.outcome == FixOutcome::kFixed) {
     const Eigen::Index held = rows_to_hold(k, s.hold_variance_cycles2);
     report.held = held > 0 && fixer.apply(x, P, C.topRows(held), z_fixed.head(held), s.hold_variance_cycles2) ==

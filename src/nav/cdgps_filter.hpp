@@ -46,6 +46,7 @@
 // bad epoch refused with its reason in the report.
 
 #include <array>
+#include <cstdint>
 #include <memory>
 
 #include "core/earth_frames.hpp"
@@ -91,6 +92,11 @@ struct CdgpsEpochReport {
   int double_differences = 0;
   /// The satellites of this epoch's double differences: the reference, then the others.
   std::array<int, kGpsSlots> dd_prns{};
+  /// The fixed integer of each double difference, aligned with dd_prns (element 0, the reference's,
+  /// unused): the SD ambiguity (OSC minus DSC) of dd_prns[j] minus that of dd_prns[0], L1 [cycles],
+  /// j = 1..double_differences. Set when a full fix is applied (fix.outcome kFixed and
+  /// fix_applied), else 0: a partial fix constrains integer combinations, not single DDs.
+  std::array<std::int64_t, kGpsSlots> dd_integer_cycles{};
   AmbiguityFix fix{};
   bool fix_applied = false;    // the fixed solution is valid for this epoch (x_fixed())
   bool wrong_fix_refused = false;

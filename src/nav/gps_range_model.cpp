@@ -43,13 +43,17 @@ SatelliteAtTransmission satellite_at(core::GpsTime t, double offset, const gnss:
 
 }  // namespace
 
+Eigen::Vector3d phase_centre_lever_gcrf_m(const ReceiverEstimate& receiver, const AntennaGeometry& antenna) {
+  const Eigen::Vector3d lever_body = antenna.arp_body_m + antenna.pco_body_m + receiver.pco_error_body_m;
+  return antenna.body_to_gcrf * lever_body;
+}
+
 RangePrediction predict_range(core::GpsTime t, const ReceiverEstimate& receiver, const AntennaGeometry& antenna,
                               const gnss::BroadcastEphemeris& ephemeris, core::OnboardEarthFrame& frame) {
   RangePrediction out;
   const double dt_r = -receiver.clock_m / kC;  // t_r - t [s]
   out.reception_time = t + dt_r;
-  const Eigen::Vector3d lever_body = antenna.arp_body_m + antenna.pco_body_m + receiver.pco_error_body_m;
-  out.antenna_gcrf_m = receiver.r_gcrf_m + receiver.v_gcrf_mps * dt_r + antenna.body_to_gcrf * lever_body;
+  out.antenna_gcrf_m = receiver.r_gcrf_m + receiver.v_gcrf_mps * dt_r + phase_centre_lever_gcrf_m(receiver, antenna);
   const Eigen::Matrix3d itrf_to_gcrf = frame.gcrf_to_itrf_matrix(t).transpose();
 
   // The light-time iteration on the satellite's inertial motion about a first evaluation at the

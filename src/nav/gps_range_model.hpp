@@ -65,6 +65,11 @@ struct RangePrediction {
   double d_clock = 0.0;
 };
 
+/// The lever from the centre of mass to the antenna phase centre the estimate implies, GCRF:
+/// C_body->gcrf (arp + pco + p) [m]. The phase centre at the epoch t itself (the time tag) is
+/// r + this; predict_range moves it to the reception instant.
+Eigen::Vector3d phase_centre_lever_gcrf_m(const ReceiverEstimate& receiver, const AntennaGeometry& antenna);
+
 /// rho and its partials for the epoch t (time tag) from the receiver estimate, its antenna and
 /// the satellite's broadcast ephemeris; `frame` gives ITRF <-> GCRF at t. Allocation-free.
 RangePrediction predict_range(core::GpsTime t, const ReceiverEstimate& receiver, const AntennaGeometry& antenna,

@@ -85,7 +85,24 @@ struct RunOutcome {
   double nis_mean = 0.0;
   int detected_slips = 0;
   double los_error_rms_m = 0.0;  // relative position error along the line of sight, last 200 epochs
+  int integers_reported = 0;     // DD integers of the full fixes in the reports
+  int integers_wrong = 0;        // ... that differ from the simulation's
 };
+
+// The report's DD integers of a full fix against the simulation's track integers (the receivers'
+// phase offsets cancel in a double difference): the count checked and the count wrong.
+void check_reported_integers(const CdgpsEpochReport& r, const Simulation& sim, RunOutcome& out) {
+  const auto sd = [&sim](int prn) {
+    const auto i = static_cast<std::size_t>(prn);
+    return sim.rx[1].integers[i] - sim.rx[0].integers[i];
+  };
+  for (int j = 1; j <= r.double_differences; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const double expected = sd(r.dd_prns[k]) - sd(r.dd_prns[0]);
+    ++out.integers_reported;
+    out.integers_wrong += static_cast<double>(r.dd_integer_cycles[k]) == expected ? 0 : 1;
+  }
+}
 
 // A degraded run for the laser rangefinder: 5 cm phase noise, integer resolution off.
 struct Degraded {
@@ -177,6 +194,7 @@ RunOutcome simulate(int epochs, int slip_epoch = -1, const Impulse& impulse = {}
     const bool fixed = r.fix_applied && r.fix.outcome == FixOutcome::kFixed;
     if (fixed && out.first_fix < 0) out.first_fix = n;
     out.fixed_epochs += fixed ? 1 : 0;
+    if (fixed) check_reported_integers(r, sim, out);
     out.held_epochs += r.held ? 1 : 0;
     const NavVector& x = fixed ? filter.x_fixed() : filter.x();
     const Eigen::Vector3d rel = CdgpsFilter::centre_of_mass(x, Craft::kOsc).r - CdgpsFilter::centre_of_mass(x, Craft::kDsc).r;
@@ -217,6 +235,13 @@ TEST_F(CdgpsFilterRun, StaysFixedAfterTheFirstFix) { EXPECT_GE(result->fixed_epo
 TEST_F(CdgpsFilterRun, HoldsEachFixOnceNotEveryEpoch) {
   EXPECT_GT(result->held_epochs, 0);
   EXPECT_LT(result->held_epochs, result->fixed_epochs / 5);
+}
+
+// The report carries each full fix's DD integers (what `visors nav` writes to fixes_<craft>.csv),
+// and they are the simulation's.
+TEST_F(CdgpsFilterRun, ReportsTheIntegersOfEachFullFix) {
+  EXPECT_GE(result->integers_reported, 4 * result->fixed_epochs);
+  EXPECT_EQ(result->integers_wrong, 0);
 }
 
 // The remote clock is not measured by the local GRAPHIC: the SDCP leave it in the common part of
