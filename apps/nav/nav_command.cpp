@@ -176,12 +176,34 @@ std::optional<toml::table> read_settings_file(const std::string& path) {
   return std::move(table).value();
 }
 
+// The full fix's double-difference integers of this epoch (CdgpsEpochReport::dd_integer_cycles).
+void record_fixes(const nav::CdgpsEpochReport& report, double t_s, std::vector<FixedDoubleDifference>& out) {
+  if (!report.fix_applied || report.fix.outcome != nav::FixOutcome::kFixed) return;
+  for (int j = 1; j <= report.double_differences; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    out.push_back({t_s, report.dd_prns[0], report.dd_prns[k], report.dd_integer_cycles[k]});
+  }
+}
+
+// The run's epochs (truth.csv: one row per receiver time tag, recorded or in a data gap) up to
+// duration_s (0: all).
+std::vector<double> time_tags(const RunInputs& in, double duration_s) {
+  std::vector<double> out;
+  for (const auto& epoch : in.truth) {
+    const double t_s = static_cast<double>(epoch.first) / 1000.0;  // key_ms's inverse
+    if (duration_s > 0.0 && t_s > duration_s) break;
+    out.push_back(t_s);
+  }
+  return out;
+}
+
 // One filter over the run, driven by its own receiver's epochs.
 Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
   Replay out;
   out.local = local;
   out.name = local == Craft::kDsc ? "dsc" : "osc";
   out.latency_s = r.latency_s;
+  out.time_tags_s = time_tags(in, r.duration_s);
   nav::CdgpsFilter f = make_filter(in, local, r);
   core::OnboardEarthFrame frame(or_input_error(sim::uplinked_earth_orientation(in.scenario)));
   nav::ColdStart cold;
@@ -236,10 +258,17 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
     if (r.latency_s > 0.0) score_forecast(f, report, in, t_s, r.latency_s, e);
     e.step_us = step_us;
     e.laser = laser;
+    record_fixes(report, t_s, out.fixes);
     if (out.first_fix_s < 0.0 && std::string_view(e.status) == "fixed") out.first_fix_s = t_s - out.start_s;
     out.epochs.push_back(e);
   }
   return out;
+}
+
+// A state's six columns (GCRF): 0.1 um and 1 nm/s, so that differences of two states (the
+// relative errors of the file, written to 1 um) can be recomputed from them.
+void write_state(std::FILE* file, const core::StateVector& x) {
+  std::fprintf(file, ",%.7f,%.7f,%.7f,%.9f,%.9f,%.9f", x.r.x(), x.r.y(), x.r.z(), x.v.x(), x.v.y(), x.v.z());
 }
 
 void write_epochs(const Replay& r, const std::filesystem::path& dir) {
@@ -252,11 +281,18 @@ void write_epochs(const Replay& r, const std::filesystem::path& dir) {
                "detected_slips,antenna_nees,"
                "rel_antenna_sigma_r_m,rel_antenna_sigma_t_m,rel_antenna_sigma_n_m,nis_sum,nis_count,graphic_nis_sum,sdcp_nis_sum,sdcp_used,step_us,"
                "in_observation,in_slew,"
-               "payload_los_m,payload_lateral_m,laser\n");
+               "payload_los_m,payload_lateral_m,laser");
+  for (const char* craft : {"dsc", "osc"}) {
+    for (const char* point : {"com", "antenna"}) {
+      std::fprintf(file.get(), ",%s_%s_x_m,%s_%s_y_m,%s_%s_z_m,%s_%s_vx_mps,%s_%s_vy_mps,%s_%s_vz_mps", craft, point, craft,
+                   point, craft, point, craft, point, craft, point, craft, point);
+    }
+  }
+  std::fputc('\n', file.get());
   for (const EpochScore& e : r.epochs) {
     std::fprintf(file.get(),
                  "%.3f,%s,%d,%d,%d,%d,%d,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.8f,%.8f,%.8f,%.4f,%.6f,%.4f,%.4f,%d,"
-                 "%.4f,%.6f,%.6f,%.6f,%.4f,%d,%.4f,%.4f,%d,%.1f,%d,%d,%.6f,%.6f,%s\n",
+                 "%.4f,%.6f,%.6f,%.6f,%.4f,%d,%.4f,%.4f,%d,%.1f,%d,%d,%.6f,%.6f,%s",
                  e.t_s, e.status, e.wrong_fix ? 1 : 0, e.satellites, e.sdcp_rejected, e.graphic_used, e.graphic_rejected,
                  e.double_differences, e.relative_position_rtn_m(0),
                  e.relative_position_rtn_m(1), e.relative_position_rtn_m(2), e.relative_antenna_rtn_m(0),
@@ -265,14 +301,32 @@ void write_epochs(const Replay& r, const std::filesystem::path& dir) {
                  e.absolute_velocity_mps, e.clock_error_dsc_m, e.clock_error_osc_m, e.detected_slips, e.nees, e.antenna_sigma_rtn_m(0), e.antenna_sigma_rtn_m(1),
                  e.antenna_sigma_rtn_m(2), e.nis_sum, e.nis_count, e.graphic_nis_sum, e.sdcp_nis_sum, e.sdcp_used, e.step_us,
                  e.in_observation ? 1 : 0, e.in_slew ? 1 : 0, e.payload_los_m, e.payload_lateral_m, e.laser);
+    for (std::size_t k = 0; k < 2; ++k) {
+      write_state(file.get(), e.com_gcrf[k]);
+      write_state(file.get(), e.antenna_gcrf[k]);
+    }
+    std::fputc('\n', file.get());
+  }
+}
+
+// fixes_<craft>.csv: one row per double-difference integer of each full fix.
+void write_fixes(const Replay& r, const std::filesystem::path& dir) {
+  const auto path = dir / (std::string("fixes_") + r.name + ".csv");
+  auto file = core::files::open_output_file(path);
+  if (!file.get()) throw std::runtime_error(path.string() + ": cannot be written");
+  std::fprintf(file.get(), "t_s,signal,reference_prn,prn,integer_cycles\n");
+  for (const FixedDoubleDifference& f : r.fixes) {
+    std::fprintf(file.get(), "%.3f,L1C,%d,%d,%lld\n", f.t_s, f.reference_prn, f.prn, static_cast<long long>(f.integer_cycles));
   }
 }
 
 void print_window(const char* label, const Json& w) {
-  fmt::print("    {}: fix {:.2f} %, partial {:.2f} %, wrong-fix epochs {}; relative position {:.2f} mm RMS (worst {:.2f}), "
+  fmt::print("    {}: fix {:.2f} % of the epochs present, {:.2f} % of all {} time tags; partial {:.2f} %, wrong-fix epochs {}; "
+             "relative position {:.2f} mm RMS (worst {:.2f}), "
              "antennas {:.2f} mm RMS (worst {:.2f}, NEES {:.2f} of 3); relative velocity {:.1f} um/s RMS; absolute {:.2f} m, "
              "{:.2f} mm/s RMS\n",
-             label, 100.0 * w["fix_rate"].get<double>(), 100.0 * w["partial_rate"].get<double>(),
+             label, 100.0 * w["fix_rate"].get<double>(), 100.0 * w["fix_rate_all_epochs"].get<double>(),
+             w["time_tags"].get<std::size_t>(), 100.0 * w["partial_rate"].get<double>(),
              w["wrong_fix_epochs"].get<int>(), 1e3 * w["relative_position_rms_m"].get<double>(),
              1e3 * w["relative_position_worst_m"].get<double>(), 1e3 * w["relative_antenna_rms_m"].get<double>(),
              1e3 * w["relative_antenna_worst_m"].get<double>(), w["antenna_nees_mean"].get<double>(),
@@ -340,6 +394,7 @@ int run_nav_command(const NavOptions& options) {
       replays.push_back(replay(inputs.value(), local, settings));
       const Json s = summarise(replays.back());
       write_epochs(replays.back(), options.out);
+      write_fixes(replays.back(), options.out);
       print_overview(s);
       summary["filters"].push_back(s);
     }

@@ -7,7 +7,10 @@
 // velocity (OSC minus DSC, RTN of the DSC), absolute position and velocity, fix rate, time to
 // first fix, wrong fixes (a full fix whose double-difference integers differ from the truth),
 // NEES/NIS, and during observations the payload points' relative error along the line of sight.
-// Writes DIR/nav_<craft>.csv (one row per epoch), DIR/summary.json and DIR/nav.html.
+// Writes DIR/nav_<craft>.csv (one row per epoch: the scores, and the scored solution's centres of
+// mass and antenna phase centres, GCRF), DIR/fixes_<craft>.csv (one row per double-difference
+// integer of each full fix), DIR/summary.json (fix rates over the epochs present and over every
+// receiver time tag) and DIR/nav.html; formats in docs/run-directory.md.
 
 #include <string>
 

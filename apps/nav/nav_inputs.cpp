@@ -193,6 +193,23 @@ nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf) {
   return a;
 }
 
+Eigen::Vector3d known_angular_velocity_gcrf(const RunInputs& in, double t_s, std::size_t craft) {
+  const double step_s = in.scenario.step_s;
+  const auto attitude_at = [&](double at_s) -> const Eigen::Quaterniond* {
+    const auto it = in.truth.find(key_ms(at_s));
+    return it == in.truth.end() ? nullptr : &it->second[craft].body_to_gcrf;
+  };
+  const Eigen::Quaterniond* now = attitude_at(t_s);
+  const Eigen::Quaterniond* before = attitude_at(t_s - step_s);
+  const Eigen::Quaterniond* after = attitude_at(t_s + step_s);
+  if (before == nullptr) before = now;
+  if (after == nullptr) after = now;
+  if (before == nullptr || after == nullptr || before == after) return Eigen::Vector3d::Zero();
+  const double interval_s = (before == now || after == now) ? step_s : 2.0 * step_s;
+  const Eigen::AngleAxisd turn(*after * before->conjugate());  // about GCRF axes
+  return turn.angle() / interval_s * turn.axis();
+}
+
 nav::LaserRangeGeometry laser_geometry(const Eigen::Quaterniond& dsc_body_to_gcrf, const Eigen::Quaterniond& osc_body_to_gcrf) {
   const sim::GeometrySettings nominal;
   nav::LaserRangeGeometry g;

@@ -88,6 +88,14 @@ inline long long key_ms(double t_s) { return std::llround(t_s * 1000.0); }
 /// the flight software's calibrated values (gnc::OnboardNavigationSettings), not the truth's.
 nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf);
 
+/// The angular velocity of `craft`'s body (0: DSC, 1: OSC), GCRF [rad/s], at t_s [s after the
+/// scenario start], from the attitudes the spacecraft know at the neighbouring epochs (truth.csv's
+/// quaternions, one scenario step_s before and after): the rotation between them over their
+/// interval, as gnss-sim defines the rate (its +-0.5 s there); one-sided at the ends of the run,
+/// zero when neither neighbour is known. At a slew's start or end it is the mean rate over the
+/// interval.
+Eigen::Vector3d known_angular_velocity_gcrf(const RunInputs& in, double t_s, std::size_t craft);
+
 /// The laser range's end points as the spacecraft know them: the nominal payload reference points
 /// (sim/spacecraft_geometry.hpp: the OSC's photon sieve, the DSC's detector) from the nominal
 /// centres of mass, and the attitudes.

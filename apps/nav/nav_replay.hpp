@@ -2,15 +2,25 @@
 // The per-epoch scores of one filter's replay (`visors nav`), shared by its outputs: the CSV and
 // summary (nav_command.cpp) and the HTML page (nav_page.cpp).
 
+#include <array>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "core/state_vector.hpp"
 #include "nav/navigation_state.hpp"
 
 namespace visors::nav_app {
+
+/// A state not known (NaN): written as such rather than as a plausible zero.
+inline core::StateVector nan_state() {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {Eigen::Vector3d::Constant(nan), Eigen::Vector3d::Constant(nan)};
+}
 
 // Per-epoch score against the truth.
 struct EpochScore {
@@ -48,6 +58,19 @@ struct EpochScore {
   // epoch's own errors when there is no delay.
   Eigen::Vector3d forecast_antenna_rtn_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d forecast_velocity_rtn_mps = Eigen::Vector3d::Zero();
+  // The scored solution's states of both spacecraft (DSC, OSC), GCRF, at the epoch's time tag:
+  // the centres of mass, and the antenna phase centres it implies (nav_score.hpp
+  // estimated_antenna). NaN when the run has no attitude at the epoch.
+  std::array<core::StateVector, 2> com_gcrf = {nan_state(), nan_state()};
+  std::array<core::StateVector, 2> antenna_gcrf = {nan_state(), nan_state()};
+};
+
+/// One double-difference integer of a full fix (fixes_<craft>.csv): the SD ambiguity (OSC minus
+/// DSC) of `prn` minus that of `reference_prn`, L1 [cycles], at t_s [s after the scenario start].
+struct FixedDoubleDifference {
+  double t_s = 0.0;
+  int reference_prn = 0, prn = 0;
+  std::int64_t integer_cycles = 0;
 };
 
 struct Replay {
@@ -58,6 +81,10 @@ struct Replay {
   double start_s = -1.0;      // the filter's first epoch [s after the scenario start]
   std::vector<double> impulse_t_s;  // commanded impulses applied [s after the scenario start]
   double latency_s = 0.0;           // the crosslink delay rounded up to whole epochs [s]
+  std::vector<FixedDoubleDifference> fixes;  // of every full fix, in time order
+  // The receiver's time tags over the replay (truth.csv's epochs up to its end, --duration): an
+  // epoch missing from the receiver's file (a data gap) is one of them, counted as not fixed.
+  std::vector<double> time_tags_s;
 };
 
 /// The self-contained HTML page (inline SVG) of the replays: per filter, the relative position

@@ -7,6 +7,8 @@
 
 #include "core/rtn_frame.hpp"
 #include "nav/fix_truth.hpp"
+#include "nav/gps_measurement_model.hpp"
+#include "nav/gps_range_model.hpp"
 
 namespace visors::nav_app {
 namespace {
@@ -61,7 +63,25 @@ void score_payload(const Eigen::Vector3d& relative_com_error_gcrf, const std::ar
   e.payload_lateral_m = (error - error.dot(los) * los).norm();
 }
 
+// Both spacecraft's estimated centres of mass and antennas (EpochScore), in the attitudes known
+// at t_s.
+void estimate_states(const nav::NavVector& x, const RunInputs& in, double t_s, const std::array<CraftTruth, 2>& known,
+                     EpochScore& e) {
+  for (const Craft craft : {Craft::kDsc, Craft::kOsc}) {
+    const auto k = static_cast<std::size_t>(craft);
+    e.com_gcrf[k] = nav::CdgpsFilter::centre_of_mass(x, craft);
+    e.antenna_gcrf[k] = estimated_antenna(x, craft, known[k].body_to_gcrf, known_angular_velocity_gcrf(in, t_s, k));
+  }
+}
+
 }  // namespace
+
+core::StateVector estimated_antenna(const nav::NavVector& x, Craft craft, const Eigen::Quaterniond& body_to_gcrf,
+                                    const Eigen::Vector3d& omega_gcrf_radps) {
+  const nav::ReceiverEstimate estimate = nav::receiver_estimate(x, craft);
+  const Eigen::Vector3d lever_gcrf_m = nav::phase_centre_lever_gcrf_m(estimate, antenna_geometry(body_to_gcrf));
+  return {estimate.r_gcrf_m + lever_gcrf_m, estimate.v_gcrf_mps + omega_gcrf_radps.cross(lever_gcrf_m)};
+}
 
 RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, double t_s) {
   RelativeErrors out;
@@ -115,6 +135,7 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   e.nees = e.relative_antenna_rtn_m.dot(S_rtn.ldlt().solve(e.relative_antenna_rtn_m));
   e.antenna_sigma_rtn_m = S_rtn.diagonal().cwiseSqrt();
   const std::array<CraftTruth, 2>& truth = in.truth.find(key_ms(t_s))->second;
+  estimate_states(x, in, t_s, truth, e);  // the attitudes known are the truth file's (nav_inputs.hpp)
   const std::size_t own = local == Craft::kDsc ? 0 : 1;
   const core::StateVector estimate = nav::CdgpsFilter::centre_of_mass(x, local);
   e.absolute_position_m = (estimate.r - truth[own].x_gcrf.r).norm();
@@ -163,6 +184,7 @@ struct WindowStats {
   double worst = 0.0, worst_antenna = 0.0;
   double worst_outside_slews = 0.0, worst_antenna_outside_slews = 0.0;
   int fixed = 0, partial = 0, wrong = 0;
+  std::size_t time_tags = 0;  // the receiver's time tags in the window, recorded or not
 
   void add(const EpochScore& e) {
     rel_pos.push_back(e.relative_position_rtn_m.norm());
@@ -188,6 +210,8 @@ struct WindowStats {
     const double n = static_cast<double>(rel_pos.size());
     return Json{{"epochs", rel_pos.size()},
                 {"fix_rate", n > 0 ? fixed / n : 0.0},
+                {"time_tags", time_tags},
+                {"fix_rate_all_epochs", time_tags > 0 ? fixed / static_cast<double>(time_tags) : 0.0},
                 {"partial_rate", n > 0 ? partial / n : 0.0},
                 {"wrong_fix_epochs", wrong},
                 {"relative_position_rms_m", rms(rel_pos)},
@@ -232,6 +256,17 @@ struct ObservationStats {
 
 constexpr double kConvergenceS = 300.0;  // the "converged" window starts this long after the first fix [s]
 
+// The receiver's time tags from from_s after the cold start on, as the windows take their epochs
+// (the cold start's own epoch, which the filter starts from, excluded), whether the receiver
+// recorded them or not. 1 us of slack: the tags are truth.csv's, the epochs' times the RINEX's.
+std::size_t count_time_tags(const Replay& r, double from_s) {
+  if (r.start_s < 0.0) return 0;
+  constexpr double kSlackS = 1e-6;
+  return static_cast<std::size_t>(std::count_if(r.time_tags_s.begin(), r.time_tags_s.end(), [&](double t_s) {
+    return t_s > r.start_s + kSlackS && t_s - r.start_s >= from_s - kSlackS;
+  }));
+}
+
 }  // namespace
 
 // The figures of the acceptance over the epochs after the first fix, and over those from
@@ -259,6 +294,8 @@ Json summarise(const Replay& r) {
     after_fix.add(e);
     if (e.t_s - r.start_s >= window_start_s + kConvergenceS) converged.add(e);
   }
+  after_fix.time_tags = count_time_tags(r, window_start_s);
+  converged.time_tags = count_time_tags(r, window_start_s + kConvergenceS);
   return Json{{"filter", r.name},
               {"epochs", r.epochs.size()},
               {"start_s", r.start_s},

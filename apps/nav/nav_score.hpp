@@ -24,6 +24,14 @@ struct RelativeErrors {
 };
 RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, double t_s);
 
+/// The antenna phase centre a solution x implies for `craft`, GCRF, at the epoch's time tag: its
+/// centre of mass plus the lever the flight software knows (antenna_geometry: calibrated antenna
+/// reference point and phase-centre offset, plus the estimated phase-centre error p) in the known
+/// attitude, the lever turning with it: r + C l, v + omega x C l (the filter's own model,
+/// nav/gps_range_model.hpp phase_centre_lever_gcrf_m).
+core::StateVector estimated_antenna(const nav::NavVector& x, nav::Craft craft, const Eigen::Quaterniond& body_to_gcrf,
+                                    const Eigen::Vector3d& omega_gcrf_radps);
+
 /// The epoch's errors of the filter's solution (the fixed one when the report applied a fix) at
 /// t_s [s after the scenario start], the filter running on `local`.
 EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& report, const RunInputs& in, double t_s,

@@ -89,6 +89,16 @@ TEST_F(NavReplay, RelativeAntennaPositionBelowThreeMillimetres) {
   for (int k = 0; k < 2; ++k) EXPECT_LT(filter(k)["after_first_fix"]["relative_antenna_rms_m"].get<double>(), 0.003) << k;
 }
 
+// Without data gaps every receiver time tag after the first fix is an epoch of the file: the fix
+// rate over all epochs is the fix rate over those present.
+TEST_F(NavReplay, WithoutDataGapsTheFixRateOverAllEpochsIsTheFixRate) {
+  for (int k = 0; k < 2; ++k) {
+    const nlohmann::json& w = filter(k)["after_first_fix"];
+    EXPECT_EQ(w["time_tags"].get<int>(), w["epochs"].get<int>()) << k;
+    EXPECT_DOUBLE_EQ(w["fix_rate_all_epochs"].get<double>(), w["fix_rate"].get<double>()) << k;
+  }
+}
+
 // One row per filtered epoch (600 s at 1 Hz after a 10 s cold start) plus the header.
 TEST_F(NavReplay, WritesOneRowPerEpoch) {
   std::istringstream csv(file_text(dir->path() / "nav" / "nav_dsc.csv"));
