@@ -80,6 +80,7 @@ NavigationSample NavigationScore::score(gnc::Spacecraft who, const gnc::OnboardN
   const auto& solution = navigation.last_solution();
   Accumulator& a = stats_[index_of(who)];
   if (solution && a.first_solution_s < 0.0) a.first_solution_s = t_s;  // the cold start
+  if (a.first_solution_s >= 0.0 && t_s > a.first_solution_s) ++a.time_tags;
   if (solution) count_epoch(a, navigation, t_s);
   if (!solution || !navigation.valid()) {
     if (solution) ++a.steps_invalid;
@@ -142,6 +143,8 @@ nlohmann::json NavigationScore::summary() const {
                            {"relative_antenna_worst_m", a.antenna_outside_worst}}},
         {"epochs_processed", a.epochs},
         {"fix_rate", static_cast<double>(a.fixed) / epochs},
+        {"receiver_time_tags", a.time_tags},
+        {"fix_rate_all_epochs", static_cast<double>(a.fixed) / static_cast<double>(std::max<std::int64_t>(a.time_tags, 1))},
         {"fix_rate_after_first_fix",
          a.first_fix_s >= 0.0 ? static_cast<double>(a.fixed) / static_cast<double>(a.epochs - a.epochs_before_first_fix) : 0.0},
         {"wrong_fix_epochs", a.wrong},

@@ -22,7 +22,10 @@
 // differs from the truth's (the receivers' integer ambiguities and phase offsets of that epoch)
 // by more than half a cycle; each processed epoch is scored once. fix_rate counts every processed
 // epoch, fix_rate_after_first_fix those from the first fixed one on (the float time after the cold
-// start is time_to_first_fix_s).
+// start is time_to_first_fix_s). fix_rate_all_epochs counts every receiver time tag after the cold
+// start (receiver_time_tags): the receiver measures at every step (CampaignSimulation), so these
+// are the steps after it, and an epoch the filter never processed (a data gap, a GPS outage, the
+// bus in safe mode, a peer epoch still awaited at the end) counts as not fixed.
 
 #include <array>
 #include <cstdint>
@@ -87,6 +90,7 @@ class NavigationScore {
     double antenna_worst = 0.0, antenna_outside_worst = 0.0;
     std::int64_t epochs = 0, fixed = 0, wrong = 0;  // processed epochs
     std::int64_t epochs_before_first_fix = 0;      // fix_rate_after_first_fix counts from the first fix
+    std::int64_t time_tags = 0;                    // steps after the cold start (fix_rate_all_epochs)
     bool have_scored = false;
     core::GpsTime last_scored;
     double first_solution_s = -1.0, first_fix_s = -1.0;

@@ -65,6 +65,15 @@ TEST_F(FaultScenario, GpsOutageOfTheActiveSpacecraftSwitchesRoles) {
   EXPECT_NE(r.events.find("670,sim,fdir,\"osc GNC incapable: role switch\""), std::string::npos) << r.events;
   expect_safe(r);
   EXPECT_EQ(r.summary["final_mode"], "standby");
+  // The OSC's 600 s without a receiver epoch count as not fixed in the fix rate over all epochs;
+  // the DSC's receiver measured throughout (alone then: the OSC sent nothing).
+  const auto& osc = r.summary["navigation"]["osc"];
+  EXPECT_NEAR(osc["receiver_time_tags"].get<double>() - osc["epochs_processed"].get<double>(), 600.0, 2.0);
+  EXPECT_NEAR(osc["fix_rate_all_epochs"].get<double>(),
+              osc["fix_rate"].get<double>() * osc["epochs_processed"].get<double>() / osc["receiver_time_tags"].get<double>(), 1e-12);
+  EXPECT_LT(osc["fix_rate_all_epochs"].get<double>(), osc["fix_rate"].get<double>() - 0.2);
+  const auto& dsc = r.summary["navigation"]["dsc"];
+  EXPECT_NEAR(dsc["receiver_time_tags"].get<double>(), dsc["epochs_processed"].get<double>(), 1.0);
 }
 
 // Both filters go on alone and fix again afterwards; nobody is declared incapable.
