@@ -285,6 +285,22 @@ core::Result<bool> read_attitude(const toml::table& root, CampaignScenario& s) {
   return true;
 }
 
+// [clock]: the host computers' time at tone, truth (sim/host_clock.hpp): PPS error in ns,
+// oscillator frequency error in ppm.
+core::Result<bool> read_clock(const toml::table& root, CampaignScenario& s) {
+  const toml::table* t = table_at(root, "clock");
+  if (t == nullptr) return true;
+  const std::string sec = "clock";
+  if (auto e = check_keys(*t, sec, {"pps_sigma_ns", "oscillator_sigma_ppm"})) return *e;
+  HostClockSettings& c = s.host_clock;
+  VISORS_TRY(pps, number_at(*t, sec, "pps_sigma_ns", c.pps_sigma_s * 1e9));
+  VISORS_TRY(oscillator, number_at(*t, sec, "oscillator_sigma_ppm", c.oscillator_sigma * 1e6));
+  c.pps_sigma_s = pps * 1e-9;
+  c.oscillator_sigma = oscillator * 1e-6;
+  if (auto ok = c.validate(); !ok) return Error{"clock." + ok.error().field, ok.error().message};
+  return true;
+}
+
 core::Result<bool> read_spacecraft(const toml::table& root, const std::string& sec, SpacecraftSettings& v) {
   const toml::table* t = table_at(root, sec);
   if (t == nullptr) return true;
@@ -454,7 +470,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   if (!parsed.ok()) return parsed.error();
   const toml::table& root = parsed.value();
   if (auto e = check_keys(root, "", {"name", "seed", "time", "chief", "formation", "campaign", "navigation", "propulsion",
-                                     "dsc", "osc", "flight", "geometry", "attitude", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
+                                     "dsc", "osc", "flight", "geometry", "attitude", "clock", "crosslink", "forces", "gnc", "fault", "gnss", "nav"})) {
     return *e;
   }
   CampaignScenario s = default_campaign();
@@ -464,7 +480,7 @@ core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   s.name = name;
   s.seed = static_cast<std::uint64_t>(seed);
   for (auto* reader : {&read_time, &read_chief, &read_campaign, &read_navigation, &read_nav_tunables, &read_propulsion,
-                       &read_geometry, &read_attitude, &read_links_and_faults, &read_gnc}) {
+                       &read_geometry, &read_attitude, &read_clock, &read_links_and_faults, &read_gnc}) {
     if (auto ok = reader(root, s); !ok) return ok.error();
   }
   if (auto ok = read_spacecraft(root, "dsc", s.dsc); !ok) return ok.error();
@@ -522,6 +538,8 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += fmt::format("[attitude]\nslew_rate_deg_s = {:.17g}\npointing_sigma_arcsec = {}\npointing_tau_s = {:.17g}\njitter_sigma_arcsec = {}\nknowledge_sigma_arcsec = {}\nknowledge_tau_s = {:.17g}\n\n",
                      deg(a.slew_rate_radps), arcsec3(a.pointing_sigma_rad), a.pointing_tau_s, arcsec3(a.jitter_sigma_rad),
                      arcsec3(a.knowledge_sigma_rad), a.knowledge_tau_s);
+  out += fmt::format("[clock]\npps_sigma_ns = {:.17g}\noscillator_sigma_ppm = {:.17g}\n\n", s.host_clock.pps_sigma_s * 1e9,
+                     s.host_clock.oscillator_sigma * 1e6);
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
   out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\nleast_squares_burns_before_s = [{:.17g}]\n\n",
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,

@@ -18,6 +18,7 @@
 #include "gnc/gnc_config.hpp"
 #include "sim/adcs_model.hpp"
 #include "sim/gnss_settings.hpp"
+#include "sim/host_clock.hpp"
 #include "sim/propulsion.hpp"
 #include "sim/spacecraft_geometry.hpp"
 
@@ -132,6 +133,9 @@ struct CampaignScenario {
   /// The bus ADCS of both spacecraft ([attitude], truth): its slew rate, control error and the
   /// error of the attitude it reports to the flight software (sim/adcs_model.hpp).
   AdcsSettings adcs;
+  /// The host computers' time at tone ([clock], truth): the PPS error and the oscillator that
+  /// keeps the tone without a receiver solution (sim/host_clock.hpp).
+  HostClockSettings host_clock;
   double crosslink_delay_s = 0.5;
   double crosslink_drop_probability = 0.0;
   dynamics::ForceModelConfig forces = dynamics::ForceModelConfig::truth();

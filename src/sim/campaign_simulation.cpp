@@ -32,6 +32,7 @@ using gnc::Spacecraft;
 
 // The host switches roles after the active spacecraft has reported GNC incapable this long [s].
 constexpr double kRoleSwitchAfter_s = 60.0;
+constexpr int kSolutionSatellites = 4;  // a receiver's position and time solution needs four
 
 // Truth relative geometry (every step: the minimum separations): RTN position and inertial
 // velocity difference in RTN axes, RN and 3D separations.
@@ -270,11 +271,13 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
     }
     stepped[k] = true;
     records.add(v, gnc::TimeAtTone{t, v.q_reported_body_to_gcrf});
+    bool solution = !gps_;  // ideal navigation: the receiver is not simulated, its PPS is
     if (gps_) {
       if (in_window(scenario_.fault.gps_outage, gps_outage_victim_, k)) {
         v.receiver->reacquire_all();  // the receiver restarts when the outage ends
       } else if (const auto gps = measure_gps(v, frame, t)) {
         records.add(v, *gps);
+        solution = gps->epoch.channel_count >= kSolutionSatellites;
       }
       if (v.id == Spacecraft::kOsc) {
         if (const auto range = measure_range(t)) records.add(v, *range);
@@ -282,6 +285,7 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
     } else {
       records.add(v, v.navigation->solve(t, dsc_gcrf, osc_gcrf, k_ == 0 ? 0.0 : scenario_.step_s));
     }
+    v.clock->tone(ts_, solution);
     for (const auto& delivered : v.inbox->receive(ts_)) records.forward(delivered);
     if (v.command) records.add(v, *v.command);
     if (v.telemetry) records.add(v, *v.telemetry);
@@ -485,7 +489,10 @@ void CampaignSimulation::execute_maneuver(SimulatedSpacecraft& v, core::GpsTime 
   }
   auto executed = v.propulsion->execute(ts_, v.out.maneuver->dv_body_mps);
   if (executed.ok()) {
-    v.x_gcrf.v += v.q_body_to_gcrf * executed->dv_executed_body_mps;
+    // Executed at the tone's true instant, offset_s after t (sim/host_clock.hpp).
+    const Eigen::Vector3d dv_gcrf = v.q_body_to_gcrf * executed->dv_executed_body_mps;
+    v.x_gcrf.v += dv_gcrf;
+    v.x_gcrf.r -= v.clock->offset_s() * dv_gcrf;
     const double l1 = thruster_l1_norm(executed->dv_executed_body_mps);
     v.dv_by_mode_mps[static_cast<std::size_t>(mode)] += l1;
     v.dv_total_mps += l1;
@@ -718,7 +725,9 @@ nlohmann::json CampaignSimulation::truth_summary() const {
                      {"cd", v.true_spacecraft.cd},
                      {"cr", v.true_spacecraft.cr},
                      {"isp_s", v.propulsion->isp_s()},
-                     {"nozzle_bias", v.propulsion->nozzle_bias()}};
+                     {"nozzle_bias", v.propulsion->nozzle_bias()},
+                     {"clock_frequency_error", v.clock->frequency_error()},
+                     {"clock_max_abs_offset_s", v.clock->max_abs_offset_s()}};
     if (v.receiver) t["phase_center_body_m"] = vector(v.receiver->phase_center_body_m());
     out[std::string(v.name)] = t;
   }

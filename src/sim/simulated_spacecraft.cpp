@@ -29,6 +29,9 @@ core::Result<bool> set_up_truth(SimulatedSpacecraft& v, const CampaignScenario& 
   auto adcs = AdcsModel::create(s.adcs, RandomStream(s.seed, prefix + ".adcs"));
   if (!adcs.ok()) return core::Error{"attitude." + adcs.error().field, adcs.error().message};
   v.adcs.emplace(std::move(adcs).value());
+  auto clock = HostClock::create(s.host_clock, RandomStream(s.seed, prefix + ".clock"));
+  if (!clock.ok()) return core::Error{"clock." + clock.error().field, clock.error().message};
+  v.clock.emplace(std::move(clock).value());
   RandomStream geometry_rng(s.seed, prefix + ".geometry");
   v.geometry.emplace(SpacecraftGeometry::draw(s.geometry, geometry_rng));
   return true;

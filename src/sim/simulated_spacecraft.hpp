@@ -22,6 +22,7 @@
 #include "gnss/gps_constants.hpp"
 #include "sim/gps_receiver.hpp"
 #include "sim/gps_world.hpp"
+#include "sim/host_clock.hpp"
 #include "sim/ideal_navigation.hpp"
 #include "sim/propulsion.hpp"
 #include "sim/spacecraft_geometry.hpp"
@@ -44,6 +45,7 @@ struct SimulatedSpacecraft {
   std::optional<AdcsModel> adcs;            // its control error and the error of what it reports
   /// The attitude the ADCS reports to the flight component this step (time at tone).
   Eigen::Quaterniond q_reported_body_to_gcrf = Eigen::Quaterniond::Identity();
+  std::optional<HostClock> clock;  // when its computer's time at tone really happens
   DragArea drag = DragArea::visors_6u();
   std::optional<Propulsion> propulsion;
   std::optional<SpacecraftGeometry> geometry;

@@ -46,6 +46,7 @@ INSTANTIATE_TEST_SUITE_P(
                       "[attitude]\nslew_rate_deg_s = 1.0\n", "[attitude]\npointing_sigma_arcsec = [10.0, 10.0, 10.0]\n",
                       "[attitude]\npointing_tau_s = 10.0\n", "[attitude]\njitter_sigma_arcsec = [1.0, 2.0, 3.0]\n",
                       "[attitude]\nknowledge_sigma_arcsec = [20.0, 20.0, 20.0]\n", "[attitude]\nknowledge_tau_s = 5.0\n",
+                      "[clock]\npps_sigma_ns = 100\n", "[clock]\noscillator_sigma_ppm = 50\n",
                       "[crosslink]\ndelay_s = 1.0\n", "[crosslink]\ndrop_probability = 0.1\n",
                       "[forces]\npreset = \"onboard\"\n"));
 
