@@ -1,19 +1,21 @@
 #pragma once
-// The closed-loop mission simulation of `visors run`: the truth world (both spacecraft under the
-// truth force model, attitude profile and attitude-dependent drag area, propulsion with its
-// errors, payload geometry with its errors), ideal navigation, a delayed crosslink, the host
-// application emulator (channel routing, the ground timeline, FDIR responses) and one GNC
-// flight component per spacecraft, stepped together at the 1 Hz channel rate.
+// The closed-loop mission simulation of `visors run`: four parts stepped together at the 1 Hz
+// channel rate, each in its own file, the truth and the flight software meeting only through
+// messages:
+//   - the truth world (sim/truth_world.hpp): both spacecraft under the truth force model, their
+//     attitude with the bus ADCS's errors and drag area, propulsion with its errors, geometry;
+//   - the sensors (sim/sensors.hpp): GPS receivers in the true pose, ephemeris decoding, the
+//     computers' time at tone, the rangefinder, ideal navigation;
+//   - the host application (sim/host_application.hpp): one GNC flight component per spacecraft
+//     behind its binary channels, the ground timeline, the crosslink, the fault windows and the
+//     host's FDIR policy table;
+//   - the run metrics (sim/run_metrics.hpp): alignment, separations, delta-v, navigation score.
 //
-// Host application (mission paper, FDIR): ground commands follow the scenario timeline
-// (to_standby at t0, start_science after standby_s); when the active spacecraft reports a
-// passive-safety violation the host commands it to escape; when the active spacecraft reports
-// GNC incapable for a minute, the host switches roles (the other spacecraft becomes active).
-//
-// CampaignSimulation is the object; one step() runs the phases in this order: truth attitude and
-// drag area, ground timeline, sensors and flight components, then per spacecraft the host's
-// routing and actuators and its FDIR, injected faults, metrics, end-of-campaign test, truth
-// propagation. run_campaign() drives it and writes the run directory.
+// One step() runs the phases in this order: truth attitude and drag area, ground timeline, fault
+// windows, sensors and flight components, navigation score, then per spacecraft the host's
+// routing (crosslink, observation windows to the truth attitude, impulses to the truth
+// propulsion) and its FDIR, injected faults, metrics, end-of-campaign test, truth propagation.
+// run_campaign() drives it and writes the run directory.
 
 #include <array>
 #include <cstdint>
@@ -26,15 +28,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/status.hpp"
-#include "sim/alignment_metrics.hpp"
 #include "sim/campaign_scenario.hpp"
 #include "sim/gps_world.hpp"
+#include "sim/host_application.hpp"
 #include "sim/host_records.hpp"
-#include "sim/navigation_score.hpp"
-#include "sim/paired_worker.hpp"
+#include "sim/run_metrics.hpp"
 #include "sim/run_recorder.hpp"
-#include "sim/simulated_spacecraft.hpp"
-#include "sim/sky_truth.hpp"
+#include "sim/sensors.hpp"
+#include "sim/truth_world.hpp"
 
 namespace visors::sim {
 
@@ -79,76 +80,34 @@ class CampaignSimulation {
   [[nodiscard]] nlohmann::json truth_summary() const;
 
  private:
-  struct PendingObservation {
-    AlignmentResult result;
-    double start_s = 0.0, end_s = 0.0;
-    bool done = false;
-  };
-
-  CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder, const RunOptions& options);
-  core::Result<bool> set_up_gps();
-  [[nodiscard]] nlohmann::json navigation_summary() const;
-  SimulatedSpacecraft& active();
-  [[nodiscard]] const SimulatedSpacecraft& active() const;
+  CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder, TruthWorld truth, Sensors sensors,
+                     HostApplication host);
 
   // The phases of step(), in order.
-  void update_attitude(core::GpsTime t);
-  void apply_ground_timeline(core::GpsTime t);
   void step_flight_components(core::GpsTime t);
-  void read_outputs(SimulatedSpacecraft& v, const gnc::OutputRecords& out);
-  void score_navigation();
-  void route_outputs(SimulatedSpacecraft& v, SimulatedSpacecraft& other);
-  void execute_maneuver(SimulatedSpacecraft& v, core::GpsTime t);
-  void apply_fdir(SimulatedSpacecraft& v, SimulatedSpacecraft& other, core::GpsTime t);
+  void measure(std::size_t k, const EpochFrame& frame, core::GpsTime t, HostRecords& records);
+  void route_outputs(std::size_t k);
+  void execute_maneuver(std::size_t k, core::GpsTime t);
   void inject_faults(core::GpsTime t);
-  void open_fault_windows(core::GpsTime t);
-  void close_fault_windows(core::GpsTime t);
-  /// The non-GNC fault of a spacecraft that can no longer act (bus safe mode, failed thruster).
-  void switch_away_from(std::size_t victim, core::GpsTime t, std::string_view what);
-  [[nodiscard]] bool in_window(const FaultWindow& window, int victim, std::size_t k) const;
-  void record_metrics();
   void update_end();
-  core::Result<bool> propagate_truth(core::GpsTime t);
-  // Sensors of on-board navigation ([navigation] mode = "cdgps").
-  std::optional<gnc::GpsMessage> measure_gps(SimulatedSpacecraft& v, const EpochFrame& frame, core::GpsTime t);
-  void decode_ephemeris(SimulatedSpacecraft& v, core::GpsTime t, gnc::GpsMessage& message);
-  std::optional<gnc::LaserRange> measure_range(core::GpsTime t);
   [[nodiscard]] bool in_slew(double t_s) const;
   [[nodiscard]] bool in_observation(double t_s) const;
 
   CampaignScenario scenario_;
   RunRecorder* recorder_;
-  std::array<SimulatedSpacecraft, 2> vehicles_;  // dsc, osc
-  AlignmentRequirements requirements_;
-  std::vector<PendingObservation> observations_;
+  TruthWorld truth_;
+  Sensors sensors_;
+  HostApplication host_;
+  RunMetrics metrics_;
   // Step indices of the timeline (-1: never).
-  std::int64_t steps_total_ = 0, output_every_ = 1, science_step_ = 0, fault_step_ = -1, non_gnc_fault_step_ = -1;
+  std::int64_t steps_total_ = 0, output_every_ = 1, fault_step_ = -1, non_gnc_fault_step_ = -1;
   std::int64_t k_ = 0;  // the next step to run
   double ts_ = 0.0;     // time of the last step run [s since t0]
   double end_s_ = 0.0;
   bool ended_ = false;
-  double min_sep_rn_m_ = std::numeric_limits<double>::infinity();
-  double min_sep_3d_m_ = std::numeric_limits<double>::infinity();
-  int safety_violations_ = 0;
-  bool science_started_ = false, left_science_ = false, escaped_ = false;
-  // On-board navigation ([navigation] mode = "cdgps").
-  std::optional<GpsWorld> gps_;
-  /// Per PRN, the indices of its broadcast data sets in GpsSatelliteTruth::broadcast_records(),
-  /// in t_oe order.
-  std::array<std::vector<std::size_t>, gnss::kMaxGpsPrn + 1> sets_by_prn_;
-  std::optional<RandomStream> lrf_rng_;
-  core::InterpolatedEarthFrame earth_frame_;
-  SkyTruth sky_;  // the apparent Sun and target (the truth's own computation)
-  NavigationScore navigation_score_;
-  std::array<NavigationSample, 2> navigation_samples_{};
-  std::array<std::int64_t, 2> rows_epochs_{}, rows_fixed_{};  // at each spacecraft's last navigation.csv row
-  // Fault windows ([fault]): the spacecraft each concerns (index, -1 before the window opens).
-  int gps_outage_victim_ = -1, safe_mode_victim_ = -1, thruster_victim_ = -1;
-  std::optional<RandomStream> garbage_rng_;
-  std::array<std::vector<float>, 2> step_us_;  // wall time of each component step [us]
-  std::array<HostRecords, 2> host_records_;    // this step's input records of each component
-  std::vector<std::string> fallbacks_;          // embedded defaults used for missing data (the warnings)
-  std::unique_ptr<PairedWorker> components_;   // steps the two components (a pointer: movable)
+  bool left_science_ = false, escaped_ = false;
+  std::array<HostRecords, 2> host_records_;  // this step's input records of each component
+  std::vector<std::string> fallbacks_;         // embedded defaults used for missing data (the warnings)
 };
 
 /// Runs `scenario`, writing the run directory `out_dir`. `progress` (optional) is called about

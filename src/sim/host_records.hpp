@@ -4,12 +4,13 @@
 // records forwarded as received. Kept by the simulation from step to step, so its storage is
 // reused rather than allocated every step.
 
+#include <array>
+#include <cstdint>
 #include <span>
 #include <type_traits>
 #include <vector>
 
 #include "gnc/channel_record.hpp"
-#include "sim/simulated_spacecraft.hpp"
 
 namespace visors::sim {
 
@@ -25,10 +26,14 @@ constexpr gnc::Channel channel_for() {
 
 class HostRecords {
  public:
+  /// Per channel, the sequence number of the next record the host writes.
+  using Sequences = std::array<std::uint32_t, gnc::kChannels + 1>;
+
+  /// Encodes `message` with its channel's next sequence number (incremented).
   template <class Message>
-  void add(SimulatedSpacecraft& v, const Message& message) {
+  void add(Sequences& sequence, const Message& message) {
     gnc::OutputRecords::Record& r = records_.emplace_back();
-    r.size = gnc::encode(message, v.sequence[static_cast<std::size_t>(channel_for<Message>())]++, r.bytes);
+    r.size = gnc::encode(message, sequence[static_cast<std::size_t>(channel_for<Message>())]++, r.bytes);
   }
   void forward(const gnc::OutputRecords::Record& record) { records_.push_back(record); }
   void clear() { records_.clear(); }
