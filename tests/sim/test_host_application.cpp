@@ -1,0 +1,53 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "sim/host_application.hpp"
+
+namespace {
+
+using visors::gnc::Mode;
+using visors::sim::fdir_response;
+using visors::sim::FdirResponse;
+using visors::sim::FdirTrigger;
+using visors::sim::kFdirPolicy;
+
+// The host's FDIR policy (mission paper, section on FDIR): one rule per trigger.
+TEST(FdirPolicy, EachTriggerHasExactlyOneRule) {
+  for (FdirTrigger trigger : {FdirTrigger::kSafetyViolation, FdirTrigger::kGncIncapable, FdirTrigger::kNonGncFault,
+                              FdirTrigger::kUnableToAct}) {
+    EXPECT_EQ(std::count_if(kFdirPolicy.begin(), kFdirPolicy.end(), [&](const auto& rule) { return rule.trigger == trigger; }), 1);
+  }
+}
+
+// Paper: a passive-safety violation commands the escape, whatever the mode.
+TEST(FdirPolicy, SafetyViolationEscapesInEveryMode) {
+  for (Mode mode : {Mode::kStandby, Mode::kTransferToScience, Mode::kScience, Mode::kTransferToStandby}) {
+    EXPECT_EQ(fdir_response(FdirTrigger::kSafetyViolation, mode), FdirResponse::kEscape);
+  }
+}
+
+// Paper: a non-GNC fault in science (or the transfer to it) returns the formation to standby...
+TEST(FdirPolicy, NonGncFaultInScienceReturnsToStandby) {
+  EXPECT_EQ(fdir_response(FdirTrigger::kNonGncFault, Mode::kScience), FdirResponse::kTransferToStandby);
+  EXPECT_EQ(fdir_response(FdirTrigger::kNonGncFault, Mode::kTransferToScience), FdirResponse::kTransferToStandby);
+}
+
+// ...and otherwise switches roles.
+TEST(FdirPolicy, NonGncFaultOutsideScienceSwitchesRoles) {
+  EXPECT_EQ(fdir_response(FdirTrigger::kNonGncFault, Mode::kStandby), FdirResponse::kRoleSwitch);
+  EXPECT_EQ(fdir_response(FdirTrigger::kNonGncFault, Mode::kTransferToStandby), FdirResponse::kRoleSwitch);
+}
+
+// A spacecraft that cannot act cannot fly the return itself: the roles switch first.
+TEST(FdirPolicy, UnableToActInScienceSwitchesThenReturns) {
+  EXPECT_EQ(fdir_response(FdirTrigger::kUnableToAct, Mode::kScience), FdirResponse::kRoleSwitchThenStandby);
+  EXPECT_EQ(fdir_response(FdirTrigger::kUnableToAct, Mode::kStandby), FdirResponse::kRoleSwitch);
+}
+
+// Paper: GNC incapable on the active spacecraft hands the formation to the other.
+TEST(FdirPolicy, GncIncapableSwitchesRoles) {
+  EXPECT_EQ(fdir_response(FdirTrigger::kGncIncapable, Mode::kScience), FdirResponse::kRoleSwitch);
+}
+
+}  // namespace
