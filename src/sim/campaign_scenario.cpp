@@ -333,19 +333,28 @@ core::Result<bool> read_flight_knowledge(const toml::table& root, CampaignScenar
   const toml::table* t = table_at(root, "flight");
   if (t == nullptr) return true;
   const std::string sec = "flight";
-  if (auto e = check_keys(*t, sec, {"dsc_mass_kg", "osc_mass_kg", "cd", "cr", "drag_area_m2", "srp_area_m2", "eop_file"})) {
+  if (auto e = check_keys(*t, sec, {"dsc_mass_kg", "osc_mass_kg", "cd", "cr", "drag_area_m2", "srp_area_m2", "eop_file",
+                                    "antenna_arp_body_m", "antenna_pco_m", "lrf_lever_body_m", "lrf_sigma_m", "lrf_bias_m"})) {
     return *e;
   }
   FlightKnowledge& k = s.flight;
   VISORS_TRY(eop_file, string_at(*t, sec, "eop_file", k.eop_file));
   k.eop_file = eop_file;
+  VISORS_TRY(arp, vector3_at(*t, sec, "antenna_arp_body_m", k.antenna_arp_body_m));
+  VISORS_TRY(lrf_lever, vector3_at(*t, sec, "lrf_lever_body_m", k.lrf_lever_body_m));
+  if (arp.norm() > 1.0) return Error{"flight.antenna_arp_body_m", "must be within 1 m of the centre of mass"};
+  if (lrf_lever.norm() > 1.0) return Error{"flight.lrf_lever_body_m", "must be within 1 m of the centre of mass"};
+  k.antenna_arp_body_m = arp;
+  k.lrf_lever_body_m = lrf_lever;
   const struct {
     const char* key;
     double* value;
     double low, high;
   } fields[] = {{"dsc_mass_kg", &k.dsc_mass_kg, 0.1, 1000.0}, {"osc_mass_kg", &k.osc_mass_kg, 0.1, 1000.0},
                 {"cd", &k.cd, 0.0, 5.0},                       {"cr", &k.cr, 0.0, 2.0},
-                {"drag_area_m2", &k.drag_area_m2, 0.0, 10.0},   {"srp_area_m2", &k.srp_area_m2, 0.0, 10.0}};
+                {"drag_area_m2", &k.drag_area_m2, 0.0, 10.0},   {"srp_area_m2", &k.srp_area_m2, 0.0, 10.0},
+                {"antenna_pco_m", &k.antenna_pco_m, 0.0, 0.5},  {"lrf_sigma_m", &k.lrf_sigma_m, 1e-6, 1.0},
+                {"lrf_bias_m", &k.lrf_bias_m, -1.0, 1.0}};
   for (const auto& f : fields) {
     VISORS_TRY(value, number_at(*t, sec, f.key, *f.value));
     if (auto ok = in_range(value, f.low, f.high, sec + "." + f.key); !ok) return ok.error();
@@ -525,8 +534,11 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += spacecraft("dsc", s.dsc);
   out += spacecraft("osc", s.osc);
   const FlightKnowledge& told = s.flight;
-  out += fmt::format("[flight]\ndsc_mass_kg = {:.17g}\nosc_mass_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\ndrag_area_m2 = {:.17g}\nsrp_area_m2 = {:.17g}\neop_file = \"{}\"\n\n",
+  const auto vec = [](const Eigen::Vector3d& x) { return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", x.x(), x.y(), x.z()); };
+  out += fmt::format("[flight]\ndsc_mass_kg = {:.17g}\nosc_mass_kg = {:.17g}\ncd = {:.17g}\ncr = {:.17g}\ndrag_area_m2 = {:.17g}\nsrp_area_m2 = {:.17g}\neop_file = \"{}\"\n",
                      told.dsc_mass_kg, told.osc_mass_kg, told.cd, told.cr, told.drag_area_m2, told.srp_area_m2, told.eop_file);
+  out += fmt::format("antenna_arp_body_m = {}\nantenna_pco_m = {:.17g}\nlrf_lever_body_m = {}\nlrf_sigma_m = {:.17g}\nlrf_bias_m = {:.17g}\n\n",
+                     vec(told.antenna_arp_body_m), told.antenna_pco_m, vec(told.lrf_lever_body_m), told.lrf_sigma_m, told.lrf_bias_m);
   out += fmt::format("[geometry]\ncom_variation_sigma_m = {:.17g}\ncom_knowledge_error_m = {:.17g}\npayload_position_sigma_m = {:.17g}\npayload_pointing_sigma_arcsec = {:.17g}\nphase_center_knowledge_sigma_m = {:.17g}\n\n",
                      s.geometry.com_sigma_m, s.geometry.com_knowledge_error_m, s.geometry.payload_position_sigma_m,
                      s.geometry.payload_pointing_sigma_rad / core::kArcsecToRad, s.geometry.phase_center_knowledge_sigma_m);

@@ -70,6 +70,16 @@ struct FlightKnowledge {
   /// The IERS file the ground uplinks the Earth orientation at the start from (data-relative or
   /// absolute; empty or not found: zero EOP). The truth's own is [forces] earth_frame.eop.
   std::string eop_file = "eop/finals2000A_2024-07-01_2025-01-31.txt";
+  /// The GPS antenna as calibrated (one design on both spacecraft), body frame: its reference
+  /// point from the nominal centre of mass and the phase-centre offset along the boresight +Z [m]
+  /// (the truth's: [gnss.receiver] antenna_body_m, phase_center_offset_m, and the drawn errors).
+  Eigen::Vector3d antenna_arp_body_m = Eigen::Vector3d(0.0, 0.0, 0.1);
+  double antenna_pco_m = 0.0854;
+  /// The rangefinder (OSC) and its target (DSC), each from its centre of mass, body frame [m];
+  /// its noise and calibrated bias [m] (the truth's: the drawn payload points, [gnss.lrf]).
+  Eigen::Vector3d lrf_lever_body_m = Eigen::Vector3d(0.15, 0.0, 0.0);
+  double lrf_sigma_m = 0.002;
+  double lrf_bias_m = 0.0;
 };
 
 /// A fault that lasts: from start_s [s since t0] for duration_s [s]; disabled when start_s < 0.

@@ -127,7 +127,7 @@ core::Result<bool> CampaignSimulation::step() {
   truth_.update_attitude(t, ts_);
   host_.apply_ground_timeline(k_, t, ts_);
   step_flight_components(t);
-  if (sensors_.has_gps()) metrics_.score_navigation(truth_, sensors_, host_, ts_, in_slew(ts_));
+  if (sensors_.has_gps()) metrics_.score_navigation(truth_, sensors_, host_, scenario_.flight, ts_, in_slew(ts_));
   // Per spacecraft, in order: the host routes its outputs, then applies its FDIR (the event log
   // keeps this order).
   for (std::size_t k = 0; k < 2; ++k) {

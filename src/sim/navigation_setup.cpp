@@ -43,18 +43,24 @@ core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const C
   auto filter = cdgps_settings(s);
   if (!filter.ok()) return filter.error();
   settings.filter = filter.value();
-  // The antenna, rangefinder and their levers: OnboardNavigationSettings' defaults, the flight
-  // team's calibrated values (the truth's differ by its drawn errors: docs/truth-and-knowledge.md).
+  // The antenna, rangefinder and their levers: the flight team's calibrated values ([flight]; the
+  // truth's differ by its drawn errors: docs/truth-and-knowledge.md).
+  settings.antenna_arp_body_m = s.flight.antenna_arp_body_m;
+  settings.antenna_pco_m = s.flight.antenna_pco_m;
+  settings.lrf_lever_body_m = s.flight.lrf_lever_body_m;
+  settings.lrf_sigma_m = s.flight.lrf_sigma_m;
+  settings.lrf_bias_m = s.flight.lrf_bias_m;
   auto eop = uplinked_earth_orientation(s);
   if (!eop.ok()) return eop.error();
   settings.earth_orientation = eop.value();
   return settings;
 }
 
-Eigen::Vector3d known_antenna_lever_body_m() {
-  const gnc::OnboardNavigationSettings told;
+Eigen::Vector3d known_antenna_lever_body_m(const FlightKnowledge& told) {
   return told.antenna_arp_body_m + told.antenna_pco_m * Eigen::Vector3d::UnitZ();
 }
+
+Eigen::Vector3d known_antenna_lever_body_m() { return known_antenna_lever_body_m(FlightKnowledge{}); }
 
 core::Result<gnc::OnboardNavigation> make_onboard_navigation(const CampaignScenario& s, gnc::Spacecraft self) {
   auto settings = onboard_navigation_settings(s);

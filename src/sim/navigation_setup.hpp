@@ -36,9 +36,11 @@ core::Result<core::EarthOrientation> uplinked_earth_orientation(const CampaignSc
 core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const CampaignScenario& scenario);
 
 /// The antenna lever the flight software knows, body frame, from the nominal centre of mass [m]:
-/// the reference point plus the calibrated phase-centre offset along body +Z
-/// (gnc::OnboardNavigationSettings, the values onboard_navigation_settings() gives). Scores
-/// compare the truth's lever with this one, never with the truth receiver's nominal.
+/// the reference point plus the calibrated phase-centre offset along body +Z ([flight], the
+/// values onboard_navigation_settings() gives). Scores compare the truth's lever with this one,
+/// never with the truth receiver's nominal.
+Eigen::Vector3d known_antenna_lever_body_m(const FlightKnowledge& told);
+/// The same with the default flight knowledge (for the callers that have no scenario yet).
 Eigen::Vector3d known_antenna_lever_body_m();
 
 /// The on-board navigation of `self` with both spacecraft's on-board force models.

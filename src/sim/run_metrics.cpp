@@ -68,8 +68,8 @@ void RunMetrics::add_delta_v(std::size_t k, gnc::Mode mode, double l1_mps) {
   dv_total_mps_[k] += l1_mps;
 }
 
-void RunMetrics::score_navigation(const TruthWorld& truth, const Sensors& sensors, const HostApplication& host, double t_s,
-                                  bool in_slew) {
+void RunMetrics::score_navigation(const TruthWorld& truth, const Sensors& sensors, const HostApplication& host,
+                                  const FlightKnowledge& told, double t_s, bool in_slew) {
   FormationTruth formation;
   formation.dsc_gcrf = truth[0].x_gcrf;
   formation.osc_gcrf = truth[1].x_gcrf;
@@ -78,7 +78,7 @@ void RunMetrics::score_navigation(const TruthWorld& truth, const Sensors& sensor
   // True minus known lever arm from the centre of mass to the phase centre: the known one is the
   // flight software's, the true one the receiver's (drawn centre of mass, tilted boresight,
   // phase-centre error).
-  const Eigen::Vector3d known = known_antenna_lever_body_m();
+  const Eigen::Vector3d known = known_antenna_lever_body_m(told);
   const auto lever_error = [&](std::size_t k) -> Eigen::Vector3d {
     return (sensors.receiver(k).phase_center_body_m() - truth[k].geometry->com_body_m()) - known;
   };

@@ -34,10 +34,11 @@ class RunMetrics {
   /// The executed impulse of spacecraft k in `mode`: its L1 norm in the thrusters' frame [m/s].
   void add_delta_v(std::size_t k, gnc::Mode mode, double l1_mps);
 
-  /// Each component's navigation solution at t_s against the truth; `in_slew`: the step is in a
-  /// slew to or from an observation.
-  void score_navigation(const TruthWorld& truth, const Sensors& sensors, const HostApplication& host, double t_s,
-                        bool in_slew);
+  /// Each component's navigation solution at t_s against the truth (the antenna lever against
+  /// the one the flight software is told, `told`); `in_slew`: the step is in a slew to or from an
+  /// observation.
+  void score_navigation(const TruthWorld& truth, const Sensors& sensors, const HostApplication& host,
+                        const FlightKnowledge& told, double t_s, bool in_slew);
   [[nodiscard]] NavigationScore& navigation_score() { return navigation_score_; }
 
   /// This step's alignment samples (closing the attempts that ended) and minimum separations;

@@ -40,7 +40,7 @@ INSTANTIATE_TEST_SUITE_P(
                       "[gnss.receiver]\nphase_sigma_m = 0.005\n", "[gnss.receiver]\ncode_sigma_m = 0.5\n",
                       "[gnss.receiver]\nphase_multipath_m = 0.004\n", "[gnss.receiver]\ncode_multipath_m = 0.6\n",
                       "[gnss.receiver]\nelevation_dependent_noise = false\n", "[gnss.receiver]\nphase_center_offset_m = 0.09\n",
-                      "[gnss.receiver]\nantenna_body_m = [0.0, 0.01, 0.1]\n", "[gnss.lrf]\nsigma_m = 0.004\n",
+                      "[gnss.receiver]\nantenna_body_m = [0.0, 0.01, 0.1]\n", "[gnss.lrf]\nsigma_m = 0.004\n", "[gnss.lrf]\nbias_m = 0.001\n",
                       "[propulsion]\nmagnitude_sigma = 0.2\n", "[propulsion]\nmagnitude_bias_sigma = 0.05\n",
                       "[propulsion]\ndirection_sigma_deg = 1.0\n", "[propulsion]\nisp_s = 40.0\n",
                       "[attitude]\nslew_rate_deg_s = 1.0\n", "[attitude]\npointing_sigma_arcsec = [10.0, 10.0, 10.0]\n",
@@ -52,6 +52,11 @@ INSTANTIATE_TEST_SUITE_P(
 
 // The check can tell a change: a flight key moves the file.
 TEST(FlightConfig, AFlightKeyChangesIt) { EXPECT_NE(config_of("[flight]\ncd = 2.4\n"), config_of("")); }
+
+// The antenna and rangefinder the flight software is told are flight keys of their own.
+TEST(FlightConfig, TheAntennaKeyChangesIt) { EXPECT_NE(config_of("[flight]\nantenna_pco_m = 0.09\n"), config_of("")); }
+
+TEST(FlightConfig, TheRangefinderKeyChangesIt) { EXPECT_NE(config_of("[flight]\nlrf_sigma_m = 0.003\n"), config_of("")); }
 
 TEST(FlightConfig, AFilterKeyChangesIt) { EXPECT_NE(config_of("[nav]\nsdcp_sigma_m = 0.004\n"), config_of("")); }
 
