@@ -21,4 +21,28 @@ double ephemeris_decoded_at(double from_gps_s) {
   return ready;
 }
 
+DataSetsByPrn data_sets_by_prn(std::span<const gnss::BroadcastEphemeris> records) {
+  DataSetsByPrn sets;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    if (records[i].prn >= 1 && records[i].prn <= gnss::kMaxGpsPrn) sets[static_cast<std::size_t>(records[i].prn)].push_back(i);
+  }
+  return sets;
+}
+
+std::optional<std::size_t> newly_decoded_data_set(std::span<const gnss::BroadcastEphemeris> records,
+                                                  std::span<const std::size_t> sets, core::GpsTime t,
+                                                  double half_refresh_s, double lock_time_s, std::size_t next) {
+  if (sets.empty()) return std::nullopt;
+  // The set in force: from the last one passed on (a set replaced is never in force again).
+  std::size_t current = next > 0 ? next - 1 : 0;
+  while (current + 1 < sets.size() && half_refresh_s > 0.0 && t.seconds_since(records[sets[current + 1]].toe) >= -half_refresh_s) {
+    ++current;
+  }
+  if (next > current) return std::nullopt;
+  const double lock_start_s = t.seconds() - lock_time_s;
+  const double broadcast_from_s = current == 0 ? lock_start_s : records[sets[current]].toe.seconds() - half_refresh_s;
+  if (t.seconds() < ephemeris_decoded_at(std::max(lock_start_s, broadcast_from_s))) return std::nullopt;
+  return current;
+}
+
 }  // namespace visors::sim
