@@ -21,6 +21,7 @@
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/files/rinex_obs_file.hpp"
 #include "gnss/gps_constants.hpp"
+#include "sim/adcs_model.hpp"
 #include "sim/attitude_profile.hpp"
 #include "sim/drag_area.hpp"
 #include "sim/formation_initial_state.hpp"
@@ -29,6 +30,7 @@
 #include "sim/gps_receiver.hpp"
 #include "sim/gps_satellite_truth.hpp"
 #include "sim/gps_world.hpp"
+#include "sim/navigation_message.hpp"
 #include "sim/propulsion.hpp"
 #include "sim/sky_truth.hpp"
 #include "sim/spacecraft_geometry.hpp"
@@ -49,7 +51,9 @@ struct Craft {
   TruthDynamics truth;
   core::StateVector x_gcrf;
   DragArea drag = DragArea::visors_6u();
-  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body to GCRF at the epoch
+  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // true, body to GCRF at the epoch
+  Eigen::Quaterniond reported_attitude = Eigen::Quaterniond::Identity();  // the ADCS's report at the epoch
+  std::optional<AdcsModel> adcs;  // its control error and the error of what it reports
   std::optional<SpacecraftGeometry> geometry;
   std::optional<GpsReceiver> receiver;
   std::optional<gnss::files::Rinex3ObservationWriter> rinex;
@@ -57,6 +61,8 @@ struct Craft {
   double visible_sum = 0.0, tracked_sum = 0.0;
   std::int64_t acquisitions = 0;
   std::int64_t maneuvers = 0;  // executed pieces
+  std::array<std::size_t, gnss::kMaxGpsPrn + 1> next_data_set{};  // per PRN: after the last set decoded
+  std::int64_t data_sets_decoded = 0;
 };
 
 core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftSettings& nominal, const core::StateVector& x0,
@@ -69,6 +75,9 @@ core::Result<bool> set_up(Craft& c, const CampaignScenario& s, const SpacecraftS
   c.x_gcrf = x0;
   RandomStream geometry_rng(s.seed, c.name + ".geometry");  // the same draw as `visors run`
   c.geometry.emplace(SpacecraftGeometry::draw(s.geometry, geometry_rng));
+  auto adcs = AdcsModel::create(s.adcs, RandomStream(s.seed, c.name + ".adcs"));  // the same stream as `visors run`
+  if (!adcs.ok()) return core::Error{"attitude." + adcs.error().field, adcs.error().message};
+  c.adcs.emplace(std::move(adcs).value());
   GpsReceiverSettings settings = s.gnss.receiver;
   settings.klobuchar = ionosphere;
   settings.epoch_interval_s = s.step_s;  // clock_step_sigma_m is per epoch
@@ -156,12 +165,15 @@ core::Result<bool> open_rinex_observations(Craft& c, const CampaignScenario& s, 
   return true;
 }
 
-// truth.csv and channels_truth.csv, with their header lines.
+// truth.csv and channels_truth.csv, with their header lines; what the flight software would have
+// been given besides the RINEX files (attitude_reported.csv, ephemeris_decoded.csv).
 struct TruthFiles {
   core::files::OutputFile truth;
   core::files::OutputFile channels;
   core::files::OutputFile maneuvers;
   core::files::OutputFile lrf;
+  core::files::OutputFile attitude_reported;
+  core::files::OutputFile ephemeris_decoded;
 };
 
 core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) {
@@ -185,8 +197,14 @@ core::Result<TruthFiles> open_truth_files(const std::filesystem::path& out_dir) 
                "t_s,spacecraft,dv_cmd_x_gcrf_mps,dv_cmd_y_gcrf_mps,dv_cmd_z_gcrf_mps,dv_x_gcrf_mps,dv_y_gcrf_mps,"
                "dv_z_gcrf_mps\n");
   std::fprintf(lrf_csv->get(), "t_s,range_m,true_range_m\n");
-  return TruthFiles{std::move(truth_csv).value(), std::move(channels_csv).value(), std::move(maneuvers_csv).value(),
-                    std::move(lrf_csv).value()};
+  auto attitude_csv = open_output(out_dir / "attitude_reported.csv");
+  if (!attitude_csv.ok()) return attitude_csv.error();
+  std::fprintf(attitude_csv->get(), "t_s,spacecraft,qw_body_to_gcrf,qx_body_to_gcrf,qy_body_to_gcrf,qz_body_to_gcrf\n");
+  auto decoded_csv = open_output(out_dir / "ephemeris_decoded.csv");
+  if (!decoded_csv.ok()) return decoded_csv.error();
+  std::fprintf(decoded_csv->get(), "t_s,spacecraft,prn,toe_week,toe_sow,iode\n");
+  return TruthFiles{std::move(truth_csv).value(),    std::move(channels_csv).value(), std::move(maneuvers_csv).value(),
+                    std::move(lrf_csv).value(),      std::move(attitude_csv).value(), std::move(decoded_csv).value()};
 }
 
 // Formation keeping ([gnss.maneuvers] keeping = true): the tangential correction of each piece of
@@ -202,33 +220,47 @@ struct KeepingBurst {
 // run, in the order its errors are reported.
 struct GnssRun {
   GpsWorld world;
+  DataSetsByPrn data_sets;  // the broadcast records of each PRN (sim/navigation_message.hpp)
   std::array<Craft, 2> crafts;
   std::optional<TruthFiles> files;
-  std::optional<AttitudeProfile> profile;  // the observation windows (attitude = "campaign")
+  std::optional<AttitudeProfile> profile;  // the commanded attitude, with the observation windows (attitude = "campaign")
   GnssOperations operations;
   KeepingBurst keeping;                    // the current burst's corrections (keeping = true)
 };
+
+// The operations planned as the flight software plans them (the slew lead from its own rate and
+// settling, gnc.science), and the commanded attitude flying their windows at the ADCS's own slew
+// rate ([attitude] slew_rate_deg_s), as `visors run`'s truth.
+core::Result<bool> plan_attitude(GnssRun& run, const CampaignScenario& s, double last_epoch_s) {
+  AttitudeSettings planned;
+  planned.slew_rate_radps = s.gnc.science.slew_rate_radps;
+  planned.settling_s = s.gnc.science.slew_settle_s;
+  auto planning = AttitudeProfile::create(planned);
+  if (!planning.ok()) return core::Error{"gnc.science." + planning.error().field, planning.error().message};
+  auto operations = plan_gnss_operations(s, *planning, last_epoch_s);
+  if (!operations.ok()) return operations.error();
+  run.operations = std::move(operations).value();
+  AttitudeSettings flown;
+  flown.slew_rate_radps = s.adcs.slew_rate_radps;
+  auto profile = AttitudeProfile::create(flown);
+  if (!profile.ok()) return core::Error{"attitude.slew_rate_deg_s", profile.error().message};
+  run.profile.emplace(std::move(profile).value());
+  for (const ObservationWindow& w : run.operations.windows) {
+    if (auto ok = run.profile->schedule(w); !ok) return core::Error{"gnss.observations." + ok.error().field, ok.error().message};
+  }
+  return true;
+}
 
 core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std::filesystem::path& out_dir,
                               double last_epoch_s) {
   auto world = load_gps_world(s, s.gnss.duration_s);
   if (!world.ok()) return world.error();
   run.world = std::move(world).value();
+  run.data_sets = data_sets_by_prn(run.world.satellites->broadcast_records());
   const auto initial = initial_formation_state(s);
   if (!initial.ok()) return initial.error();
   const gnss::KlobucharCoefficients ionosphere = run.world.nav.ionosphere.value_or(gnss::KlobucharCoefficients{});
-  AttitudeSettings attitude_settings;  // as `visors run`
-  attitude_settings.slew_rate_radps = s.gnc.science.slew_rate_radps;
-  attitude_settings.settling_s = s.gnc.science.slew_settle_s;
-  auto profile = AttitudeProfile::create(attitude_settings);
-  if (!profile.ok()) return core::Error{"gnc.science." + profile.error().field, profile.error().message};
-  run.profile.emplace(std::move(profile).value());
-  auto operations = plan_gnss_operations(s, *run.profile, last_epoch_s);
-  if (!operations.ok()) return operations.error();
-  run.operations = std::move(operations).value();
-  for (const ObservationWindow& w : run.operations.windows) {
-    if (auto ok = run.profile->schedule(w); !ok) return core::Error{"gnss.observations." + ok.error().field, ok.error().message};
-  }
+  if (auto ok = plan_attitude(run, s, last_epoch_s); !ok) return ok.error();
   std::array<Craft, 2>& crafts = run.crafts;
   crafts[0].name = "dsc";
   crafts[1].name = "osc";
@@ -246,9 +278,10 @@ core::Result<bool> set_up_run(GnssRun& run, const CampaignScenario& s, const std
   return true;
 }
 
-// The truth attitude of [gnss] attitude: a fixed target ("nominal", "observation") or the
+// The commanded attitude of [gnss] attitude: a fixed target ("nominal", "observation") or the
 // attitude profile with the observation windows ("campaign"); the Sun line is the commanded
-// target's apparent direction (sim/sky_truth.hpp).
+// target's apparent direction (sim/sky_truth.hpp). The bus holds it turned by its ADCS's control
+// error (Craft::adcs).
 struct AttitudeModel {
   enum class Kind { kNominal, kObservation, kCampaign } kind = Kind::kNominal;
   const AttitudeProfile* profile = nullptr;  // kCampaign only
@@ -276,14 +309,22 @@ struct AttitudeModel {
   }
 };
 
-// The receiver's pose at t: the truth attitude (which also sets the drag area of the truth
-// forces, and is kept in the craft for the truth file), its angular velocity relative to the
-// Earth, and the centre of mass in ITRF.
-ReceiverPose receiver_pose(Craft& c, const EpochFrame& frame, core::GpsTime t, double t_s, const AttitudeModel& attitude) {
-  const Eigen::Quaterniond q = attitude.at(t_s, c.x_gcrf.r, c.x_gcrf.v);
-  c.attitude = q;
-  c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, q)));
-  return sim::receiver_pose(frame, t, c.x_gcrf, q, attitude.angular_velocity_gcrf(t_s, c.x_gcrf),
+// The epoch's attitudes, as `visors run` steps them: the ADCS's errors advanced to t_s (one step
+// an epoch, from the same stream "<craft>.adcs": the run's draws), the true attitude (the
+// commanded one turned by the control error; it also sets the drag area of the truth forces) and
+// the ADCS's report of it (turned by the determination error).
+void update_attitude(Craft& c, double t_s, const AttitudeModel& attitude) {
+  c.adcs->step(t_s);
+  c.attitude = c.adcs->true_attitude(attitude.at(t_s, c.x_gcrf.r, c.x_gcrf.v));
+  c.reported_attitude = c.adcs->reported_attitude(c.attitude);
+  c.truth.forces->set_drag_area(c.drag.projected_area_m2(air_velocity_body_unit(c.x_gcrf, c.attitude)));
+}
+
+// The receiver's pose at t: the true attitude of the epoch, the commanded attitude's angular
+// velocity (as `visors run`: the control error's own motion is not in the antenna's velocity), and
+// the centre of mass in ITRF.
+ReceiverPose receiver_pose(const Craft& c, const EpochFrame& frame, core::GpsTime t, double t_s, const AttitudeModel& attitude) {
+  return sim::receiver_pose(frame, t, c.x_gcrf, c.attitude, attitude.angular_velocity_gcrf(t_s, c.x_gcrf),
                             c.geometry->com_body_m());
 }
 
@@ -302,16 +343,43 @@ core::Result<bool> record_epoch(Craft& c, const GpsReceiverEpoch& epoch, double 
   }
   write_truth_row(files.truth.get(), t_s, c, epoch);
   write_channel_rows(files.channels.get(), t_s, c, epoch);
+  const Eigen::Quaterniond& q = c.reported_attitude;
+  std::fprintf(files.attitude_reported.get(), "%.3f,%s,%.10f,%.10f,%.10f,%.10f\n", t_s, c.name.c_str(), q.w(), q.x(), q.y(),
+               q.z());
   return true;
+}
+
+// The broadcast data sets the craft's receiver passes on at this epoch (sim/navigation_message.hpp:
+// the set in force, decoded since the lock, each once; as `visors run` decodes them, except that
+// its one-record GPS message passes one a step): ephemeris_decoded.csv rows. Only at a recorded
+// epoch: in a data gap nothing reaches the flight software.
+void record_decoded_data_sets(Craft& c, const GpsReceiverEpoch& epoch, core::GpsTime t, double t_s, const GnssRun& run,
+                              double half_refresh_s) {
+  if (!epoch.recorded) return;
+  const auto records = run.world.satellites->broadcast_records();
+  for (int k = 0; k < epoch.measurement.channel_count; ++k) {
+    const gnss::GpsChannelMeasurement& channel = epoch.measurement.channels[static_cast<std::size_t>(k)];
+    const auto prn = static_cast<std::size_t>(channel.prn);
+    const auto set = newly_decoded_data_set(records, run.data_sets[prn], t, half_refresh_s, channel.lock_time_s,
+                                            c.next_data_set[prn]);
+    if (!set) continue;
+    c.next_data_set[prn] = *set + 1;
+    ++c.data_sets_decoded;
+    const gnss::BroadcastEphemeris& e = records[run.data_sets[prn][*set]];
+    std::fprintf(run.files->ephemeris_decoded.get(), "%.3f,%s,%d,%d,%.6f,%d\n", t_s, c.name.c_str(), e.prn, e.toe.week(),
+                 e.toe.seconds_of_week(), e.iode);
+  }
 }
 
 // One maneuver piece executed on the craft's truth at the piece's time (the craft's state is
 // there): the commanded RTN dv in GCRF (the true RTN frame), in the body frame of the true
-// attitude, executed by the propulsion model with its errors, back to GCRF with the same attitude,
-// added to the velocity; a maneuvers.csv row (columns: gnss_simulation.hpp).
+// attitude (the commanded one at the piece's time turned by the ADCS's control error of the last
+// epoch: the error is drawn once a step), executed by the propulsion model with its errors, back
+// to GCRF with the same attitude, added to the velocity; a maneuvers.csv row (columns:
+// gnss_simulation.hpp).
 core::Result<bool> execute_piece(Craft& c, const GnssManeuverPiece& piece,
                                  const AttitudeModel& attitude, std::FILE* f) {
-  const Eigen::Quaterniond q = attitude.at(piece.t_s, c.x_gcrf.r, c.x_gcrf.v);
+  const Eigen::Quaterniond q = c.adcs->true_attitude(attitude.at(piece.t_s, c.x_gcrf.r, c.x_gcrf.v));
   const Eigen::Vector3d dv_cmd_gcrf = core::gcrf_to_rtn_matrix(c.x_gcrf).transpose() * piece.dv_rtn_mps;
   auto executed = c.propulsion->execute(piece.t_s, q.conjugate() * dv_cmd_gcrf);
   if (!executed.ok()) {
@@ -473,6 +541,7 @@ nlohmann::json run_summary(const CampaignScenario& s, const GnssRun& run, std::i
     summary["receivers"][c.name] = {{"mean_visible", c.visible_sum / epochs},
                                     {"mean_tracked", c.tracked_sum / epochs},
                                     {"acquisitions_and_slips", c.acquisitions},
+                                    {"data_sets_decoded", c.data_sets_decoded},
                                     {"phase_center_body_m", vector(c.receiver->phase_center_body_m())},
                                     {"center_of_mass_body_m", vector(c.geometry->com_body_m())},
                                     {"boresight_body", vector(c.receiver->boresight_body())}};
@@ -511,11 +580,13 @@ core::Result<GnssRunResult> run_gnss_simulation(const CampaignScenario& s, const
     const core::GpsTime t = s.t0 + t_s;
     const EpochFrame frame = epoch_frame(run.world, t);
     for (Craft& c : run.crafts) {
+      update_attitude(c, t_s, attitude);
       const ReceiverPose pose = receiver_pose(c, frame, t, t_s, attitude);
       const auto measure_start = std::chrono::steady_clock::now();
       const GpsReceiverEpoch& epoch = c.receiver->measure(pose, satellites);
       measure_wall_s += seconds_since(measure_start);
       if (auto ok = record_epoch(c, epoch, t_s, *run.files); !ok) return ok.error();
+      record_decoded_data_sets(c, epoch, t, t_s, run, 0.5 * s.gnss.broadcast_errors.refresh_s);
     }
     if (next_lrf < lrf_epochs.size() && lrf_epochs[next_lrf] == k) {
       write_lrf_row(run.files->lrf.get(), t_s, run.crafts, s.gnss.lrf, lrf_rng);

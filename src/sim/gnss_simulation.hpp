@@ -4,11 +4,14 @@
 // other GNSS software.
 //
 // The world: the scenario's truth force model (RK4 at integration_step_s) for both spacecraft from
-// their initial states; attitude nominal (antenna at the zenith), observation (payload +X at the
-// Sun) or campaign ([gnss] attitude: nominal, with the observation windows of [gnss.observations]
-// flown through sim::AttitudeProfile, eigen-axis slews at gnc.science.slew_rate_radps, 1.5 deg/s,
-// as in `visors run`); the true centre of mass and payload point drawn as in `visors run` (same
-// seed, same geometry); optionally a maneuver schedule ([gnss.maneuvers]) and a laser rangefinder
+// their initial states; commanded attitude nominal (antenna at the zenith), observation (payload
+// +X at the Sun) or campaign ([gnss] attitude: nominal, with the observation windows of
+// [gnss.observations], planned with the flight software's slew rate and settling
+// (gnc.science), flown through sim::AttitudeProfile with eigen-axis slews at the ADCS's own
+// [attitude] slew_rate_deg_s, 1.5 deg/s, as in `visors run`), held by each bus turned by its
+// ADCS's control error and reported turned by its determination error (sim/adcs_model.hpp,
+// [attitude], RandomStream(seed, "<craft>.adcs") stepped once an epoch: `visors run`'s draws);
+// the true centre of mass and payload point drawn as in `visors run` (same seed, same geometry); optionally a maneuver schedule ([gnss.maneuvers]) and a laser rangefinder
 // ([gnss.lrf]), planned as sim/gnss_operations.hpp says; the GPS constellation of [gnss] nav_file moved to the scenario start
 // (gnss/constellation.hpp) with broadcast errors (sim/gps_satellite_truth.hpp); one receiver per
 // spacecraft (sim/gps_receiver.hpp) with the navigation file's Klobuchar coefficients as the truth
@@ -17,20 +20,25 @@
 //
 // Output directory: scenario.toml (resolved), dsc.rnx and osc.rnx (RINEX 3.05 observations,
 // C1C L1C D1C S1C, LLI bit 0 on loss of lock), brdc.rnx (RINEX 3.05 navigation: the broadcast
-// ephemerides the receivers decode, i.e. with the broadcast errors), truth.csv, channels_truth.csv,
+// ephemerides the receivers decode, i.e. with the broadcast errors), ephemeris_decoded.csv and
+// attitude_reported.csv (what the flight software gets besides the RINEX files: below),
+// truth.csv, channels_truth.csv,
 // maneuvers.csv and lrf.csv (always written; a header line only when there is nothing to record)
 // and summary.json (counts, t0, per receiver the body-frame phase centre, centre of mass and
 // boresight [m, unit]; "observations": [{"slew_start_s", "start_s", "end_s"}, ...] (empty unless
 // attitude = "campaign"), "observation_period_s", "maneuvers": {"dsc": n, "osc": n} executed
 // pieces, "maneuver_pieces_skipped" (pieces x spacecraft not commanded: in an observation's
-// quiet time), "lrf_measurements", and with keeping = true "keeping_clamped_pieces").
+// quiet time), "lrf_measurements", per receiver "data_sets_decoded" (rows of
+// ephemeris_decoded.csv), and with keeping = true "keeping_clamped_pieces").
 //
 // Truth attitude. Every use of the attitude (truth.csv quaternion, the drag area of the truth
-// forces, the receiver's antenna pose and its angular velocity, the maneuvers' body frame, the
-// payload points of the rangefinder) is the same function of (t_s, r, v, Sun): the fixed target,
-// or AttitudeProfile::body_to_gcrf(t_s, ...) for "campaign". The angular velocity is the rotation
-// between the attitudes at t_s - 0.5 s and t_s + 0.5 s (states there by two-body motion from the
-// epoch's), divided by 1 s.
+// forces, the receiver's antenna pose, the maneuvers' body frame, the payload points of the
+// rangefinder) is the true one: the commanded attitude, a function of (t_s, r, v, Sun) (the fixed
+// target, or AttitudeProfile::body_to_gcrf(t_s, ...) for "campaign"), turned by the ADCS's control
+// error of the epoch (a piece between epochs: the commanded attitude at its time, turned by the
+// last epoch's error, drawn once a step). The angular velocity is the commanded attitude's, as in
+// `visors run`: the rotation between the commanded attitudes at t_s - 0.5 s and t_s + 0.5 s
+// (states there by two-body motion from the epoch's), divided by 1 s.
 //
 // Maneuvers (spacecraft != "none"; schedule, directions and skipping: sim/gnss_operations.hpp).
 // Each piece is executed on the truth at its own time t_p (46.5 s spacing puts every other piece
@@ -104,6 +112,23 @@
 //                                 epoch the mean of the adjacent slopes: sim/gps_receiver.hpp)
 //   qw_body_to_gcrf, qx_body_to_gcrf, qy_body_to_gcrf, qz_body_to_gcrf  true attitude at T,
 //                                 body to GCRF, Hamilton, scalar first (1e-10)
+// attitude_reported.csv, one row per epoch and spacecraft: what the ADCS reported (the flight
+// software's attitude; truth.csv's is for scoring):
+//   t_s, spacecraft               as in truth.csv
+//   qw_body_to_gcrf, qx_body_to_gcrf, qy_body_to_gcrf, qz_body_to_gcrf  at T, body to GCRF,
+//                                 Hamilton, scalar first (1e-10): truth.csv's turned by the
+//                                 ADCS's determination error, q_true (x) dq(theta_knowledge)
+// ephemeris_decoded.csv, one row per receiver and broadcast data set it decoded, in time order
+// (sim/navigation_message.hpp: the set in force, subframes 1-3 received whole since the later of
+// the lock and the set's first broadcast, 18-36 s, each set once; the rule of `visors run`, whose
+// one-record GPS message passes on one set a step where this file lists every set of the epoch):
+//   t_s [s]                       the time tag of the first recorded epoch at which the receiver
+//                                 had decoded the set (none in a data gap: nothing reaches the
+//                                 flight software then)
+//   spacecraft                    dsc or osc: whose receiver
+//   prn, toe_week, toe_sow        the data set: PRN and t_oe (GPS week, seconds of week, 1 us), a
+//                                 record of brdc.rnx
+//   iode                          its issue of data
 // channels_truth.csv, one row per epoch, spacecraft and tracked channel:
 //   t_s, spacecraft               as in truth.csv
 //   prn                           GPS PRN
