@@ -67,6 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check<ManeuverCommand>(in);
   check<ObservationCommand>(in);
   check<Telemetry>(in);
+  check<NavigationTelemetry>(in);
   check_sealed<TimeAtTone>(in, Channel::kTimeAtTone);
   check_sealed<NavigationSolution>(in, Channel::kNavigation);
   check_sealed<CrosslinkMessage>(in, Channel::kCrosslink);
@@ -77,5 +78,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check_sealed<ManeuverCommand>(in, Channel::kManeuver);
   check_sealed<ObservationCommand>(in, Channel::kObservation);
   check_sealed<Telemetry>(in, Channel::kTelemetry);
+  check_sealed<NavigationTelemetry>(in, Channel::kNavigationTelemetry);
   return 0;
 }

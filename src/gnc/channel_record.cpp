@@ -394,6 +394,55 @@ std::size_t encode(const Telemetry& m, std::uint32_t sequence, std::span<std::ui
   });
 }
 
+namespace {
+
+constexpr std::size_t kDoubleDifferenceBytes = 24;
+
+void write_counters(Writer& w, const NavigationCounters& c) {
+  for (std::int64_t v : {c.epochs_joint, c.epochs_alone, c.epochs_refused, c.epochs_fixed, c.wrong_fixes_refused,
+                         c.impulses_applied, c.impulses_late, c.laser_used, c.laser_rejected, c.clock_jumps}) {
+    w.i64(v);
+  }
+  for (std::int64_t v : c.ephemerides) w.i64(v);
+}
+
+void write_double_differences(Writer& w, const NavigationTelemetry& m, int count) {
+  for (int k = 0; k < kTelemetryDoubleDifferences; ++k) {
+    if (k >= count) {
+      w.zeros(kDoubleDifferenceBytes);
+      continue;
+    }
+    const FixedDoubleDifference& d = m.dd[static_cast<std::size_t>(k)];
+    w.u8(static_cast<std::uint8_t>(d.prn));
+    w.zeros(7);
+    w.i64(d.integer_cycles);
+    w.f64(d.fixed_cycles);
+  }
+}
+
+}  // namespace
+
+std::size_t encode(const NavigationTelemetry& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
+  return write_record(Channel::kNavigationTelemetry, m.t, sequence, out, [&m](Writer& w) {
+    const int count = std::clamp(m.dd_count, 0, kTelemetryDoubleDifferences);
+    for (bool b : {m.has_solution, m.valid, m.fixed, m.fix_applied, m.full_fix}) w.u8(b ? 1 : 0);
+    w.u8(static_cast<std::uint8_t>(count));
+    w.u8(static_cast<std::uint8_t>(m.dd_reference_prn));
+    w.zeros(1);
+    w.time(m.update_t);
+    for (const core::StateVector* x : {&m.dsc_gcrf, &m.osc_gcrf}) {
+      w.vector3(x->r);
+      w.vector3(x->v);
+    }
+    for (const Eigen::Vector3d* v : {&m.p_dsc_body_m, &m.p_osc_body_m, &m.empirical_dsc_rtn_mps2, &m.empirical_osc_rtn_mps2,
+                                     &m.relative_sigma_rtn_m}) {
+      w.vector3(*v);
+    }
+    write_double_differences(w, m, count);
+    write_counters(w, m.counters);
+  });
+}
+
 std::optional<Channel> channel_of(std::span<const std::uint8_t> in) {
   if (in.size() < kHeaderBytes || in[2] < 1 || in[2] > kChannels) return std::nullopt;
   return static_cast<Channel>(in[2]);
@@ -551,6 +600,58 @@ RecordStatus decode(std::span<const std::uint8_t> in, Telemetry& message, Record
     if (!flag(r.u8(), m.navigation_valid) || !flag(r.u8(), m.navigation_fixed)) return RecordStatus::kBadEnumeration;
     if (!r.zeros(6)) return RecordStatus::kBadPadding;
     m.navigation_update = r.time();
+    return RecordStatus::kAccepted;
+  });
+}
+
+namespace {
+
+void read_counters(Reader& r, NavigationCounters& c) {
+  for (std::int64_t* v : {&c.epochs_joint, &c.epochs_alone, &c.epochs_refused, &c.epochs_fixed, &c.wrong_fixes_refused,
+                          &c.impulses_applied, &c.impulses_late, &c.laser_used, &c.laser_rejected, &c.clock_jumps}) {
+    *v = r.i64();
+  }
+  for (std::int64_t& v : c.ephemerides) v = r.i64();
+}
+
+// The double differences after the first `count` must be all 0 (a record decodes to one message).
+RecordStatus read_double_differences(Reader& r, NavigationTelemetry& m) {
+  for (int k = 0; k < kTelemetryDoubleDifferences; ++k) {
+    if (k >= m.dd_count) {
+      if (!r.zeros(kDoubleDifferenceBytes)) return RecordStatus::kBadPadding;
+      continue;
+    }
+    FixedDoubleDifference& d = m.dd[static_cast<std::size_t>(k)];
+    d.prn = r.u8();
+    if (!r.zeros(7)) return RecordStatus::kBadPadding;
+    d.integer_cycles = r.i64();
+    d.fixed_cycles = r.f64();
+  }
+  return RecordStatus::kAccepted;
+}
+
+}  // namespace
+
+RecordStatus decode(std::span<const std::uint8_t> in, NavigationTelemetry& message, RecordHeader& header) {
+  return decode_record(in, Channel::kNavigationTelemetry, message, header, [](Reader& r, NavigationTelemetry& m) {
+    for (bool* b : {&m.has_solution, &m.valid, &m.fixed, &m.fix_applied, &m.full_fix}) {
+      if (!flag(r.u8(), *b)) return RecordStatus::kBadEnumeration;
+    }
+    m.dd_count = r.u8();
+    if (m.dd_count > kTelemetryDoubleDifferences) return RecordStatus::kBadEnumeration;
+    m.dd_reference_prn = r.u8();
+    if (!r.zeros(1)) return RecordStatus::kBadPadding;
+    m.update_t = r.time();
+    for (core::StateVector* x : {&m.dsc_gcrf, &m.osc_gcrf}) {
+      x->r = r.vector3();
+      x->v = r.vector3();
+    }
+    for (Eigen::Vector3d* v : {&m.p_dsc_body_m, &m.p_osc_body_m, &m.empirical_dsc_rtn_mps2, &m.empirical_osc_rtn_mps2,
+                               &m.relative_sigma_rtn_m}) {
+      *v = r.vector3();
+    }
+    if (const RecordStatus s = read_double_differences(r, m); s != RecordStatus::kAccepted) return s;
+    read_counters(r, m.counters);
     return RecordStatus::kAccepted;
   });
 }

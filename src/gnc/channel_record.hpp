@@ -38,6 +38,14 @@
 //                  pending_pieces (2 i32), plans, planning_failures (2 i64), rejected by
 //                  channel (7 i64), records refused by status (11 i64), navigation_valid,
 //                  navigation_fixed (2 u8), 6 bytes 0, navigation_update (i64 ns)      296
+//   navigation     has_solution, valid, fixed, fix_applied, full_fix (5 u8), dd_count,
+//   telemetry      dd_reference_prn (2 u8), 1 byte 0; update_t (i64 ns); DSC r, v; OSC r, v
+//                  (GCRF; 12 f64); p DSC, p OSC (body; 6 f64); empirical DSC, OSC (RTN;
+//                  6 f64); relative sigma RTN (3 f64); 11 double differences of prn (u8),
+//                  7 bytes 0, integer_cycles (i64), fixed_cycles (f64) (unused all 0);
+//                  counters: epochs joint, alone, refused, fixed, wrong fixes refused,
+//                  impulses applied, late, laser used, rejected, clock jumps (10 i64),
+//                  ephemerides by status (6 i64)                                          624
 // The crosslink's payload goes on after its 40 bytes above with the navigation part
 // (CrosslinkNavigation): has_epoch, impulse_count, has_range, epoch count (4 u8), 4 bytes 0;
 // epoch time tag (i64 ns); 12 observations of prn, flags (2 u8), 6 bytes 0, code, phase (2 f64)
@@ -54,9 +62,11 @@
 // (finite, plausible, not stale) are the messages' own validation (gnc/messages.hpp validate);
 // the order of arrival is SequenceGate's. No allocation, no exception: flight code.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <span>
 #include <tuple>
@@ -80,8 +90,9 @@ enum class Channel : std::uint8_t {
   kManeuver = 8,
   kObservation = 9,
   kTelemetry = 10,
+  kNavigationTelemetry = 11,  // with on-board navigation (NavigationTelemetry)
 };
-inline constexpr int kChannels = 10;
+inline constexpr int kChannels = 11;
 inline constexpr std::uint8_t kRecordVersion = 1;
 inline constexpr std::size_t kHeaderBytes = 20;
 inline constexpr std::size_t kChecksumBytes = 4;
@@ -113,10 +124,16 @@ struct RecordHeader {
 
 /// The whole record's size of a channel [bytes].
 [[nodiscard]] constexpr std::size_t record_size(Channel channel) {
-  constexpr std::size_t kPayload[] = {0, 32, 264, 456, 8, 40, 792, 8, 48, 32, 296};
+  constexpr std::size_t kPayload[] = {0, 32, 264, 456, 8, 40, 792, 8, 48, 32, 296, 624};
+  static_assert(std::size(kPayload) == kChannels + 1, "one payload size per channel");
   return kHeaderBytes + kPayload[static_cast<std::size_t>(channel)] + kChecksumBytes;
 }
-inline constexpr std::size_t kMaxRecordBytes = record_size(Channel::kGps);
+/// The largest record of any channel [bytes].
+inline constexpr std::size_t kMaxRecordBytes = [] {
+  std::size_t largest = 0;
+  for (int c = 1; c <= kChannels; ++c) largest = std::max(largest, record_size(static_cast<Channel>(c)));
+  return largest;
+}();
 using RecordBuffer = std::array<std::uint8_t, kMaxRecordBytes>;
 
 /// Writes the record of `message` with `sequence` into `out`; returns its size, or 0 when `out`
@@ -131,6 +148,7 @@ std::size_t encode(const LaserRange& message, std::uint32_t sequence, std::span<
 std::size_t encode(const ManeuverCommand& message, std::uint32_t sequence, std::span<std::uint8_t> out);
 std::size_t encode(const ObservationCommand& message, std::uint32_t sequence, std::span<std::uint8_t> out);
 std::size_t encode(const Telemetry& message, std::uint32_t sequence, std::span<std::uint8_t> out);
+std::size_t encode(const NavigationTelemetry& message, std::uint32_t sequence, std::span<std::uint8_t> out);
 
 /// Reads a record of the message's channel from the start of `in` (extra bytes after it are
 /// ignored). On kAccepted `message` and `header` hold it; otherwise they are unchanged.
@@ -144,6 +162,7 @@ RecordStatus decode(std::span<const std::uint8_t> in, LaserRange& message, Recor
 RecordStatus decode(std::span<const std::uint8_t> in, ManeuverCommand& message, RecordHeader& header);
 RecordStatus decode(std::span<const std::uint8_t> in, ObservationCommand& message, RecordHeader& header);
 RecordStatus decode(std::span<const std::uint8_t> in, Telemetry& message, RecordHeader& header);
+RecordStatus decode(std::span<const std::uint8_t> in, NavigationTelemetry& message, RecordHeader& header);
 
 /// The channel a record says it is of (its header's byte), without any other check: for a host
 /// or an interface that dispatches records of any channel to their decode(). nullopt when `in`

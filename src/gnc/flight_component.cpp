@@ -78,6 +78,7 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
     telemetry_.navigation_valid = navigation_->valid();
     telemetry_.navigation_fixed = navigation_->fixed();
     telemetry_.navigation_update = navigation_->last_update();
+    out.navigation = navigation_->telemetry(now_);
   }
   out.telemetry = telemetry_;
   fill_crosslink(out);

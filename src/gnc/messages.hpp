@@ -187,6 +187,66 @@ struct Telemetry {
   core::GpsTime navigation_update;
 };
 
+/// What the on-board navigation did so far (telemetry).
+inline constexpr int kEphemerisStatuses = 6;  // gnss::EphemerisStore::AcceptStatus, kStored .. kInconsistent
+struct NavigationCounters {
+  std::int64_t epochs_joint = 0;      // processed with both receivers
+  std::int64_t epochs_alone = 0;      // processed with the own receiver only
+  std::int64_t epochs_refused = 0;    // refused by the filter (its report's reason)
+  std::int64_t epochs_fixed = 0;      // updates with a fixed solution
+  std::int64_t wrong_fixes_refused = 0;
+  std::int64_t impulses_applied = 0, impulses_late = 0;
+  std::int64_t laser_used = 0, laser_rejected = 0;
+  std::int64_t clock_jumps = 0;       // receiver clock jumps taken into the clock states
+  std::array<std::int64_t, kEphemerisStatuses> ephemerides{};  // broadcast records by acceptance status
+};
+
+/// At most this many double differences in a navigation telemetry record: the component's epochs
+/// hold at most kMaxGpsChannels observations per receiver (its GPS message and the crosslink
+/// carry no more), so an epoch has at most that many common satellites, one the reference.
+inline constexpr int kTelemetryDoubleDifferences = gnss::kMaxGpsChannels - 1;
+
+/// One fixed double difference of an epoch: satellite `prn` against the epoch's reference,
+/// SD(prn) - SD(reference), each SD the L1 ambiguity OSC minus DSC [cycles].
+struct FixedDoubleDifference {
+  int prn = 0;
+  /// The fixed integer of a full fix (nav::CdgpsEpochReport::dd_integer_cycles); 0 after a
+  /// partial fix, which fixes integer combinations, not single double differences.
+  std::int64_t integer_cycles = 0;
+  /// The double difference of the fixed solution (x_fixed): the integer after a full fix (to
+  /// rounding), the value the fixed combinations imply after a partial one; NaN when the filter
+  /// holds no ambiguity slot for one of the two satellites.
+  double fixed_cycles = 0.0;
+};
+
+/// Navigation telemetry (1 Hz, on-board navigation only): what a ground team needs to score the
+/// navigation against its own truth or reference (the solution in use, its phase-centre and
+/// empirical-acceleration estimates, the last epoch's fix and its integers, the counters), so
+/// that nothing outside the component reads its state. Frames per docs/conventions.md.
+struct NavigationTelemetry {
+  core::GpsTime t;                 // the solution's time (the step's)
+  bool has_solution = false;       // the filter has started: a solution exists, valid or not
+  bool valid = false;              // the solution meets the validity sigmas: control and safety use it
+  bool fixed = false;              // it comes from a fixed update (the fixed solution), else float
+  core::StateVector dsc_gcrf, osc_gcrf;  // estimated centres of mass at t, GCRF [m, m/s]
+  /// Estimated errors of the antenna phase-centre offsets, body frame [m], of the solution in use.
+  Eigen::Vector3d p_dsc_body_m = Eigen::Vector3d::Zero(), p_osc_body_m = Eigen::Vector3d::Zero();
+  /// Estimated empirical accelerations, each in its own spacecraft's RTN frame [m/s^2].
+  Eigen::Vector3d empirical_dsc_rtn_mps2 = Eigen::Vector3d::Zero(), empirical_osc_rtn_mps2 = Eigen::Vector3d::Zero();
+  /// 1-sigma of the relative position (OSC minus DSC), chief RTN [m]: root of the covariance's diagonal.
+  Eigen::Vector3d relative_sigma_rtn_m = Eigen::Vector3d::Zero();
+  /// The time tag of the last epoch the filter updated with (or of its cold start); the fields
+  /// below are of the last epoch it processed: that one, unless it refused a later one (then no
+  /// fix, and epochs_refused counts it).
+  core::GpsTime update_t;
+  bool fix_applied = false;        // a fix (full or partial) was applied at that epoch
+  bool full_fix = false;           // every double difference fixed: integer_cycles hold the integers
+  int dd_reference_prn = 0;        // the double differences' reference satellite (0 without a fix)
+  int dd_count = 0;                // double differences of the fix, 0..kTelemetryDoubleDifferences
+  std::array<FixedDoubleDifference, kTelemetryDoubleDifferences> dd{};
+  NavigationCounters counters;
+};
+
 struct GncOutputs {
   std::optional<ManeuverCommand> maneuver;
   std::optional<ObservationCommand> observation;  // issued once per attempt, when scheduled
@@ -197,6 +257,7 @@ struct GncOutputs {
   bool gnc_incapable = false;       // no valid estimate, or planning keeps failing
   bool passive_safety_violated = false;
   Telemetry telemetry;
+  std::optional<NavigationTelemetry> navigation;  // every step, with on-board navigation
 };
 
 // ---- Validation (field names in the errors; times must be within `max_age` of the step).

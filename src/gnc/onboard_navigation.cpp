@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "core/rtn_frame.hpp"
@@ -30,7 +31,33 @@ Eigen::Matrix<double, 6, 6> relative_covariance_rtn(const nav::NavMatrix& P, con
   return 0.5 * (out + out.transpose());
 }
 
+// The double differences of `report`'s fix (its reference, then the others), each with the
+// full fix's integer and the fixed solution's value from the filter's SDCP slots (messages.hpp
+// FixedDoubleDifference).
+void fixed_double_differences(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& report, NavigationTelemetry& out) {
+  const nav::CdgpsFilter::SlotList slots = filter.sdcp_slots();
+  const auto fixed_sd = [&](int prn) {
+    for (int i = 0; i < slots.count; ++i) {
+      if (slots.prn[static_cast<std::size_t>(i)] == prn) return filter.x_fixed()(slots.state[static_cast<std::size_t>(i)]);
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  };
+  out.full_fix = report.fix.outcome == nav::FixOutcome::kFixed;
+  out.dd_reference_prn = report.dd_prns[0];
+  out.dd_count = std::clamp(report.double_differences, 0, kTelemetryDoubleDifferences);
+  const double reference = fixed_sd(report.dd_prns[0]);
+  for (int j = 1; j <= out.dd_count; ++j) {
+    FixedDoubleDifference& d = out.dd[static_cast<std::size_t>(j - 1)];
+    d.prn = report.dd_prns[static_cast<std::size_t>(j)];
+    d.integer_cycles = out.full_fix ? report.dd_integer_cycles[static_cast<std::size_t>(j)] : 0;
+    d.fixed_cycles = fixed_sd(d.prn) - reference;
+  }
+}
+
 }  // namespace
+
+static_assert(static_cast<int>(gnss::EphemerisStore::AcceptStatus::kInconsistent) == kEphemerisStatuses - 1,
+              "one ephemeris counter per acceptance status");
 
 core::Result<bool> OnboardNavigationSettings::validate() const {
   if (auto error = nav::check(filter)) return core::Error{"filter." + error->field, error->message};
@@ -303,6 +330,30 @@ NavigationSolution OnboardNavigation::solution(core::GpsTime now) {
   s.deputy_gcrf = nav::CdgpsFilter::centre_of_mass(x, nav::Craft::kOsc);
   s.relative_covariance_rtn = relative_covariance_rtn(use_fixed ? filter_.P_fixed() : filter_.P(), s.chief_gcrf);
   return s;
+}
+
+NavigationTelemetry OnboardNavigation::telemetry(core::GpsTime now) const {
+  NavigationTelemetry out;
+  out.t = solution_ ? solution_->t : now;
+  out.counters = counters_;
+  out.update_t = last_update_;
+  out.fix_applied = last_report_.fix_applied;
+  if (out.fix_applied) fixed_double_differences(filter_, last_report_, out);
+  if (!solution_) return out;
+  out.has_solution = true;
+  out.valid = valid_;
+  out.fixed = fixed();
+  out.dsc_gcrf = solution_->chief_gcrf;
+  out.osc_gcrf = solution_->deputy_gcrf;
+  out.relative_sigma_rtn_m = solution_->relative_covariance_rtn.diagonal().head<3>().cwiseMax(0.0).cwiseSqrt();
+  // The phase-centre and empirical states of the solution in use (solution(): fixed or float).
+  const nav::NavVector& x = out.fixed ? filter_.x_fixed() : filter_.x();
+  namespace st = nav::state;
+  out.p_dsc_body_m = st::kPhaseCenterUnit * x.segment<3>(st::phase_center(nav::Craft::kDsc));
+  out.p_osc_body_m = st::kPhaseCenterUnit * x.segment<3>(st::phase_center(nav::Craft::kOsc));
+  out.empirical_dsc_rtn_mps2 = st::kEmpiricalUnit * x.segment<3>(st::empirical_acceleration(nav::Craft::kDsc));
+  out.empirical_osc_rtn_mps2 = st::kEmpiricalUnit * x.segment<3>(st::empirical_acceleration(nav::Craft::kOsc));
+  return out;
 }
 
 }  // namespace visors::gnc

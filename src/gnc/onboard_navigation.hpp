@@ -74,18 +74,7 @@ struct OnboardNavigationSettings {
   [[nodiscard]] core::Result<bool> validate() const;
 };
 
-/// What the navigation did so far (telemetry).
-struct NavigationCounters {
-  std::int64_t epochs_joint = 0;      // processed with both receivers
-  std::int64_t epochs_alone = 0;      // processed with the own receiver only
-  std::int64_t epochs_refused = 0;    // refused by the filter (its report's reason)
-  std::int64_t epochs_fixed = 0;      // updates with a fixed solution
-  std::int64_t wrong_fixes_refused = 0;
-  std::int64_t impulses_applied = 0, impulses_late = 0;
-  std::int64_t laser_used = 0, laser_rejected = 0;
-  std::int64_t clock_jumps = 0;       // receiver clock jumps taken into the clock states
-  std::array<std::int64_t, 6> ephemerides{};  // by gnss::EphemerisStore::AcceptStatus
-};
+// NavigationCounters, what the navigation did so far, are part of its telemetry (messages.hpp).
 
 class OnboardNavigation {
  public:
@@ -119,6 +108,9 @@ class OnboardNavigation {
   [[nodiscard]] const nav::CdgpsEpochReport& last_report() const { return last_report_; }
   [[nodiscard]] const NavigationCounters& counters() const { return counters_; }
   [[nodiscard]] const nav::CdgpsFilter& filter() const { return filter_; }
+  /// The navigation telemetry record (messages.hpp) of the last solve(); `now` tags it before
+  /// the cold start. Allocation-free.
+  [[nodiscard]] NavigationTelemetry telemetry(core::GpsTime now) const;
 
  private:
   static constexpr int kEpochs = 4;     // buffered epochs per receiver

@@ -56,7 +56,8 @@ void RecordInterface::accept(RecordView record, GncInputs& in) {
       case Channel::kLaserRange: status = decode_into(record, in.t, gate_, in.laser_range, rejected_.laser_range); break;
       case Channel::kManeuver:
       case Channel::kObservation:
-      case Channel::kTelemetry: status = RecordStatus::kWrongChannel; break;  // outputs, not inputs
+      case Channel::kTelemetry:
+      case Channel::kNavigationTelemetry: status = RecordStatus::kWrongChannel; break;  // outputs, not inputs
     }
   }
   if (status != RecordStatus::kAccepted) count(refused_, status);
@@ -77,11 +78,12 @@ void RecordInterface::encode_outputs(const GncOutputs& out) {
   const auto write = [this](const auto& message, Channel channel, OutputRecords::Record& record) {
     record.size = encode(message, sequence_[static_cast<std::size_t>(channel)]++, record.bytes);
   };
-  out_.maneuver.size = out_.observation.size = out_.crosslink.size = 0;
+  out_.maneuver.size = out_.observation.size = out_.crosslink.size = out_.navigation.size = 0;
   if (out.maneuver) write(*out.maneuver, Channel::kManeuver, out_.maneuver);
   if (out.observation) write(*out.observation, Channel::kObservation, out_.observation);
   if (out.crosslink) write(*out.crosslink, Channel::kCrosslink, out_.crosslink);
   write(out.telemetry, Channel::kTelemetry, out_.telemetry);
+  if (out.navigation) write(*out.navigation, Channel::kNavigationTelemetry, out_.navigation);
 }
 
 }  // namespace visors::gnc

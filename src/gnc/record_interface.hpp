@@ -13,8 +13,9 @@
 // in a step the newest valid one is used, so garbage values never displace a good record.
 // Nothing crashes, nothing allocates (but an error's text when validation refuses a value),
 // nothing throws.
-// Outputs: the step's maneuver, observation, crosslink and telemetry, each as one record with its
-// channel's own sequence; the telemetry record every step.
+// Outputs: the step's maneuver, observation, crosslink, telemetry and navigation telemetry, each
+// as one record with its channel's own sequence; the telemetry record every step, the navigation
+// telemetry every step of a component with on-board navigation.
 
 #include <array>
 #include <cstddef>
@@ -39,6 +40,7 @@ struct OutputRecords {
     [[nodiscard]] RecordView view() const { return {bytes.data(), size}; }
   };
   Record maneuver, observation, crosslink, telemetry;
+  Record navigation;  // NavigationTelemetry (Channel::kNavigationTelemetry)
 };
 
 class RecordInterface {

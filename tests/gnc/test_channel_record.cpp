@@ -165,6 +165,39 @@ Telemetry telemetry() {
   return m;
 }
 
+// A navigation telemetry record after a full fix of three double differences (values of a
+// converged formation's magnitudes; only their bits matter here).
+NavigationTelemetry navigation_telemetry() {
+  NavigationTelemetry m;
+  m.t = t0() + 11.0;
+  m.has_solution = m.valid = m.fixed = m.fix_applied = m.full_fix = true;
+  m.dsc_gcrf = {Eigen::Vector3d(6878137.0, -1.5, 2.25), Eigen::Vector3d(0.1, 7612.6, -0.2)};
+  m.osc_gcrf = {Eigen::Vector3d(6878140.0, 39.0, 3.0), Eigen::Vector3d(0.1, 7612.61, -0.21)};
+  m.p_dsc_body_m = Eigen::Vector3d(1e-3, -2e-3, 4e-3);
+  m.p_osc_body_m = Eigen::Vector3d(-3e-3, 5e-4, -1e-3);
+  m.empirical_dsc_rtn_mps2 = Eigen::Vector3d(1e-8, -2e-7, 3e-9);
+  m.empirical_osc_rtn_mps2 = Eigen::Vector3d(-4e-8, 5e-7, -6e-9);
+  m.relative_sigma_rtn_m = Eigen::Vector3d(7e-4, 9e-4, 6e-4);
+  m.update_t = t0() + 10.0;
+  m.dd_reference_prn = 17;
+  m.dd_count = 3;
+  m.dd[0] = FixedDoubleDifference{3, -12, -12.0000000001};
+  m.dd[1] = FixedDoubleDifference{22, 7, 7.0};
+  m.dd[2] = FixedDoubleDifference{31, 1234567890123, 1234567890123.0};
+  m.counters.epochs_joint = 86000;
+  m.counters.epochs_alone = 400;
+  m.counters.epochs_refused = 2;
+  m.counters.epochs_fixed = 86300;
+  m.counters.wrong_fixes_refused = 1;
+  m.counters.impulses_applied = 30;
+  m.counters.impulses_late = 3;
+  m.counters.laser_used = 50;
+  m.counters.laser_rejected = 4;
+  m.counters.clock_jumps = 5;
+  m.counters.ephemerides = {400, 1, 2, 3000, 4, 5};
+  return m;
+}
+
 // A crosslink with its navigation part: the sender's epoch of two observations, its attitude,
 // two impulses and a range.
 CrosslinkMessage crosslink_with_navigation() {
@@ -360,6 +393,63 @@ TEST(ChannelRecord, TelemetryRoundTrip) {
   EXPECT_EQ(out.navigation_update, in.navigation_update);
 }
 
+TEST(ChannelRecord, NavigationTelemetryRoundTrip) {
+  RecordHeader h;
+  const NavigationTelemetry in = navigation_telemetry();
+  const NavigationTelemetry out = round_trip(in, Channel::kNavigationTelemetry, 19, h);
+  EXPECT_EQ(record_size(Channel::kNavigationTelemetry), 648u);
+  EXPECT_EQ(out.t, in.t);
+  EXPECT_EQ(h.sequence, 19u);
+  EXPECT_EQ(out.has_solution, in.has_solution);
+  EXPECT_EQ(out.valid, in.valid);
+  EXPECT_EQ(out.fixed, in.fixed);
+  EXPECT_EQ(out.fix_applied, in.fix_applied);
+  EXPECT_EQ(out.full_fix, in.full_fix);
+  EXPECT_EQ(out.dsc_gcrf.r, in.dsc_gcrf.r);
+  EXPECT_EQ(out.dsc_gcrf.v, in.dsc_gcrf.v);
+  EXPECT_EQ(out.osc_gcrf.r, in.osc_gcrf.r);
+  EXPECT_EQ(out.osc_gcrf.v, in.osc_gcrf.v);
+  EXPECT_EQ(out.p_dsc_body_m, in.p_dsc_body_m);
+  EXPECT_EQ(out.p_osc_body_m, in.p_osc_body_m);
+  EXPECT_EQ(out.empirical_dsc_rtn_mps2, in.empirical_dsc_rtn_mps2);
+  EXPECT_EQ(out.empirical_osc_rtn_mps2, in.empirical_osc_rtn_mps2);
+  EXPECT_EQ(out.relative_sigma_rtn_m, in.relative_sigma_rtn_m);
+  EXPECT_EQ(out.update_t, in.update_t);
+  EXPECT_EQ(out.dd_reference_prn, in.dd_reference_prn);
+  ASSERT_EQ(out.dd_count, 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(out.dd[k].prn, in.dd[k].prn);
+    EXPECT_EQ(out.dd[k].integer_cycles, in.dd[k].integer_cycles);
+    EXPECT_EQ(out.dd[k].fixed_cycles, in.dd[k].fixed_cycles);
+  }
+  const NavigationCounters& a = out.counters;
+  const NavigationCounters& b = in.counters;
+  EXPECT_EQ(a.epochs_joint, b.epochs_joint);
+  EXPECT_EQ(a.epochs_alone, b.epochs_alone);
+  EXPECT_EQ(a.epochs_refused, b.epochs_refused);
+  EXPECT_EQ(a.epochs_fixed, b.epochs_fixed);
+  EXPECT_EQ(a.wrong_fixes_refused, b.wrong_fixes_refused);
+  EXPECT_EQ(a.impulses_applied, b.impulses_applied);
+  EXPECT_EQ(a.impulses_late, b.impulses_late);
+  EXPECT_EQ(a.laser_used, b.laser_used);
+  EXPECT_EQ(a.laser_rejected, b.laser_rejected);
+  EXPECT_EQ(a.clock_jumps, b.clock_jumps);
+  EXPECT_EQ(a.ephemerides, b.ephemerides);
+}
+
+// Before the cold start: no solution, no fix, every double difference unused (all 0 bytes).
+TEST(ChannelRecord, NavigationTelemetryWithoutSolutionRoundTrip) {
+  NavigationTelemetry in;
+  in.t = t0() + 1.0;
+  in.counters.ephemerides[0] = 9;
+  RecordHeader h;
+  const NavigationTelemetry out = round_trip(in, Channel::kNavigationTelemetry, 20, h);
+  EXPECT_FALSE(out.has_solution);
+  EXPECT_FALSE(out.fix_applied);
+  EXPECT_EQ(out.dd_count, 0);
+  EXPECT_EQ(out.counters.ephemerides[0], 9);
+}
+
 TEST(ChannelRecord, ChannelOfReadsTheHeader) {
   RecordBuffer buffer{};
   const std::size_t n = encode(laser(), 1, buffer);
@@ -403,6 +493,7 @@ TEST(ChannelRecord, EveryBitFlipIsRefused) {
   EXPECT_EQ(accepted_flips(observation()), 0);
   EXPECT_EQ(accepted_flips(telemetry()), 0);
   EXPECT_EQ(accepted_flips(crosslink_with_navigation()), 0);
+  EXPECT_EQ(accepted_flips(navigation_telemetry()), 0);
 }
 
 TEST(ChannelRecord, EveryTruncationIsNamed) {
@@ -432,7 +523,7 @@ RecordStatus resealed(const Message& m, std::size_t offset, std::uint8_t value) 
 
 TEST(ChannelRecord, AnotherVersionIsNamed) { EXPECT_EQ(resealed(tone(), 3, 2), RecordStatus::kBadVersion); }
 
-TEST(ChannelRecord, AnUnknownChannelIsNamed) { EXPECT_EQ(resealed(tone(), 2, 11), RecordStatus::kUnknownChannel); }
+TEST(ChannelRecord, AnUnknownChannelIsNamed) { EXPECT_EQ(resealed(tone(), 2, 12), RecordStatus::kUnknownChannel); }
 
 // More observations than receiver channels cannot be a record.
 TEST(ChannelRecord, AGpsChannelCountBeyondTwelveIsNamed) {
@@ -459,6 +550,28 @@ TEST(ChannelRecord, ACrosslinkImpulseCountBeyondTwoIsNamed) {
   EXPECT_EQ(resealed(crosslink_with_navigation(), kHeaderBytes + 40 + 1, 3), RecordStatus::kBadEnumeration);
 }
 
+
+// A navigation telemetry record corrupted in its structure and re-sealed: more double differences
+// than the record holds, a flag other than 0 or 1, a non-zero byte in an unused double difference
+// or in a used one's padding. Each is refused with its reason (and leaves the output untouched).
+TEST(ChannelRecord, ACorruptedNavigationTelemetryIsRefused) {
+  const NavigationTelemetry m = navigation_telemetry();
+  constexpr std::size_t kDd = kHeaderBytes + 232;  // the first double difference
+  EXPECT_EQ(resealed(m, kHeaderBytes + 5, 12), RecordStatus::kBadEnumeration);  // 12 > 11 double differences
+  EXPECT_EQ(resealed(m, kHeaderBytes + 4, 2), RecordStatus::kBadEnumeration);   // full_fix = 2
+  EXPECT_EQ(resealed(m, kHeaderBytes + 7, 1), RecordStatus::kBadPadding);
+  EXPECT_EQ(resealed(m, kDd + 3 * 24 + 8, 1), RecordStatus::kBadPadding);        // the 4th of 3: unused
+  EXPECT_EQ(resealed(m, kDd + 1, 1), RecordStatus::kBadPadding);                 // the 1st's padding
+  EXPECT_EQ(resealed(m, kDd + 8, 99), RecordStatus::kAccepted);                  // an integer: any value
+  RecordBuffer buffer{};
+  const std::size_t n = encode(m, 1, buffer);
+  buffer[kDd + 8] ^= 0x01;  // a planted integer without a new checksum
+  NavigationTelemetry out;
+  out.dd_count = -1;
+  RecordHeader h;
+  EXPECT_EQ(decode(std::span(buffer).first(n), out, h), RecordStatus::kBadChecksum);
+  EXPECT_EQ(out.dd_count, -1);
+}
 
 TEST(ChannelRecord, AnUnknownModeIsNamed) { EXPECT_EQ(resealed(crosslink(), kHeaderBytes + 1, 6), RecordStatus::kBadEnumeration); }
 

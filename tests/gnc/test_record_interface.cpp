@@ -94,6 +94,15 @@ TEST(RecordInterface, AnOutputRecordAsInputIsTheWrongChannel) {
   EXPECT_EQ(refused(telemetry_of(gnc.step(kT0, views(records))), RecordStatus::kWrongChannel), 1);
 }
 
+// Nor is the navigation telemetry, an output too.
+TEST(RecordInterface, ANavigationTelemetryRecordAsInputIsTheWrongChannel) {
+  RecordInterface gnc = make();
+  NavigationTelemetry m;
+  m.t = kT0;
+  const std::vector<Encoded> records = {record(m, 0)};
+  EXPECT_EQ(refused(telemetry_of(gnc.step(kT0, views(records))), RecordStatus::kWrongChannel), 1);
+}
+
 // A record older than the last admitted of its channel is refused.
 TEST(RecordInterface, AnOlderRecordIsRefused) {
   RecordInterface gnc = make();
@@ -129,6 +138,7 @@ TEST(RecordInterface, EveryStepHasATelemetryRecordAndACrosslinkRecord) {
   RecordHeader h;
   EXPECT_EQ(decode(out.crosslink.view(), crosslink, h), RecordStatus::kAccepted);
   EXPECT_EQ(crosslink.sender, Spacecraft::kOsc);
+  EXPECT_EQ(out.navigation.size, 0u);  // no on-board navigation, no navigation telemetry
 }
 
 // The deterministic mutation test (file comment): 3,000 steps, every record of each mutated with

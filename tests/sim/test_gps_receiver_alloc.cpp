@@ -27,15 +27,17 @@ TEST(GpsReceiverAlloc, MeasureAllocatesNothing) {
 }  // namespace
 }  // namespace visors::sim
 
+#include "gnc/channel_record.hpp"
 #include "sim/navigation_setup.hpp"
 
 namespace visors::sim {
 namespace {
 
 // The flight rule for the on-board navigation (gnc/onboard_navigation.hpp): once started, a step
-// (the own epoch, the other's over the crosslink, the joint epoch's filter update, the solution)
-// allocates nothing, counted at malloc. The two receivers fly 40 m apart on the test world's
-// circular orbit; the broadcast records are loaded before the counted steps.
+// (the own epoch, the other's over the crosslink, the joint epoch's filter update, the solution,
+// its navigation telemetry record) allocates nothing, counted at malloc. The two receivers fly
+// 40 m apart on the test world's circular orbit; the broadcast records are loaded before the
+// counted steps.
 TEST(OnboardNavigationAlloc, StepAllocatesNothing) {
   if (!test::have_mission_nav()) GTEST_SKIP() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
   const gnss::GpsConstellation constellation = test::mission_constellation();
@@ -59,6 +61,8 @@ TEST(OnboardNavigationAlloc, StepAllocatesNothing) {
     nav.add_own_epoch(own, Eigen::Quaterniond::Identity());
     nav.add_peer(peer);
     (void)nav.solve(own.t + 1.0);
+    gnc::RecordBuffer record{};
+    (void)gnc::encode(nav.telemetry(own.t + 1.0), 0, record);  // its telemetry record too
   };
   for (int k = 0; k < 30; ++k) step(k);  // the cold start and the first updates
   ASSERT_TRUE(nav.initialised());
