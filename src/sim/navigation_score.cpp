@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/rtn_frame.hpp"
+#include "gnss/ephemeris_store.hpp"
 #include "nav/fix_truth.hpp"
 
 namespace visors::sim {
@@ -15,6 +16,24 @@ namespace {
 std::size_t index_of(gnc::Spacecraft s) { return s == gnc::Spacecraft::kDsc ? 0 : 1; }
 
 double rms(double sum_sq, std::int64_t n) { return n > 0 ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0; }
+
+// The navigation's counters as summary.json names them.
+void add_counters(nlohmann::json& n, const gnc::NavigationCounters& c) {
+  nlohmann::json ephemerides;
+  for (std::size_t e = 0; e < c.ephemerides.size(); ++e) {
+    ephemerides[gnss::to_string(static_cast<gnss::EphemerisStore::AcceptStatus>(e))] = c.ephemerides[e];
+  }
+  n["epochs_joint"] = c.epochs_joint;
+  n["epochs_alone"] = c.epochs_alone;
+  n["epochs_refused"] = c.epochs_refused;
+  n["wrong_fixes_refused"] = c.wrong_fixes_refused;
+  n["impulses_applied"] = c.impulses_applied;
+  n["impulses_late"] = c.impulses_late;
+  n["laser_ranges_used"] = c.laser_used;
+  n["laser_ranges_rejected"] = c.laser_rejected;
+  n["clock_jumps"] = c.clock_jumps;
+  n["ephemerides"] = ephemerides;
+}
 
 }  // namespace
 
@@ -39,75 +58,128 @@ const NavigationScore::PhaseTruth* NavigationScore::phase_truth(gnc::Spacecraft 
   return nullptr;
 }
 
+double NavigationScore::true_sd(const PhaseTruth& dsc, const PhaseTruth& osc, int prn) {
+  const auto find = [prn](const PhaseTruth& p) {
+    for (int k = 0; k < p.count; ++k) {
+      if (p.prn[static_cast<std::size_t>(k)] == prn) return p.cycles[static_cast<std::size_t>(k)];
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  };
+  return find(osc) - find(dsc);
+}
+
 // The fixed SD ambiguities' double differences against the truth's (file comment).
 bool NavigationScore::wrong_fix(const gnc::OnboardNavigation& navigation, core::GpsTime t) const {
   const PhaseTruth* dsc = phase_truth(gnc::Spacecraft::kDsc, t);
   const PhaseTruth* osc = phase_truth(gnc::Spacecraft::kOsc, t);
   if (dsc == nullptr || osc == nullptr) return false;
-  const auto true_sd = [&](int prn) {
-    const auto find = [prn](const PhaseTruth& p) {
-      for (int k = 0; k < p.count; ++k) {
-        if (p.prn[static_cast<std::size_t>(k)] == prn) return p.cycles[static_cast<std::size_t>(k)];
-      }
-      return std::numeric_limits<double>::quiet_NaN();
-    };
-    return find(*osc) - find(*dsc);
-  };
-  return nav::wrong_fix(navigation.filter(), navigation.last_report(), true_sd);
+  return nav::wrong_fix(navigation.filter(), navigation.last_report(), [&](int prn) { return true_sd(*dsc, *osc, prn); });
 }
 
-// The processed epochs since the last step: counted, and the last one's fix scored.
-void NavigationScore::count_epoch(Accumulator& a, const gnc::OnboardNavigation& navigation, double t_s) {
-  const gnc::NavigationCounters& c = navigation.counters();
-  const std::int64_t epochs = c.epochs_joint + c.epochs_alone;
-  const core::GpsTime t = navigation.last_update();
-  if (epochs == a.epochs || (a.have_scored && t <= a.last_scored)) return;
+// The record's double differences against the truth's of its epoch: a full fix's integers, a
+// partial fix's fixed-solution values (file comment); one NaN (a satellite the truth or the
+// filter lacks) leaves its double difference unjudged, as nav::wrong_fix does.
+bool NavigationScore::wrong_fix(const gnc::NavigationTelemetry& record) const {
+  const PhaseTruth* dsc = phase_truth(gnc::Spacecraft::kDsc, record.update_t);
+  const PhaseTruth* osc = phase_truth(gnc::Spacecraft::kOsc, record.update_t);
+  if (dsc == nullptr || osc == nullptr) return false;
+  const double reference = true_sd(*dsc, *osc, record.dd_reference_prn);
+  const int count = std::clamp(record.dd_count, 0, gnc::kTelemetryDoubleDifferences);
+  for (int j = 0; j < count; ++j) {
+    const gnc::FixedDoubleDifference& d = record.dd[static_cast<std::size_t>(j)];
+    const double estimated = record.full_fix ? static_cast<double>(d.integer_cycles) : d.fixed_cycles;
+    const double expected = true_sd(*dsc, *osc, d.prn) - reference;
+    if (std::isfinite(expected) && std::abs(estimated - expected) > 0.5) return true;
+  }
+  return false;
+}
+
+// The cold start, the receiver time tags after it, the processed epochs since the last step; the
+// last one's fix is the one judged.
+bool NavigationScore::count_step(Accumulator& a, bool has_solution, const gnc::NavigationCounters& counters,
+                                 core::GpsTime update_t, bool fix_applied, double t_s) {
+  a.have_counters = true;
+  a.counters = counters;
+  if (has_solution && a.first_solution_s < 0.0) a.first_solution_s = t_s;  // the cold start
+  if (a.first_solution_s >= 0.0 && t_s > a.first_solution_s) ++a.time_tags;
+  if (!has_solution) return false;
+  const std::int64_t epochs = counters.epochs_joint + counters.epochs_alone;
+  if (epochs == a.epochs || (a.have_scored && update_t <= a.last_scored)) return false;
   a.epochs = epochs;
   a.have_scored = true;
-  a.last_scored = t;
-  if (!navigation.last_report().fix_applied) return;
-  a.fixed = c.epochs_fixed;
+  a.last_scored = update_t;
+  if (!fix_applied) return false;
+  a.fixed = counters.epochs_fixed;
   if (a.first_fix_s < 0.0) {
     a.first_fix_s = t_s;
     a.epochs_before_first_fix = epochs - 1;
   }
-  if (wrong_fix(navigation, t)) ++a.wrong;
+  return true;
+}
+
+NavigationSample NavigationScore::score(gnc::Spacecraft who, const gnc::NavigationTelemetry& record, double t_s,
+                                        const FormationTruth& truth, bool in_slew) {
+  Accumulator& a = stats_[index_of(who)];
+  if (count_step(a, record.has_solution, record.counters, record.update_t, record.fix_applied, t_s) && wrong_fix(record)) {
+    ++a.wrong;
+  }
+  if (!record.has_solution || !record.valid) {
+    if (record.has_solution) ++a.steps_invalid;
+    return {};
+  }
+  const Estimate e{record.dsc_gcrf,           record.osc_gcrf,           record.p_dsc_body_m,         record.p_osc_body_m,
+                   record.empirical_dsc_rtn_mps2, record.empirical_osc_rtn_mps2, record.relative_sigma_rtn_m, record.fixed};
+  return add_solution(a, e, truth, in_slew);
 }
 
 NavigationSample NavigationScore::score(gnc::Spacecraft who, const gnc::OnboardNavigation& navigation, double t_s,
                                         const FormationTruth& truth, bool in_slew) {
-  NavigationSample sample;
   const auto& solution = navigation.last_solution();
   Accumulator& a = stats_[index_of(who)];
-  if (solution && a.first_solution_s < 0.0) a.first_solution_s = t_s;  // the cold start
-  if (a.first_solution_s >= 0.0 && t_s > a.first_solution_s) ++a.time_tags;
-  if (solution) count_epoch(a, navigation, t_s);
+  const core::GpsTime t = navigation.last_update();
+  if (count_step(a, solution.has_value(), navigation.counters(), t, navigation.last_report().fix_applied, t_s) &&
+      wrong_fix(navigation, t)) {
+    ++a.wrong;
+  }
   if (!solution || !navigation.valid()) {
     if (solution) ++a.steps_invalid;
-    return sample;
+    return {};
   }
+  const nav::NavVector& x = navigation.fixed() ? navigation.filter().x_fixed() : navigation.filter().x();
+  namespace st = nav::state;
+  using nav::Craft;
+  Estimate e;
+  e.dsc_gcrf = solution->chief_gcrf;
+  e.osc_gcrf = solution->deputy_gcrf;
+  e.p_dsc_body_m = st::kPhaseCenterUnit * x.segment<3>(st::phase_center(Craft::kDsc));
+  e.p_osc_body_m = st::kPhaseCenterUnit * x.segment<3>(st::phase_center(Craft::kOsc));
+  e.empirical_dsc_rtn_mps2 = st::kEmpiricalUnit * x.segment<3>(st::empirical_acceleration(Craft::kDsc));
+  e.empirical_osc_rtn_mps2 = st::kEmpiricalUnit * x.segment<3>(st::empirical_acceleration(Craft::kOsc));
+  e.sigma_rtn_m = solution->relative_covariance_rtn.diagonal().head<3>().cwiseMax(0.0).cwiseSqrt();
+  e.fixed = navigation.fixed();
+  return add_solution(a, e, truth, in_slew);
+}
+
+NavigationSample NavigationScore::add_solution(Accumulator& a, const Estimate& e, const FormationTruth& truth, bool in_slew) {
+  NavigationSample sample;
   const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(truth.dsc_gcrf);
-  const Eigen::Vector3d position_gcrf =
-      (solution->deputy_gcrf.r - solution->chief_gcrf.r) - (truth.osc_gcrf.r - truth.dsc_gcrf.r);
+  const Eigen::Vector3d position_gcrf = (e.osc_gcrf.r - e.dsc_gcrf.r) - (truth.osc_gcrf.r - truth.dsc_gcrf.r);
   // The estimated antenna is the estimated centre of mass + C (known lever + p), the true one the
   // true centre of mass + C (known lever + l), l the true minus the known lever: their difference
   // is the position error + C (p - l) per spacecraft.
-  const nav::NavVector& x = navigation.fixed() ? navigation.filter().x_fixed() : navigation.filter().x();
-  const auto lever = [&x](nav::Craft craft, const Eigen::Matrix3d& c, const Eigen::Vector3d& lever_error) {
-    return Eigen::Vector3d(c * (nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft)) - lever_error));
+  const auto lever = [](const Eigen::Matrix3d& c, const Eigen::Vector3d& p, const Eigen::Vector3d& lever_error) {
+    return Eigen::Vector3d(c * (p - lever_error));
   };
-  const Eigen::Vector3d lever_gcrf = lever(nav::Craft::kOsc, truth.osc_body_to_gcrf, truth.osc_lever_error_m) -
-                                     lever(nav::Craft::kDsc, truth.dsc_body_to_gcrf, truth.dsc_lever_error_m);
+  const Eigen::Vector3d lever_gcrf = lever(truth.osc_body_to_gcrf, e.p_osc_body_m, truth.osc_lever_error_m) -
+                                     lever(truth.dsc_body_to_gcrf, e.p_dsc_body_m, truth.dsc_lever_error_m);
   sample.valid = true;
-  sample.fixed = navigation.fixed();
+  sample.fixed = e.fixed;
   sample.position_rtn_m = R * position_gcrf;
   sample.antenna_rtn_m = R * (position_gcrf + lever_gcrf);
-  sample.velocity_rtn_mps =
-      R * ((solution->deputy_gcrf.v - solution->chief_gcrf.v) - (truth.osc_gcrf.v - truth.dsc_gcrf.v));
-  sample.sigma_rtn_m = solution->relative_covariance_rtn.diagonal().head<3>().cwiseMax(0.0).cwiseSqrt();
-  using nav::Craft;
-  sample.empirical_dsc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kDsc));
-  sample.empirical_osc_rtn_mps2 = nav::state::kEmpiricalUnit * x.segment<3>(nav::state::empirical_acceleration(Craft::kOsc));
+  sample.velocity_rtn_mps = R * ((e.osc_gcrf.v - e.dsc_gcrf.v) - (truth.osc_gcrf.v - truth.dsc_gcrf.v));
+  sample.sigma_rtn_m = e.sigma_rtn_m;
+  sample.empirical_dsc_rtn_mps2 = e.empirical_dsc_rtn_mps2;
+  sample.empirical_osc_rtn_mps2 = e.empirical_osc_rtn_mps2;
   const double p2 = sample.position_rtn_m.squaredNorm();
   const double a2 = sample.antenna_rtn_m.squaredNorm();
   ++a.steps;
@@ -151,6 +223,7 @@ nlohmann::json NavigationScore::summary() const {
         {"wrong_fix_rate", static_cast<double>(a.wrong) / epochs},
         {"time_to_first_fix_s", a.first_fix_s >= 0.0 ? a.first_fix_s - a.first_solution_s : -1.0},
     };
+    if (a.have_counters) add_counters(out[names[k]], a.counters);
   }
   return out;
 }

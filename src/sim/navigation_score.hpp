@@ -15,12 +15,20 @@
 //    centre in the body frame: FormationTruth): what the GPS measurements determine, the paper's
 //    figure (as `visors nav`);
 //  - relative velocity: estimated minus true inertial velocity difference.
+// The score reads what the component outputs, its navigation telemetry record
+// (gnc::NavigationTelemetry: the solution in use, its phase-centre and empirical-acceleration
+// estimates, the last epoch's fix and its double-difference integers, the counters), as a ground
+// segment would; the overload on the component itself (gnc::OnboardNavigation) gives the same
+// results and goes once the callers read the records.
 // Only the solutions the component uses (valid: OnboardNavigation::valid()) are scored; the steps
 // with a solution not yet (or no longer) valid are counted. The statistics leave out the slews to and from the observations (the satellites in view change
 // at 1.5 deg/s) where the issue asks so ("outside the slews"), and report them whole too.
 // A fix is wrong when a double difference of the fixed SDCP ambiguities of a processed epoch
 // differs from the truth's (the receivers' integer ambiguities and phase offsets of that epoch)
-// by more than half a cycle; each processed epoch is scored once. fix_rate counts every processed
+// by more than half a cycle; each processed epoch is scored once. From the record: a full fix's
+// integers, a partial fix's fixed-solution double differences (it fixes integer combinations,
+// not single double differences), the values nav::wrong_fix reads from the component's fixed
+// solution. The summary carries the counters of the last record. fix_rate counts every processed
 // epoch, fix_rate_after_first_fix those from the first fixed one on (the float time after the cold
 // start is time_to_first_fix_s). fix_rate_all_epochs counts every receiver time tag after the cold
 // start (receiver_time_tags): the receiver measures at every step (CampaignSimulation), so these
@@ -67,12 +75,16 @@ class NavigationScore {
   /// A receiver's epoch as measured (its channels' true ambiguities and phase offset).
   void record_phase_truth(gnc::Spacecraft receiver, const GpsReceiverEpoch& epoch);
 
-  /// Scores `navigation`'s solution at t_s against the truth; in_slew: the step lies in a slew
-  /// to or from an observation.
+  /// Scores the solution of `who`'s navigation telemetry record of the step at t_s against the
+  /// truth; in_slew: the step lies in a slew to or from an observation.
+  NavigationSample score(gnc::Spacecraft who, const gnc::NavigationTelemetry& record, double t_s,
+                         const FormationTruth& truth, bool in_slew);
+  /// The same from the component's navigation itself (to go: file comment).
   NavigationSample score(gnc::Spacecraft who, const gnc::OnboardNavigation& navigation, double t_s,
                          const FormationTruth& truth, bool in_slew);
 
-  /// summary.json's "navigation": per spacecraft (file comment).
+  /// summary.json's "navigation": per spacecraft (file comment), with the counters of its last
+  /// scored record.
   [[nodiscard]] nlohmann::json summary() const;
 
  private:
@@ -94,11 +106,29 @@ class NavigationScore {
     bool have_scored = false;
     core::GpsTime last_scored;
     double first_solution_s = -1.0, first_fix_s = -1.0;
+    bool have_counters = false;
+    gnc::NavigationCounters counters;  // of the last scored step
+  };
+  /// A solution as the score needs it, from either source.
+  struct Estimate {
+    core::StateVector dsc_gcrf, osc_gcrf;
+    Eigen::Vector3d p_dsc_body_m, p_osc_body_m;
+    Eigen::Vector3d empirical_dsc_rtn_mps2, empirical_osc_rtn_mps2;
+    Eigen::Vector3d sigma_rtn_m;
+    bool fixed = false;
   };
 
   [[nodiscard]] const PhaseTruth* phase_truth(gnc::Spacecraft receiver, core::GpsTime t) const;
+  /// The true single difference of `prn` at the epoch of `dsc` and `osc` (NaN when either
+  /// receiver did not track it) [cycles].
+  [[nodiscard]] static double true_sd(const PhaseTruth& dsc, const PhaseTruth& osc, int prn);
   [[nodiscard]] bool wrong_fix(const gnc::OnboardNavigation& navigation, core::GpsTime t) const;
-  void count_epoch(Accumulator& a, const gnc::OnboardNavigation& navigation, double t_s);
+  [[nodiscard]] bool wrong_fix(const gnc::NavigationTelemetry& record) const;
+  /// Counts the cold start, the step and the processed epochs up to the step; true when the
+  /// last epoch is new and fixed (its fix is to be judged).
+  static bool count_step(Accumulator& a, bool has_solution, const gnc::NavigationCounters& counters, core::GpsTime update_t,
+                         bool fix_applied, double t_s);
+  static NavigationSample add_solution(Accumulator& a, const Estimate& e, const FormationTruth& truth, bool in_slew);
 
   std::array<std::array<PhaseTruth, kTruthEpochs>, 2> truth_{};
   std::array<int, 2> next_truth_{};
