@@ -48,21 +48,15 @@ const nav::GpsReceiverEpoch* at(const std::vector<nav::GpsReceiverEpoch>& epochs
   return it != epochs.end() && it->t == t ? &*it : nullptr;
 }
 
-// The attitudes the spacecraft know at t_s (nav_inputs.hpp); nullptr when the run has none then.
-const std::array<CraftTruth, 2>* attitudes_at(const RunInputs& in, double t_s) {
-  const auto it = in.truth.find(key_ms(t_s));
-  return it == in.truth.end() ? nullptr : &it->second;
-}
-
 // Cold start (as on board, nav/cold_start.hpp) from the joint epoch; the antennas in the
-// attitudes known at t_s.
+// attitudes known at t_s, the data sets the local receiver has decoded.
 bool try_cold_start(nav::CdgpsFilter& filter, nav::ColdStart& cold, const nav::GpsReceiverEpoch* epochs[2], const RunInputs& in,
-                    core::OnboardEarthFrame& frame) {
+                    const gnss::EphemerisSource& ephemerides, core::OnboardEarthFrame& frame) {
   if (epochs[0] == nullptr || epochs[1] == nullptr) return false;
-  const auto* attitudes = attitudes_at(in, epochs[0]->t.seconds_since(in.scenario.t0));
+  const auto* attitudes = known_attitudes_at(in, epochs[0]->t.seconds_since(in.scenario.t0));
   if (attitudes == nullptr) return false;
-  const auto solution = cold.add(*epochs[0], *epochs[1], antenna_geometry((*attitudes)[0].body_to_gcrf),
-                                 antenna_geometry((*attitudes)[1].body_to_gcrf), in.ephemerides, frame);
+  const auto solution = cold.add(*epochs[0], *epochs[1], antenna_geometry((*attitudes)[0]), antenna_geometry((*attitudes)[1]),
+                                 ephemerides, frame);
   if (!solution) return false;
   filter.initialise(solution->t, solution->dsc_gcrf, solution->osc_gcrf, solution->dsc_clock_m, solution->osc_clock_m);
   return true;
@@ -130,11 +124,12 @@ void apply_impulses(nav::CdgpsFilter& f, const RunInputs& in, std::size_t& next,
 }
 
 // The laser range of this epoch, if any and if it reached this filter, into the filter.
-const char* fuse_laser_range(nav::CdgpsFilter& f, const RunInputs& in, double t_s, const std::array<CraftTruth, 2>& attitudes) {
+const char* fuse_laser_range(nav::CdgpsFilter& f, const RunInputs& in, double t_s,
+                             const std::array<Eigen::Quaterniond, 2>& attitudes) {
   const auto z = in.laser_ranges_m.find(key_ms(t_s));
   if (z == in.laser_ranges_m.end()) return "";
-  const nav::ScalarUpdateStatus status = f.update_laser_range(z->second, in.scenario.gnss.lrf.sigma_m,
-                                                              laser_geometry(attitudes[0].body_to_gcrf, attitudes[1].body_to_gcrf));
+  const nav::ScalarUpdateStatus status =
+      f.update_laser_range(z->second, in.scenario.gnss.lrf.sigma_m, laser_geometry(attitudes[0], attitudes[1]));
   return status == nav::ScalarUpdateStatus::kAccepted ? "used" : "rejected";
 }
 
@@ -197,7 +192,8 @@ std::vector<double> time_tags(const RunInputs& in, double duration_s) {
   return out;
 }
 
-// One filter over the run, driven by its own receiver's epochs.
+// One filter over the run, driven by its own receiver's epochs, with the attitudes the ADCSs
+// reported and the data sets its own receiver has decoded (nav_inputs.hpp).
 Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
   Replay out;
   out.local = local;
@@ -213,6 +209,7 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
   nav::GpsReceiverEpoch flagged[2];
   std::size_t next_impulse = 0;
   const std::size_t remote = local == Craft::kDsc ? 1 : 0;
+  const DecodedEphemerides& ephemerides = in.decoded_ephemerides[static_cast<std::size_t>(local)];
   const std::vector<nav::GpsReceiverEpoch>& own = local == Craft::kDsc ? in.dsc : in.osc;
   const std::vector<nav::GpsReceiverEpoch>& other = local == Craft::kDsc ? in.osc : in.dsc;
   for (std::size_t i = 0; i < own.size(); ++i) {
@@ -240,16 +237,15 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
     }
     const bool crosslink_lost = drop(rng);
     if (crosslink_lost) epochs[remote] = nullptr;
-    const auto* attitudes = attitudes_at(in, t_s);
+    const auto* attitudes = known_attitudes_at(in, t_s);
     if (attitudes == nullptr) continue;
     if (!f.initialised()) {
-      if (try_cold_start(f, cold, epochs, in, frame)) out.start_s = t_s;
+      if (try_cold_start(f, cold, epochs, in, ephemerides, frame)) out.start_s = t_s;
       continue;
     }
     f.predict(t);
-    const nav::CdgpsEpochInput input{epochs[0], epochs[1], antenna_geometry((*attitudes)[0].body_to_gcrf),
-                                     antenna_geometry((*attitudes)[1].body_to_gcrf)};
-    const nav::CdgpsEpochReport report = f.update(input, in.ephemerides, frame);
+    const nav::CdgpsEpochInput input{epochs[0], epochs[1], antenna_geometry((*attitudes)[0]), antenna_geometry((*attitudes)[1])};
+    const nav::CdgpsEpochReport report = f.update(input, ephemerides, frame);
     // The LRF is on the OSC: the DSC's filter gets its range over the crosslink.
     const bool laser_here = r.fuse_laser && (local == Craft::kOsc || !crosslink_lost);
     const char* laser = laser_here ? fuse_laser_range(f, in, t_s, *attitudes) : "";

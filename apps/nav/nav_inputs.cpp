@@ -14,7 +14,6 @@
 #include "gnc/onboard_navigation.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/files/rinex_obs_file.hpp"
-#include "sim/navigation_setup.hpp"
 #include "sim/random_stream.hpp"
 #include "sim/spacecraft_geometry.hpp"
 
@@ -97,6 +96,67 @@ core::Result<bool> read_truth(const std::filesystem::path& path, RunInputs& in) 
         CraftTruth{{Eigen::Vector3d(v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6])}, q.normalized(), v[11]};
     return true;
   });
+}
+
+// A file gnss-sim writes since the ADCS and the decoding delay: its absence is an older run.
+core::Result<bool> require(const std::filesystem::path& path, const char* what) {
+  if (std::filesystem::exists(path)) return true;
+  return Error{path.string(), std::string("is missing: ") + what +
+                                  "; the run is of a gnss-sim before it (re-run gnss-sim: visors nav never gives the "
+                                  "filter the truth in its place)"};
+}
+
+// attitude_reported.csv: what each ADCS reported (the filter's attitude), both spacecraft at every
+// epoch listed.
+core::Result<bool> read_known_attitude(const std::filesystem::path& path, RunInputs& in) {
+  if (auto ok = require(path, "the attitude each ADCS reported"); !ok) return ok;
+  constexpr std::array<std::string_view, 6> columns = {"t_s", "spacecraft", "qw_body_to_gcrf", "qx_body_to_gcrf",
+                                                       "qy_body_to_gcrf", "qz_body_to_gcrf"};
+  std::map<long long, int> crafts_listed;  // per epoch: bit 0 DSC, bit 1 OSC
+  auto ok = read_rows(path, columns, "reported attitude file", [&](std::size_t line, Fields fields) -> core::Result<bool> {
+    std::array<double, 5> v{};
+    if (!parse_fields(fields, 0, std::span(v).first(1)) || !parse_fields(fields, 2, std::span(v).subspan(1))) {
+      return not_a_number(line);
+    }
+    const auto craft = craft_named(fields[1], line);
+    if (!craft) return craft.error();
+    const Eigen::Quaterniond q(v[1], v[2], v[3], v[4]);
+    if (std::abs(q.norm() - 1.0) > 1e-6) return Error{"line " + std::to_string(line), "attitude quaternion is not unit"};
+    in.known_attitude[key_ms(v[0])][static_cast<std::size_t>(*craft)] = q.normalized();
+    crafts_listed[key_ms(v[0])] |= 1 << static_cast<int>(*craft);
+    return true;
+  });
+  if (!ok) return ok;
+  for (const auto& [t_ms, listed] : crafts_listed) {
+    if (listed != 3) return Error{path.string(), "t_s " + std::to_string(static_cast<double>(t_ms) / 1000.0) + ": not both spacecraft"};
+  }
+  return true;
+}
+
+// ephemeris_decoded.csv: per receiver, when it decoded each data set of brdc.rnx.
+core::Result<bool> read_decoded_data_sets(const std::filesystem::path& path, RunInputs& in) {
+  if (auto ok = require(path, "when each receiver decoded each broadcast data set"); !ok) return ok;
+  constexpr std::array<std::string_view, 5> columns = {"t_s", "spacecraft", "prn", "toe_week", "toe_sow"};
+  std::array<std::vector<DecodedDataSet>, 2> decoded;
+  auto ok = read_rows(path, columns, "ephemeris decoding file", [&](std::size_t line, Fields fields) -> core::Result<bool> {
+    std::array<double, 4> v{};  // t_s, then prn, toe week, toe seconds of week
+    if (!parse_fields(fields, 0, std::span(v).first(1)) || !parse_fields(fields, 2, std::span(v).subspan(1))) {
+      return not_a_number(line);
+    }
+    const auto craft = craft_named(fields[1], line);
+    if (!craft) return craft.error();
+    const auto toe = core::GpsTime::from_week_seconds(static_cast<int>(v[2]), v[3]);
+    if (!toe) return Error{"line " + std::to_string(line), "toe_week, toe_sow: " + toe.error().message};
+    decoded[static_cast<std::size_t>(*craft)].push_back({static_cast<int>(v[1]), *toe, in.scenario.t0 + v[0]});
+    return true;
+  });
+  if (!ok) return ok;
+  for (std::size_t k = 0; k < 2; ++k) {
+    auto made = DecodedEphemerides::create(in.ephemerides, decoded[k], path.string());
+    if (!made) return made.error();
+    in.decoded_ephemerides[k] = std::move(made).value();
+  }
+  return true;
 }
 
 // maneuvers.csv: the commanded columns only (the executed ones are the truth).
@@ -193,11 +253,16 @@ nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf) {
   return a;
 }
 
+const std::array<Eigen::Quaterniond, 2>* known_attitudes_at(const RunInputs& in, double t_s) {
+  const auto it = in.known_attitude.find(key_ms(t_s));
+  return it == in.known_attitude.end() ? nullptr : &it->second;
+}
+
 Eigen::Vector3d known_angular_velocity_gcrf(const RunInputs& in, double t_s, std::size_t craft) {
   const double step_s = in.scenario.step_s;
   const auto attitude_at = [&](double at_s) -> const Eigen::Quaterniond* {
-    const auto it = in.truth.find(key_ms(at_s));
-    return it == in.truth.end() ? nullptr : &it->second[craft].body_to_gcrf;
+    const auto* both = known_attitudes_at(in, at_s);
+    return both == nullptr ? nullptr : &(*both)[craft];
   };
   const Eigen::Quaterniond* now = attitude_at(t_s);
   const Eigen::Quaterniond* before = attitude_at(t_s - step_s);
@@ -237,6 +302,8 @@ core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
   auto ephemerides = read_ephemerides(run_dir / "brdc.rnx");
   if (!ephemerides) return ephemerides.error();
   in.ephemerides = std::move(ephemerides).value();
+  if (auto ok = read_decoded_data_sets(run_dir / "ephemeris_decoded.csv", in); !ok) return ok.error();
+  if (auto ok = read_known_attitude(run_dir / "attitude_reported.csv", in); !ok) return ok.error();
   if (auto ok = read_truth(run_dir / "truth.csv", in); !ok) return ok.error();
   if (auto ok = read_impulses(run_dir / "maneuvers.csv", in); !ok) return ok.error();
   if (auto ok = read_laser_ranges(run_dir / "lrf.csv", in); !ok) return ok.error();
@@ -247,7 +314,6 @@ core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
     sim::RandomStream rng(in.scenario.seed, std::string(names[k]) + ".geometry");  // as gnss-sim draws it
     const auto geometry = sim::SpacecraftGeometry::draw(in.scenario.geometry, rng);
     in.payload_lever_error_body_m[k] = geometry.payload_from_com_body_m() - geometry.payload_from_com_nominal_body_m();
-    in.antenna_lever_error_body_m[k] = in.true_antenna_lever_body_m[k] - sim::known_antenna_lever_body_m();
   }
   return in;
 }

@@ -46,31 +46,30 @@ void locate(const RunInputs& in, double t_s, EpochScore& e) {
   }
 }
 
-// The relative error of the payload reference points (the estimate's nominal levers against the
-// true ones), split along the true line of sight OSC -> DSC and across it.
-void score_payload(const Eigen::Vector3d& relative_com_error_gcrf, const std::array<CraftTruth, 2>& truth,
-                   const RunInputs& in, RelativeErrors& e) {
-  const Eigen::Matrix3d c_dsc = truth[0].body_to_gcrf.toRotationMatrix();
-  const Eigen::Matrix3d c_osc = truth[1].body_to_gcrf.toRotationMatrix();
-  const nav::LaserRangeGeometry nominal = laser_geometry(truth[0].body_to_gcrf, truth[1].body_to_gcrf);
-  const Eigen::Vector3d p_dsc = truth[0].x_gcrf.r + c_dsc * (nominal.dsc_lever_body_m + in.payload_lever_error_body_m[0]);
-  const Eigen::Vector3d p_osc = truth[1].x_gcrf.r + c_osc * (nominal.osc_lever_body_m + in.payload_lever_error_body_m[1]);
+// The relative error of the payload reference points (the estimate's: its centres of mass and the
+// nominal levers in the known attitudes; the truth's: the true centres of mass and levers in the
+// true attitudes), split along the true line of sight OSC -> DSC and across it.
+void score_payload(const std::array<core::StateVector, 2>& estimated_com, const std::array<CraftTruth, 2>& truth,
+                   const std::array<Eigen::Quaterniond, 2>& known, const RunInputs& in, RelativeErrors& e) {
+  const nav::LaserRangeGeometry told = laser_geometry(known[0], known[1]);  // nominal levers, known attitudes
+  const Eigen::Vector3d p_dsc = truth[0].x_gcrf.r + truth[0].body_to_gcrf * (told.dsc_lever_body_m + in.payload_lever_error_body_m[0]);
+  const Eigen::Vector3d p_osc = truth[1].x_gcrf.r + truth[1].body_to_gcrf * (told.osc_lever_body_m + in.payload_lever_error_body_m[1]);
+  const Eigen::Vector3d est_dsc = estimated_com[0].r + told.dsc_body_to_gcrf * told.dsc_lever_body_m;
+  const Eigen::Vector3d est_osc = estimated_com[1].r + told.osc_body_to_gcrf * told.osc_lever_body_m;
   const Eigen::Vector3d los = (p_dsc - p_osc).normalized();
-  // (est_osc + C_osc l) - (est_dsc + C_dsc l) - (p_osc - p_dsc), l the nominal levers.
-  const Eigen::Vector3d error = relative_com_error_gcrf - c_osc * in.payload_lever_error_body_m[1] +
-                                c_dsc * in.payload_lever_error_body_m[0];
+  const Eigen::Vector3d error = (est_osc - est_dsc) - (p_osc - p_dsc);
   e.payload_los_m = -error.dot(los);  // > 0: the estimated OSC -> DSC distance is too long
   e.payload_lateral_m = (error - error.dot(los) * los).norm();
 }
 
 // Both spacecraft's estimated centres of mass and antennas (EpochScore), in the attitudes known
-// at t_s.
-void estimate_states(const nav::NavVector& x, const RunInputs& in, double t_s, const std::array<CraftTruth, 2>& known,
+// at t_s (the ADCS's reports).
+void estimate_states(const nav::NavVector& x, const RunInputs& in, double t_s, const std::array<Eigen::Quaterniond, 2>& known,
                      EpochScore& e) {
   for (const Craft craft : {Craft::kDsc, Craft::kOsc}) {
     const auto k = static_cast<std::size_t>(craft);
     e.com_gcrf[k] = nav::CdgpsFilter::centre_of_mass(x, craft);
-    e.antenna_gcrf[k] = estimated_antenna(x, craft, known[k].body_to_gcrf, known_angular_velocity_gcrf(in, t_s, k));
+    e.antenna_gcrf[k] = estimated_antenna(x, craft, known[k], known_angular_velocity_gcrf(in, t_s, k));
   }
 }
 
@@ -86,28 +85,28 @@ core::StateVector estimated_antenna(const nav::NavVector& x, Craft craft, const 
 RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, double t_s) {
   RelativeErrors out;
   const auto truth = in.truth.find(key_ms(t_s));
-  if (truth == in.truth.end()) return out;
+  const auto* known = known_attitudes_at(in, t_s);
+  if (truth == in.truth.end() || known == nullptr) return out;
   out.valid = true;
-  const core::StateVector& dsc = truth->second[0].x_gcrf;
-  const core::StateVector& osc = truth->second[1].x_gcrf;
-  const core::StateVector est_dsc = nav::CdgpsFilter::centre_of_mass(x, Craft::kDsc);
-  const core::StateVector est_osc = nav::CdgpsFilter::centre_of_mass(x, Craft::kOsc);
+  const std::array<CraftTruth, 2>& true_crafts = truth->second;
+  const core::StateVector& dsc = true_crafts[0].x_gcrf;
+  const core::StateVector& osc = true_crafts[1].x_gcrf;
+  const std::array<core::StateVector, 2> est = {nav::CdgpsFilter::centre_of_mass(x, Craft::kDsc),
+                                                nav::CdgpsFilter::centre_of_mass(x, Craft::kOsc)};
   out.gcrf_to_rtn = core::gcrf_to_rtn_matrix(dsc);
-  const Eigen::Vector3d relative_error_gcrf = (est_osc.r - est_dsc.r) - (osc.r - dsc.r);
-  out.position_rtn_m = out.gcrf_to_rtn * relative_error_gcrf;
-  out.velocity_rtn_mps = out.gcrf_to_rtn * ((est_osc.v - est_dsc.v) - (osc.v - dsc.v));
-  score_payload(relative_error_gcrf, truth->second, in, out);
-  // Antenna error = (estimated - true centre of mass) + C (p - l): the estimate's antenna is
-  // CoM + C (known lever + p), the truth's CoM_true + C (known lever + l), l the true minus the
-  // known lever (RunInputs::antenna_lever_error_body_m).
-  out.c_dsc = truth->second[0].body_to_gcrf.toRotationMatrix();
-  out.c_osc = truth->second[1].body_to_gcrf.toRotationMatrix();
-  const auto lever_error = [&](const Eigen::Matrix3d& c, Craft craft, std::size_t k) {
-    const Eigen::Vector3d p = nav::state::kPhaseCenterUnit * x.segment<3>(nav::state::phase_center(craft));
-    return Eigen::Vector3d(c * (p - in.antenna_lever_error_body_m[k]));
+  out.position_rtn_m = out.gcrf_to_rtn * ((est[1].r - est[0].r) - (osc.r - dsc.r));
+  out.velocity_rtn_mps = out.gcrf_to_rtn * ((est[1].v - est[0].v) - (osc.v - dsc.v));
+  score_payload(est, true_crafts, *known, in, out);
+  // Antenna error: the estimate's antenna, CoM + C_known (known lever + p) (estimated_antenna),
+  // minus the truth's, CoM_true + C_true (true lever); the two attitudes differ by the ADCS's
+  // determination error.
+  out.c_dsc = (*known)[0].toRotationMatrix();
+  out.c_osc = (*known)[1].toRotationMatrix();
+  const auto antenna_error = [&](Craft craft, std::size_t k) {
+    const Eigen::Vector3d estimated = estimated_antenna(x, craft, (*known)[k], Eigen::Vector3d::Zero()).r;
+    return Eigen::Vector3d(estimated - (true_crafts[k].x_gcrf.r + true_crafts[k].body_to_gcrf * in.true_antenna_lever_body_m[k]));
   };
-  const Eigen::Vector3d com_offsets = lever_error(out.c_osc, Craft::kOsc, 1) - lever_error(out.c_dsc, Craft::kDsc, 0);
-  out.antenna_rtn_m = out.position_rtn_m + out.gcrf_to_rtn * com_offsets;
+  out.antenna_rtn_m = out.gcrf_to_rtn * (antenna_error(Craft::kOsc, 1) - antenna_error(Craft::kDsc, 0));
   return out;
 }
 
@@ -135,7 +134,7 @@ EpochScore score(const nav::CdgpsFilter& filter, const nav::CdgpsEpochReport& r,
   e.nees = e.relative_antenna_rtn_m.dot(S_rtn.ldlt().solve(e.relative_antenna_rtn_m));
   e.antenna_sigma_rtn_m = S_rtn.diagonal().cwiseSqrt();
   const std::array<CraftTruth, 2>& truth = in.truth.find(key_ms(t_s))->second;
-  estimate_states(x, in, t_s, truth, e);  // the attitudes known are the truth file's (nav_inputs.hpp)
+  estimate_states(x, in, t_s, *known_attitudes_at(in, t_s), e);  // relative.valid: both are at t_s
   const std::size_t own = local == Craft::kDsc ? 0 : 1;
   const core::StateVector estimate = nav::CdgpsFilter::centre_of_mass(x, local);
   e.absolute_position_m = (estimate.r - truth[own].x_gcrf.r).norm();

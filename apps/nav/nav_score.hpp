@@ -12,7 +12,9 @@ namespace visors::nav_app {
 
 /// The relative errors of a solution x (OSC minus DSC) against the truth at t_s [s after the
 /// scenario start], in the DSC's RTN frame: centres of mass, antennas (nav_replay.hpp), the
-/// payload points along and across the line of sight. valid = false when the truth has no t_s.
+/// payload points along and across the line of sight; the estimate's antennas and payload points
+/// in the attitudes the spacecraft know, the truth's in the true ones. valid = false when the
+/// truth or the known attitudes have no t_s.
 struct RelativeErrors {
   bool valid = false;
   Eigen::Vector3d position_rtn_m = Eigen::Vector3d::Zero();
@@ -20,7 +22,7 @@ struct RelativeErrors {
   Eigen::Vector3d antenna_rtn_m = Eigen::Vector3d::Zero();
   double payload_los_m = 0.0, payload_lateral_m = 0.0;
   Eigen::Matrix3d gcrf_to_rtn = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d c_dsc = Eigen::Matrix3d::Identity(), c_osc = Eigen::Matrix3d::Identity();  // true attitudes
+  Eigen::Matrix3d c_dsc = Eigen::Matrix3d::Identity(), c_osc = Eigen::Matrix3d::Identity();  // known attitudes
 };
 RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, double t_s);
 

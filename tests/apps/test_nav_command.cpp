@@ -99,7 +99,7 @@ TEST_F(NavReplay, WithoutDataGapsTheFixRateOverAllEpochsIsTheFixRate) {
   }
 }
 
-// One row per filtered epoch (600 s at 1 Hz after a 10 s cold start) plus the header.
+// One row per filtered epoch (600 s at 1 Hz after the cold start) plus the header.
 TEST_F(NavReplay, WritesOneRowPerEpoch) {
   std::istringstream csv(file_text(dir->path() / "nav" / "nav_dsc.csv"));
   int lines = 0;
