@@ -9,8 +9,8 @@
 // Selection as gnss::EphemerisSet::select, among the usable records (the file's screening) the
 // receiver had decoded at or before t: the one with t_oe nearest t (on equal distance the later
 // one), if t is within its fit interval. So a set that has just started being broadcast is used
-// from its decoding on, the previous one until then; a satellite just acquired has none for its
-// first 18-36 s.
+// from its decoding on, the previous one (if decoded) until then; a satellite whose sets the
+// receiver never decoded has none for the first 18-36 s of its lock.
 
 #include <array>
 #include <span>
