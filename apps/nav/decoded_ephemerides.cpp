@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/core.h>
+
 namespace visors::nav_app {
 namespace {
 
@@ -15,14 +17,14 @@ core::Result<DecodedEphemerides> DecodedEphemerides::create(const gnss::Ephemeri
                                                             std::span<const DecodedDataSet> decoded, const std::string& file) {
   DecodedEphemerides out;
   for (const DecodedDataSet& d : decoded) {
-    if (d.prn < 1 || d.prn > gnss::kMaxGpsPrn) return core::Error{file, "PRN " + std::to_string(d.prn) + " is not 1..32"};
+    if (d.prn < 1 || d.prn > gnss::kMaxGpsPrn) return core::Error{file, fmt::format("PRN {} is not 1..32", d.prn)};
     const gnss::ScreenedEphemeris* found = nullptr;
     for (const gnss::ScreenedEphemeris& s : screened.records()) {
       if (s.ephemeris.prn == d.prn && std::abs(s.ephemeris.toe.seconds_since(d.toe)) < kSameToeS) found = &s;
     }
     if (found == nullptr) {
-      return core::Error{file, "G" + std::to_string(d.prn) + " t_oe " + d.toe.format(core::TimeScale::kGps, 0) +
-                                   " is not a record of brdc.rnx (files of different runs?)"};
+      return core::Error{file, fmt::format("G{:02d} t_oe {} is not a record of brdc.rnx (files of different runs?)", d.prn,
+                                           d.toe.format(core::TimeScale::kGps, 0))};
     }
     if (found->status != gnss::RecordStatus::kUsable) continue;
     out.by_prn_[static_cast<std::size_t>(d.prn)].push_back({found->ephemeris, d.decoded});

@@ -6,6 +6,7 @@
 #include <span>
 #include <string_view>
 
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include "baseline/receiver_observables.hpp"
@@ -128,7 +129,7 @@ core::Result<bool> read_known_attitude(const std::filesystem::path& path, RunInp
   });
   if (!ok) return ok;
   for (const auto& [t_ms, listed] : crafts_listed) {
-    if (listed != 3) return Error{path.string(), "t_s " + std::to_string(static_cast<double>(t_ms) / 1000.0) + ": not both spacecraft"};
+    if (listed != 3) return Error{path.string(), fmt::format("t_s {:.3f}: not both spacecraft", static_cast<double>(t_ms) / 1000.0)};
   }
   return true;
 }
