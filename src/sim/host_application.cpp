@@ -231,6 +231,7 @@ void HostApplication::read_outputs(std::size_t k, const gnc::OutputRecords& out,
   };
   optional_output(out.maneuver, decoded.maneuver, "maneuver");
   optional_output(out.observation, decoded.observation, "observation");
+  optional_output(out.navigation, decoded.navigation, "navigation");
   c.crosslink_out = out.crosslink;
   c.out = decoded;
 }

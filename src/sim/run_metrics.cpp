@@ -85,9 +85,9 @@ void RunMetrics::score_navigation(const TruthWorld& truth, const Sensors& sensor
   formation.dsc_lever_error_m = lever_error(0);
   formation.osc_lever_error_m = lever_error(1);
   for (std::size_t k = 0; k < 2; ++k) {
-    const auto& navigation = host[k].gnc->component().navigation();
-    if (!navigation) continue;
-    navigation_samples_[k] = navigation_score_.score(host[k].id, *navigation, t_s, formation, in_slew);
+    const std::optional<gnc::NavigationTelemetry>& record = host[k].out.navigation;  // its last step's
+    if (!record) continue;
+    navigation_samples_[k] = navigation_score_.score(host[k].id, *record, t_s, formation, in_slew);
   }
 }
 
@@ -141,13 +141,16 @@ void RunMetrics::record(const TruthWorld& truth, const HostApplication& host, do
 
 void RunMetrics::record_navigation_rows(const HostApplication& host, double t_s, bool in_slew, bool in_observation) {
   for (std::size_t k = 0; k < 2; ++k) {
-    const gnc::NavigationCounters& c = host[k].gnc->component().navigation()->counters();
-    const std::int64_t epochs = c.epochs_joint + c.epochs_alone;
-    const double fixed_fraction = epochs > rows_epochs_[k] ? static_cast<double>(c.epochs_fixed - rows_fixed_[k]) /
-                                                                 static_cast<double>(epochs - rows_epochs_[k])
-                                                           : 0.0;
-    rows_epochs_[k] = epochs;
-    rows_fixed_[k] = c.epochs_fixed;
+    double fixed_fraction = 0.0;
+    if (const std::optional<gnc::NavigationTelemetry>& record = host[k].out.navigation) {
+      const gnc::NavigationCounters& c = record->counters;
+      const std::int64_t epochs = c.epochs_joint + c.epochs_alone;
+      if (epochs > rows_epochs_[k]) {
+        fixed_fraction = static_cast<double>(c.epochs_fixed - rows_fixed_[k]) / static_cast<double>(epochs - rows_epochs_[k]);
+      }
+      rows_epochs_[k] = epochs;
+      rows_fixed_[k] = c.epochs_fixed;
+    }
     recorder_->navigation(t_s, host[k].name, navigation_samples_[k], fixed_fraction, in_slew, in_observation);
   }
 }
@@ -189,29 +192,11 @@ void RunMetrics::add_to_summary(nlohmann::json& summary, const std::array<std::s
   }
 }
 
-// The navigation score (sim/navigation_score.hpp) with each component's counters.
+// The navigation score (sim/navigation_score.hpp: the counters from the components' navigation
+// telemetry records) with each component's rejected GPS messages (its telemetry record).
 nlohmann::json RunMetrics::navigation_summary(const HostApplication& host) const {
   nlohmann::json out = navigation_score_.summary();
-  for (std::size_t k = 0; k < 2; ++k) {
-    const HostedComponent& v = host[k];
-    const gnc::NavigationCounters& c = v.gnc->component().navigation()->counters();
-    nlohmann::json ephemerides;
-    for (int e = 0; e < static_cast<int>(c.ephemerides.size()); ++e) {
-      ephemerides[gnss::to_string(static_cast<gnss::EphemerisStore::AcceptStatus>(e))] = c.ephemerides[static_cast<std::size_t>(e)];
-    }
-    nlohmann::json& n = out[std::string(v.name)];
-    n["epochs_joint"] = c.epochs_joint;
-    n["epochs_alone"] = c.epochs_alone;
-    n["epochs_refused"] = c.epochs_refused;
-    n["wrong_fixes_refused"] = c.wrong_fixes_refused;
-    n["impulses_applied"] = c.impulses_applied;
-    n["impulses_late"] = c.impulses_late;
-    n["laser_ranges_used"] = c.laser_used;
-    n["laser_ranges_rejected"] = c.laser_rejected;
-    n["clock_jumps"] = c.clock_jumps;
-    n["ephemerides"] = ephemerides;
-    n["rejected_gps_messages"] = v.out.telemetry.rejected.gps;
-  }
+  for (std::size_t k = 0; k < 2; ++k) out[std::string(host[k].name)]["rejected_gps_messages"] = host[k].out.telemetry.rejected.gps;
   return out;
 }
 
