@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The default campaign (`visors run data/scenarios/campaign.toml`) over seeds 1..N: per run its
 # observations, success rate, delta-v, minimum separation, wall time and the on-board navigation's
-# figures (issue 16's acceptance: seeds 1-5); then the pooled success rate over every attempt.
+# figures (the headline run: seeds 1-5); then the pooled success rate over every attempt.
 # Usage: scripts/campaign_seeds.sh [N (5)] [BUILD_DIR (build)] [WORK_DIR (out/campaign-seeds)] [MODE (scenario's)]
+# VISORS_BIN overrides the binary (default BUILD_DIR/apps/visors).
 set -euo pipefail
 n=${1:-5}
 build=${2:-build}
@@ -14,7 +15,7 @@ for seed in $(seq 1 "$n"); do
   scenario="$work/seed$seed.toml"
   sed -e "s/^seed = .*/seed = $seed/" "$root/data/scenarios/campaign.toml" > "$scenario"
   if [ -n "$mode" ]; then sed -i "s/^mode = .*/mode = \"$mode\"/" "$scenario"; fi
-  "$build/apps/visors" run "$scenario" --out "$work/run$seed" > /dev/null
+  "${VISORS_BIN:-$build/apps/visors}" run "$scenario" --out "$work/run$seed" > /dev/null
 done
 /usr/bin/python3 - "$work" "$n" <<'PY'
 import json, sys
