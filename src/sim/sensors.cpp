@@ -28,9 +28,7 @@ Sensors::Sensors(const CampaignScenario& scenario, std::optional<GpsWorld> gps)
       half_refresh_s_(0.5 * scenario.gnss.broadcast_errors.refresh_s),
       gps_(std::move(gps)),
       lrf_rng_(scenario.seed, "osc.lrf") {
-  if (!gps_) return;
-  const auto records = gps_->satellites->broadcast_records();
-  for (std::size_t i = 0; i < records.size(); ++i) sets_by_prn_[static_cast<std::size_t>(records[i].prn)].push_back(i);
+  if (gps_) sets_by_prn_ = data_sets_by_prn(gps_->satellites->broadcast_records());
 }
 
 core::Result<Sensors> Sensors::create(const CampaignScenario& scenario, const TruthWorld& truth, std::optional<GpsWorld> gps) {
@@ -83,19 +81,12 @@ void Sensors::decode_ephemeris(std::size_t k, core::GpsTime t, gnc::GpsMessage& 
   for (int c = 0; c < message.epoch.channel_count; ++c) {
     const auto& channel = message.epoch.channels[static_cast<std::size_t>(c)];
     const auto prn = static_cast<std::size_t>(channel.prn);
-    const std::vector<std::size_t>& sets = sets_by_prn_[prn];
     std::size_t& next = craft_[k].next_ephemeris[prn];
-    std::size_t current = next > 0 ? next - 1 : 0;
-    while (current + 1 < sets.size() && half_refresh_s_ > 0.0 && t.seconds_since(records[sets[current + 1]].toe) >= -half_refresh_s_) {
-      ++current;
-    }
-    if (sets.empty() || next > current) continue;
-    const double lock_start_s = t.seconds() - channel.lock_time_s;
-    const double broadcast_from_s = current == 0 ? lock_start_s : records[sets[current]].toe.seconds() - half_refresh_s_;
-    if (t.seconds() < ephemeris_decoded_at(std::max(lock_start_s, broadcast_from_s))) continue;
+    const auto set = newly_decoded_data_set(records, sets_by_prn_[prn], t, half_refresh_s_, channel.lock_time_s, next);
+    if (!set) continue;
     message.has_ephemeris = true;
-    message.ephemeris = records[sets[current]];
-    next = current + 1;
+    message.ephemeris = records[sets_by_prn_[prn][*set]];
+    next = *set + 1;
     return;
   }
 }

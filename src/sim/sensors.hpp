@@ -22,6 +22,7 @@
 #include "sim/gps_world.hpp"
 #include "sim/host_clock.hpp"
 #include "sim/ideal_navigation.hpp"
+#include "sim/navigation_message.hpp"
 #include "sim/navigation_score.hpp"
 #include "sim/random_stream.hpp"
 #include "sim/truth_world.hpp"
@@ -76,7 +77,7 @@ class Sensors {
   std::optional<GpsWorld> gps_;
   /// Per PRN, the indices of its broadcast data sets in GpsSatelliteTruth::broadcast_records(),
   /// in t_oe order.
-  std::array<std::vector<std::size_t>, gnss::kMaxGpsPrn + 1> sets_by_prn_;
+  DataSetsByPrn sets_by_prn_;
   core::InterpolatedEarthFrame earth_frame_;
   RandomStream lrf_rng_;
 };
