@@ -55,7 +55,7 @@ bool try_cold_start(nav::CdgpsFilter& filter, nav::ColdStart& cold, const nav::G
   if (epochs[0] == nullptr || epochs[1] == nullptr) return false;
   const auto* attitudes = known_attitudes_at(in, epochs[0]->t.seconds_since(in.scenario.t0));
   if (attitudes == nullptr) return false;
-  const auto solution = cold.add(*epochs[0], *epochs[1], antenna_geometry((*attitudes)[0]), antenna_geometry((*attitudes)[1]),
+  const auto solution = cold.add(*epochs[0], *epochs[1], antenna_geometry(in.scenario.flight, (*attitudes)[0]), antenna_geometry(in.scenario.flight, (*attitudes)[1]),
                                  ephemerides, frame);
   if (!solution) return false;
   filter.initialise(solution->t, solution->dsc_gcrf, solution->osc_gcrf, solution->dsc_clock_m, solution->osc_clock_m);
@@ -129,7 +129,7 @@ const char* fuse_laser_range(nav::CdgpsFilter& f, const RunInputs& in, double t_
   const auto z = in.laser_ranges_m.find(key_ms(t_s));
   if (z == in.laser_ranges_m.end()) return "";
   const nav::ScalarUpdateStatus status =
-      f.update_laser_range(z->second, in.scenario.gnss.lrf.sigma_m, laser_geometry(attitudes[0], attitudes[1]));
+      f.update_laser_range(z->second, in.scenario.flight.lrf_sigma_m, laser_geometry(in.scenario.flight, attitudes[0], attitudes[1]));
   return status == nav::ScalarUpdateStatus::kAccepted ? "used" : "rejected";
 }
 
@@ -244,7 +244,8 @@ Replay replay(const RunInputs& in, Craft local, const ReplaySettings& r) {
       continue;
     }
     f.predict(t);
-    const nav::CdgpsEpochInput input{epochs[0], epochs[1], antenna_geometry((*attitudes)[0]), antenna_geometry((*attitudes)[1])};
+    const nav::CdgpsEpochInput input{epochs[0], epochs[1], antenna_geometry(in.scenario.flight, (*attitudes)[0]),
+                                     antenna_geometry(in.scenario.flight, (*attitudes)[1])};
     const nav::CdgpsEpochReport report = f.update(input, ephemerides, frame);
     // The LRF is on the OSC: the DSC's filter gets its range over the crosslink.
     const bool laser_here = r.fuse_laser && (local == Craft::kOsc || !crosslink_lost);

@@ -243,11 +243,10 @@ core::Result<bool> read_phase_truth(const std::filesystem::path& path, RunInputs
 
 }  // namespace
 
-nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf) {
+nav::AntennaGeometry antenna_geometry(const sim::FlightKnowledge& told, const Eigen::Quaterniond& body_to_gcrf) {
   nav::AntennaGeometry a;
   a.body_to_gcrf = body_to_gcrf.toRotationMatrix();
   // The flight software's calibrated antenna, not the truth receiver's (docs/truth-and-knowledge.md).
-  const gnc::OnboardNavigationSettings told;
   a.arp_body_m = told.antenna_arp_body_m;
   a.pco_body_m = told.antenna_pco_m * Eigen::Vector3d::UnitZ();
   a.boresight_body = Eigen::Vector3d::UnitZ();  // gnss-sim's nominal boresight
@@ -276,14 +275,14 @@ Eigen::Vector3d known_angular_velocity_gcrf(const RunInputs& in, double t_s, std
   return turn.angle() / interval_s * turn.axis();
 }
 
-nav::LaserRangeGeometry laser_geometry(const Eigen::Quaterniond& dsc_body_to_gcrf, const Eigen::Quaterniond& osc_body_to_gcrf) {
-  const sim::GeometrySettings nominal;
+nav::LaserRangeGeometry laser_geometry(const sim::FlightKnowledge& told, const Eigen::Quaterniond& dsc_body_to_gcrf,
+                                       const Eigen::Quaterniond& osc_body_to_gcrf) {
   nav::LaserRangeGeometry g;
   g.dsc_body_to_gcrf = dsc_body_to_gcrf.toRotationMatrix();
   g.osc_body_to_gcrf = osc_body_to_gcrf.toRotationMatrix();
-  g.dsc_lever_body_m = nominal.payload_nominal_body_m - nominal.com_nominal_body_m;
-  g.osc_lever_body_m = nominal.payload_nominal_body_m - nominal.com_nominal_body_m;
-  g.bias_m = 0.0;  // calibrated
+  g.dsc_lever_body_m = told.lrf_lever_body_m;
+  g.osc_lever_body_m = told.lrf_lever_body_m;
+  g.bias_m = told.lrf_bias_m;
   return g;
 }
 
@@ -314,7 +313,7 @@ core::Result<RunInputs> read_run(const std::filesystem::path& run_dir) {
   for (std::size_t k = 0; k < 2; ++k) {
     sim::RandomStream rng(in.scenario.seed, std::string(names[k]) + ".geometry");  // as gnss-sim draws it
     const auto geometry = sim::SpacecraftGeometry::draw(in.scenario.geometry, rng);
-    in.payload_lever_error_body_m[k] = geometry.payload_from_com_body_m() - geometry.payload_from_com_nominal_body_m();
+    in.true_payload_lever_body_m[k] = geometry.payload_from_com_body_m();
   }
   return in;
 }

@@ -82,9 +82,9 @@ struct RunInputs {
   /// OSC, as gnss-sim's summary.json records them (receivers.*.phase_center_body_m minus
   /// center_of_mass_body_m).
   std::array<Eigen::Vector3d, 2> true_antenna_lever_body_m{};
-  /// True minus nominal payload reference point relative to the centre of mass, body frame [m],
-  /// DSC and OSC (the LRF's end points).
-  std::array<Eigen::Vector3d, 2> payload_lever_error_body_m{};
+  /// The true payload reference point from the true centre of mass, body frame [m], DSC and OSC
+  /// (the LRF's end points; the run's drawn geometry).
+  std::array<Eigen::Vector3d, 2> true_payload_lever_body_m{};
 };
 
 /// Milliseconds after the scenario start: the key of the maps above.
@@ -92,8 +92,8 @@ inline long long key_ms(double t_s) { return std::llround(t_s * 1000.0); }
 
 /// The antenna as the spacecraft knows it: the attitude (body to GCRF), the nominal centre of
 /// mass, the antenna reference point and the phase-centre offset along the boresight (body +Z):
-/// the flight software's calibrated values (gnc::OnboardNavigationSettings), not the truth's.
-nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf);
+/// the flight software's calibrated values (the scenario's [flight]), not the truth's.
+nav::AntennaGeometry antenna_geometry(const sim::FlightKnowledge& told, const Eigen::Quaterniond& body_to_gcrf);
 
 /// The angular velocity of `craft`'s body (0: DSC, 1: OSC), GCRF [rad/s], at t_s [s after the
 /// scenario start], from the attitudes the spacecraft know at the neighbouring epochs (the ADCS's
@@ -103,10 +103,11 @@ nav::AntennaGeometry antenna_geometry(const Eigen::Quaterniond& body_to_gcrf);
 /// reports' white error enters it: 40 arcsec about body Y, differenced over 2 s, ~1.4e-4 rad/s.
 Eigen::Vector3d known_angular_velocity_gcrf(const RunInputs& in, double t_s, std::size_t craft);
 
-/// The laser range's end points as the spacecraft know them: the nominal payload reference points
-/// (sim/spacecraft_geometry.hpp: the OSC's photon sieve, the DSC's detector) from the nominal
-/// centres of mass, and the attitudes.
-nav::LaserRangeGeometry laser_geometry(const Eigen::Quaterniond& dsc_body_to_gcrf, const Eigen::Quaterniond& osc_body_to_gcrf);
+/// The laser range's end points as the spacecraft know them: the rangefinder's and its target's
+/// levers from the nominal centres of mass and its calibrated bias (the scenario's [flight]: the
+/// OSC's photon sieve, the DSC's detector), and the attitudes.
+nav::LaserRangeGeometry laser_geometry(const sim::FlightKnowledge& told, const Eigen::Quaterniond& dsc_body_to_gcrf,
+                                       const Eigen::Quaterniond& osc_body_to_gcrf);
 
 /// The attitudes the spacecraft know at t_s (DSC, OSC), nullptr when the run has none then.
 const std::array<Eigen::Quaterniond, 2>* known_attitudes_at(const RunInputs& in, double t_s);

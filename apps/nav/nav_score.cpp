@@ -51,9 +51,9 @@ void locate(const RunInputs& in, double t_s, EpochScore& e) {
 // true attitudes), split along the true line of sight OSC -> DSC and across it.
 void score_payload(const std::array<core::StateVector, 2>& estimated_com, const std::array<CraftTruth, 2>& truth,
                    const std::array<Eigen::Quaterniond, 2>& known, const RunInputs& in, RelativeErrors& e) {
-  const nav::LaserRangeGeometry told = laser_geometry(known[0], known[1]);  // nominal levers, known attitudes
-  const Eigen::Vector3d p_dsc = truth[0].x_gcrf.r + truth[0].body_to_gcrf * (told.dsc_lever_body_m + in.payload_lever_error_body_m[0]);
-  const Eigen::Vector3d p_osc = truth[1].x_gcrf.r + truth[1].body_to_gcrf * (told.osc_lever_body_m + in.payload_lever_error_body_m[1]);
+  const nav::LaserRangeGeometry told = laser_geometry(in.scenario.flight, known[0], known[1]);  // told levers, known attitudes
+  const Eigen::Vector3d p_dsc = truth[0].x_gcrf.r + truth[0].body_to_gcrf * in.true_payload_lever_body_m[0];
+  const Eigen::Vector3d p_osc = truth[1].x_gcrf.r + truth[1].body_to_gcrf * in.true_payload_lever_body_m[1];
   const Eigen::Vector3d est_dsc = estimated_com[0].r + told.dsc_body_to_gcrf * told.dsc_lever_body_m;
   const Eigen::Vector3d est_osc = estimated_com[1].r + told.osc_body_to_gcrf * told.osc_lever_body_m;
   const Eigen::Vector3d los = (p_dsc - p_osc).normalized();
@@ -69,16 +69,17 @@ void estimate_states(const nav::NavVector& x, const RunInputs& in, double t_s, c
   for (const Craft craft : {Craft::kDsc, Craft::kOsc}) {
     const auto k = static_cast<std::size_t>(craft);
     e.com_gcrf[k] = nav::CdgpsFilter::centre_of_mass(x, craft);
-    e.antenna_gcrf[k] = estimated_antenna(x, craft, known[k], known_angular_velocity_gcrf(in, t_s, k));
+    e.antenna_gcrf[k] = estimated_antenna(x, craft, in.scenario.flight, known[k], known_angular_velocity_gcrf(in, t_s, k));
   }
 }
 
 }  // namespace
 
-core::StateVector estimated_antenna(const nav::NavVector& x, Craft craft, const Eigen::Quaterniond& body_to_gcrf,
+core::StateVector estimated_antenna(const nav::NavVector& x, Craft craft, const sim::FlightKnowledge& told,
+                                    const Eigen::Quaterniond& body_to_gcrf,
                                     const Eigen::Vector3d& omega_gcrf_radps) {
   const nav::ReceiverEstimate estimate = nav::receiver_estimate(x, craft);
-  const Eigen::Vector3d lever_gcrf_m = nav::phase_centre_lever_gcrf_m(estimate, antenna_geometry(body_to_gcrf));
+  const Eigen::Vector3d lever_gcrf_m = nav::phase_centre_lever_gcrf_m(estimate, antenna_geometry(told, body_to_gcrf));
   return {estimate.r_gcrf_m + lever_gcrf_m, estimate.v_gcrf_mps + omega_gcrf_radps.cross(lever_gcrf_m)};
 }
 
@@ -103,7 +104,7 @@ RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, dou
   out.c_dsc = (*known)[0].toRotationMatrix();
   out.c_osc = (*known)[1].toRotationMatrix();
   const auto antenna_error = [&](Craft craft, std::size_t k) {
-    const Eigen::Vector3d estimated = estimated_antenna(x, craft, (*known)[k], Eigen::Vector3d::Zero()).r;
+    const Eigen::Vector3d estimated = estimated_antenna(x, craft, in.scenario.flight, (*known)[k], Eigen::Vector3d::Zero()).r;
     return Eigen::Vector3d(estimated - (true_crafts[k].x_gcrf.r + true_crafts[k].body_to_gcrf * in.true_antenna_lever_body_m[k]));
   };
   out.antenna_rtn_m = out.gcrf_to_rtn * (antenna_error(Craft::kOsc, 1) - antenna_error(Craft::kDsc, 0));

@@ -31,8 +31,8 @@ RelativeErrors relative_errors(const nav::NavVector& x, const RunInputs& in, dou
 /// reference point and phase-centre offset, plus the estimated phase-centre error p) in the known
 /// attitude, the lever turning with it: r + C l, v + omega x C l (the filter's own model,
 /// nav/gps_range_model.hpp phase_centre_lever_gcrf_m).
-core::StateVector estimated_antenna(const nav::NavVector& x, nav::Craft craft, const Eigen::Quaterniond& body_to_gcrf,
-                                    const Eigen::Vector3d& omega_gcrf_radps);
+core::StateVector estimated_antenna(const nav::NavVector& x, nav::Craft craft, const sim::FlightKnowledge& told,
+                                    const Eigen::Quaterniond& body_to_gcrf, const Eigen::Vector3d& omega_gcrf_radps);
 
 /// The epoch's errors of the filter's solution (the fixed one when the report applied a fix) at
 /// t_s [s after the scenario start], the filter running on `local`.

@@ -60,8 +60,6 @@ Eigen::Vector3d known_antenna_lever_body_m(const FlightKnowledge& told) {
   return told.antenna_arp_body_m + told.antenna_pco_m * Eigen::Vector3d::UnitZ();
 }
 
-Eigen::Vector3d known_antenna_lever_body_m() { return known_antenna_lever_body_m(FlightKnowledge{}); }
-
 core::Result<gnc::OnboardNavigation> make_onboard_navigation(const CampaignScenario& s, gnc::Spacecraft self) {
   auto settings = onboard_navigation_settings(s);
   if (!settings.ok()) return settings.error();

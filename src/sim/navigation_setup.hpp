@@ -40,8 +40,6 @@ core::Result<gnc::OnboardNavigationSettings> onboard_navigation_settings(const C
 /// values onboard_navigation_settings() gives). Scores compare the truth's lever with this one,
 /// never with the truth receiver's nominal.
 Eigen::Vector3d known_antenna_lever_body_m(const FlightKnowledge& told);
-/// The same with the default flight knowledge (for the callers that have no scenario yet).
-Eigen::Vector3d known_antenna_lever_body_m();
 
 /// The on-board navigation of `self` with both spacecraft's on-board force models.
 core::Result<gnc::OnboardNavigation> make_onboard_navigation(const CampaignScenario& scenario, gnc::Spacecraft self);

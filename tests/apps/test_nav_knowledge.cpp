@@ -6,6 +6,8 @@
 // - the broadcast data sets: each filter has a set only from the epoch its own receiver decoded it
 //   (ephemeris_decoded.csv): a set the DSC decodes late is in none of the DSC filter's fixes before
 //   then, and in the OSC filter's (its own receiver decoded it at the start);
+// - the settings: the truth receiver's noise in scenario.toml leaves every estimate the same, the
+//   [flight] antenna the filters are told changes them;
 // - a run without those files (gnss-sim before them) is refused naming the file.
 #include <gtest/gtest.h>
 
@@ -96,6 +98,20 @@ std::filesystem::path changed_copy(const std::filesystem::path& run, const std::
   return copy;
 }
 
+// A copy of the run directory `run` as `name`, in its scenario.toml the line starting with `key`
+// (a resolved scenario writes each key once) replaced by `line`.
+std::filesystem::path scenario_copy(const std::filesystem::path& run, const std::string& name, const std::string& key,
+                                    const std::string& line) {
+  const auto copy = run.parent_path() / name;
+  std::filesystem::copy(run, copy, std::filesystem::copy_options::recursive);
+  std::string text = file_text(copy / "scenario.toml");
+  const auto at = text.find("\n" + key);
+  EXPECT_NE(at, std::string::npos) << key;
+  if (at != std::string::npos) text.replace(at + 1, text.find('\n', at + 1) - at - 1, line);
+  std::ofstream(copy / "scenario.toml") << text;
+  return copy;
+}
+
 // The estimated states of nav_<craft>.csv (both spacecraft's centres of mass and antennas): the
 // columns from dsc_com_x_m on, per row.
 std::vector<std::string> estimates(const Table& nav) {
@@ -159,6 +175,10 @@ class NavKnowledge : public ::testing::Test {
                           }
                         }),
            "nav_truth_reported");
+    // The truth receiver's noise changed in the scenario: the filters' weights are the flight's.
+    replay(scenario_copy(run, "receiver_changed", "phase_sigma_m = ", "phase_sigma_m = 0.01"), "nav_receiver_changed");
+    // The antenna the flight software is told, changed: the filters must see it.
+    replay(scenario_copy(run, "flight_changed", "antenna_pco_m = ", "antenna_pco_m = 0.0954"), "nav_flight_changed");
     // One data set decoded by the DSC's receiver at 200 s instead of the start.
     prn = late_prn(dir->path() / "nav", read_table(run / "ephemeris_decoded.csv"));
     replay(changed_copy(run, "late", "ephemeris_decoded.csv",
@@ -201,6 +221,23 @@ TEST_F(NavKnowledge, TruthAttitudeIsForScoringOnly) {
       scores_differ += original.rows[i][column] != changed.rows[i][column] ? 1 : 0;
     }
     EXPECT_GT(scores_differ, 300) << craft << ": precondition, the truth's attitude is what scores";
+  }
+}
+
+// The truth receiver's phase noise changed five-fold in scenario.toml: every estimate the same
+// (the filters' sigmas are the [nav] flight settings, never the truth receiver's).
+TEST_F(NavKnowledge, TruthReceiverNoiseDoesNotTuneTheFilters) {
+  for (const char* craft : {"dsc", "osc"}) {
+    const std::string file = std::string("nav_") + craft + ".csv";
+    EXPECT_EQ(estimates(nav("nav_receiver_changed", file)), estimates(nav("nav", file))) << craft;
+  }
+}
+
+// The [flight] antenna the filters are told moved by 1 cm: the estimates change.
+TEST_F(NavKnowledge, FiltersTakeTheToldAntenna) {
+  for (const char* craft : {"dsc", "osc"}) {
+    const std::string file = std::string("nav_") + craft + ".csv";
+    EXPECT_NE(estimates(nav("nav_flight_changed", file)), estimates(nav("nav", file))) << craft;
   }
 }
 

@@ -167,8 +167,8 @@ class RecordScoreReplay : public ::testing::Test {
     truth.osc_gcrf = craft[1].x;
     truth.dsc_body_to_gcrf = craft[0].q.toRotationMatrix();
     truth.osc_body_to_gcrf = craft[1].q.toRotationMatrix();
-    truth.dsc_lever_error_m = craft[0].receiver->phase_center_body_m() - known_antenna_lever_body_m();
-    truth.osc_lever_error_m = craft[1].receiver->phase_center_body_m() - known_antenna_lever_body_m();
+    truth.dsc_lever_error_m = craft[0].receiver->phase_center_body_m() - known_antenna_lever_body_m(FlightKnowledge{});
+    truth.osc_lever_error_m = craft[1].receiver->phase_center_body_m() - known_antenna_lever_body_m(FlightKnowledge{});
     return truth;
   }
 
