@@ -24,6 +24,7 @@
 
 #include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
+#include "support/csv_table.hpp"
 #include "support/temp_file.hpp"
 #include "support/white_receiver.hpp"
 
@@ -32,19 +33,13 @@ namespace {
 
 bool have_navigation_file() { return have_gnss_data("NYA100NOR_S_20241280000_01D_GN.rnx"); }
 
-void replace(std::string& text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-}
-
 // The default scenario, 600 s, 3 cm phase, each receiver's epochs lost in 10-s gaps (a gap starts
 // at an epoch with probability 0.005: a few per receiver in 600 s for the default seed).
 std::string gappy_scenario(const std::filesystem::path& dir) {
   std::string text = file_text(std::filesystem::path(VISORS_SOURCE_DIR) / "data/scenarios/gnss_sim.toml");
-  replace(text, "duration_s = 5700.0", "duration_s = 600.0");
-  replace(text, "phase_sigma_m = 0.002", "phase_sigma_m = 0.03");
-  replace(text, "# data_gap_probability = 0.0", "data_gap_probability = 0.005");
+  replace_once(text, "duration_s = 5700.0", "duration_s = 600.0");
+  replace_once(text, "phase_sigma_m = 0.002", "phase_sigma_m = 0.03");
+  replace_once(text, "# data_gap_probability = 0.0", "data_gap_probability = 0.005");
   whiten_shipped_receiver(text);
   const auto path = dir / "gappy.toml";
   std::ofstream(path) << text;
@@ -60,46 +55,11 @@ std::string loose_settings(const std::filesystem::path& dir) {
   return path.string();
 }
 
-// A CSV file: its header's columns and its rows' fields.
-struct Table {
-  std::map<std::string, std::size_t> column;
-  std::vector<std::vector<std::string>> rows;
-
-  [[nodiscard]] const std::string& text(std::size_t row, const std::string& name) const {
-    const auto it = column.find(name);
-    if (it == column.end()) throw std::runtime_error("no column " + name);
-    return rows.at(row).at(it->second);
-  }
-  [[nodiscard]] double number(std::size_t row, const std::string& name) const { return std::stod(text(row, name)); }
-  [[nodiscard]] Eigen::Vector3d vector(std::size_t row, const std::string& prefix, const std::string& suffix) const {
-    return {number(row, prefix + "x" + suffix), number(row, prefix + "y" + suffix), number(row, prefix + "z" + suffix)};
-  }
-};
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream fields(line);
-  for (std::string f; std::getline(fields, f, ',');) out.push_back(f);
-  if (!line.empty() && line.back() == ',') out.emplace_back();  // a last empty field
-  return out;
-}
-
-Table read_csv(const std::filesystem::path& path) {
-  Table t;
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  const auto header = split(line);
-  for (std::size_t i = 0; i < header.size(); ++i) t.column[header[i]] = i;
-  while (std::getline(in, line)) t.rows.push_back(split(line));
-  return t;
-}
-
 long long key_ms(double t_s) { return std::llround(1000.0 * t_s); }
 
 // truth.csv: per epoch (ms) and spacecraft ("dsc", "osc") its row.
 using TruthRows = std::map<long long, std::map<std::string, std::size_t>>;
-TruthRows index_truth(const Table& truth) {
+TruthRows index_truth(const CsvTable& truth) {
   TruthRows out;
   for (std::size_t i = 0; i < truth.rows.size(); ++i) out[key_ms(truth.number(i, "t_s"))][truth.text(i, "spacecraft")] = i;
   return out;
@@ -147,7 +107,7 @@ const char* const kCrafts[2] = {"dsc", "osc"};
 // phase centres r + q (phase centre - centre of mass), gnss-sim's summary.json body vectors.
 // To 1.5 um and 2e-8 m/s: the columns' rounding (0.1 um, 1 nm/s; the errors' 1 um, 10 nm/s).
 TEST_F(NavFiles, RelativeErrorsAreRecomputedFromTheEstimatedStatesAndTheTruth) {
-  const Table truth = read_csv(run() / "truth.csv");
+  const CsvTable truth = read_csv_table(run() / "truth.csv");
   const TruthRows at = index_truth(truth);
   const nlohmann::json receivers = nlohmann::json::parse(file_text(run() / "summary.json"))["receivers"];
   const auto body = [&](const char* craft, const char* key) {
@@ -157,7 +117,7 @@ TEST_F(NavFiles, RelativeErrorsAreRecomputedFromTheEstimatedStatesAndTheTruth) {
   std::map<std::string, Eigen::Vector3d> true_lever_body_m;
   for (const char* craft : kCrafts) true_lever_body_m[craft] = body(craft, "phase_center_body_m") - body(craft, "center_of_mass_body_m");
   for (const char* filter_name : kCrafts) {
-    const Table nav = read_csv(out() / (std::string("nav_") + filter_name + ".csv"));
+    const CsvTable nav = read_csv_table(out() / (std::string("nav_") + filter_name + ".csv"));
     ASSERT_GT(nav.rows.size(), 500U) << filter_name;
     double worst_m = 0.0, worst_antenna_m = 0.0, worst_mps = 0.0;
     for (std::size_t i = 0; i < nav.rows.size(); ++i) {
@@ -199,7 +159,7 @@ TEST_F(NavFiles, RelativeErrorsAreRecomputedFromTheEstimatedStatesAndTheTruth) {
 // differences, whose double differences are integers (the phase offsets cancel).
 using PhaseTruth = std::map<long long, std::map<int, std::array<double, 2>>>;
 PhaseTruth read_phase_truth(const std::filesystem::path& path) {
-  const Table t = read_csv(path);
+  const CsvTable t = read_csv_table(path);
   PhaseTruth out;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     auto& cycles = out[key_ms(t.number(i, "t_s"))][static_cast<int>(t.number(i, "prn"))];
@@ -215,7 +175,7 @@ TEST_F(NavFiles, WrongFixesAreRecomputedFromTheIntegersAndTheChannelTruth) {
   const PhaseTruth phase = read_phase_truth(run() / "channels_truth.csv");
   for (int k = 0; k < 2; ++k) {
     const std::string name = kCrafts[k];
-    const Table fixes = read_csv(out() / ("fixes_" + name + ".csv"));
+    const CsvTable fixes = read_csv_table(out() / ("fixes_" + name + ".csv"));
     std::set<long long> fixed_epochs, wrong_epochs;
     for (std::size_t i = 0; i < fixes.rows.size(); ++i) {
       const long long t = key_ms(fixes.number(i, "t_s"));
@@ -226,7 +186,7 @@ TEST_F(NavFiles, WrongFixesAreRecomputedFromTheIntegersAndTheChannelTruth) {
       fixed_epochs.insert(t);
       if (std::abs(fixes.number(i, "integer_cycles") - expected) > 0.5) wrong_epochs.insert(t);
     }
-    const Table nav = read_csv(out() / ("nav_" + name + ".csv"));
+    const CsvTable nav = read_csv_table(out() / ("nav_" + name + ".csv"));
     std::set<long long> nav_fixed, nav_wrong;
     for (std::size_t i = 0; i < nav.rows.size(); ++i) {
       if (nav.text(i, "status") == "fixed") nav_fixed.insert(key_ms(nav.number(i, "t_s")));
@@ -243,14 +203,14 @@ TEST_F(NavFiles, WrongFixesAreRecomputedFromTheIntegersAndTheChannelTruth) {
 // epochs after the cold start and from the first fix on, recorded or not; below the rate over the
 // epochs present, the run having gaps.
 TEST_F(NavFiles, FixRateOverAllEpochsCountsTheDataGapsAsNotFixed) {
-  const Table truth = read_csv(run() / "truth.csv");
+  const CsvTable truth = read_csv_table(run() / "truth.csv");
   const TruthRows epochs = index_truth(truth);
   for (int k = 0; k < 2; ++k) {
     const std::string name = kCrafts[k];
     const double start_s = filter(k)["start_s"].get<double>();
     const double from_s = start_s + filter(k)["time_to_first_fix_s"].get<double>();
     ASSERT_GE(from_s, start_s) << name;
-    const Table nav = read_csv(out() / ("nav_" + name + ".csv"));
+    const CsvTable nav = read_csv_table(out() / ("nav_" + name + ".csv"));
     int fixed = 0, present = 0;
     for (std::size_t i = 0; i < nav.rows.size(); ++i) {
       if (nav.number(i, "t_s") < from_s - 1e-6) continue;

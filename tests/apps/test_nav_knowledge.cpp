@@ -23,6 +23,7 @@
 
 #include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
+#include "support/csv_table.hpp"
 #include "support/temp_file.hpp"
 #include "support/white_receiver.hpp"
 
@@ -45,56 +46,15 @@ std::string short_scenario(const std::filesystem::path& dir) {
   return path.string();
 }
 
-// A CSV file as its header line and its rows' fields.
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-
-  [[nodiscard]] std::size_t column(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      if (header[i] == name) return i;
-    }
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-};
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream fields(line);
-  for (std::string f; std::getline(fields, f, ',');) out.push_back(f);
-  return out;
-}
-
-Table read_table(const std::filesystem::path& path) {
-  Table t;
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  t.header = split(line);
-  while (std::getline(in, line)) t.rows.push_back(split(line));
-  return t;
-}
-
-void write_table(const std::filesystem::path& path, const Table& t) {
-  std::ofstream out(path);
-  const auto join = [&out](const std::vector<std::string>& fields) {
-    for (std::size_t i = 0; i < fields.size(); ++i) out << (i > 0 ? "," : "") << fields[i];
-    out << "\n";
-  };
-  join(t.header);
-  for (const auto& row : t.rows) join(row);
-}
-
 // A copy of the run directory `run` as `name`, its file `file` rewritten by `change`.
 template <class Change>
 std::filesystem::path changed_copy(const std::filesystem::path& run, const std::string& name, const std::string& file,
                                    Change change) {
   const auto copy = run.parent_path() / name;
   std::filesystem::copy(run, copy, std::filesystem::copy_options::recursive);
-  Table t = read_table(copy / file);
+  CsvTable t = read_csv_table(copy / file);
   change(t);
-  write_table(copy / file, t);
+  write_csv_table(copy / file, t);
   return copy;
 }
 
@@ -114,7 +74,7 @@ std::filesystem::path scenario_copy(const std::filesystem::path& run, const std:
 
 // The estimated states of nav_<craft>.csv (both spacecraft's centres of mass and antennas): the
 // columns from dsc_com_x_m on, per row.
-std::vector<std::string> estimates(const Table& nav) {
+std::vector<std::string> estimates(const CsvTable& nav) {
   std::vector<std::string> out;
   const std::size_t first = nav.column("dsc_com_x_m");
   for (const auto& row : nav.rows) {
@@ -128,8 +88,8 @@ std::vector<std::string> estimates(const Table& nav) {
 // The DSC's late data set: a PRN of the DSC filter's fixes in its first 100 s of fixing whose
 // first data set the DSC's receiver decoded at the start and which is still in its fixes at the
 // end (so that it is fixed again after its late decoding).
-int late_prn(const std::filesystem::path& nav, const Table& decoded) {
-  const Table fixes = read_table(nav / "fixes_dsc.csv");
+int late_prn(const std::filesystem::path& nav, const CsvTable& decoded) {
+  const CsvTable fixes = read_csv_table(nav / "fixes_dsc.csv");
   const double first_s = std::stod(fixes.rows.at(0)[0]);
   std::set<int> early, late;
   for (const auto& row : fixes.rows) {
@@ -157,7 +117,7 @@ class NavKnowledge : public ::testing::Test {
     replay(run, "nav");
     // truth.csv's attitudes all replaced by the identity: the filters must not see it.
     replay(changed_copy(run, "truth_changed", "truth.csv",
-                        [](Table& t) {
+                        [](CsvTable& t) {
                           for (auto& row : t.rows) {
                             row[t.column("qw_body_to_gcrf")] = "1.0";
                             for (const char* q : {"qx_body_to_gcrf", "qy_body_to_gcrf", "qz_body_to_gcrf"}) row[t.column(q)] = "0.0";
@@ -165,9 +125,9 @@ class NavKnowledge : public ::testing::Test {
                         }),
            "nav_truth_changed");
     // The truth's attitudes given as the ADCS's reports: the filters must see it.
-    const Table truth = read_table(run / "truth.csv");
+    const CsvTable truth = read_csv_table(run / "truth.csv");
     replay(changed_copy(run, "truth_reported", "attitude_reported.csv",
-                        [&truth](Table& t) {
+                        [&truth](CsvTable& t) {
                           for (std::size_t i = 0; i < t.rows.size(); ++i) {
                             for (const char* q : {"qw_body_to_gcrf", "qx_body_to_gcrf", "qy_body_to_gcrf", "qz_body_to_gcrf"}) {
                               t.rows[i][t.column(q)] = truth.rows.at(i)[truth.column(q)];
@@ -180,9 +140,9 @@ class NavKnowledge : public ::testing::Test {
     // The antenna the flight software is told, changed: the filters must see it.
     replay(scenario_copy(run, "flight_changed", "antenna_pco_m = ", "antenna_pco_m = 0.0954"), "nav_flight_changed");
     // One data set decoded by the DSC's receiver at 200 s instead of the start.
-    prn = late_prn(dir->path() / "nav", read_table(run / "ephemeris_decoded.csv"));
+    prn = late_prn(dir->path() / "nav", read_csv_table(run / "ephemeris_decoded.csv"));
     replay(changed_copy(run, "late", "ephemeris_decoded.csv",
-                        [](Table& t) {
+                        [](CsvTable& t) {
                           for (auto& row : t.rows) {
                             if (row[t.column("spacecraft")] == "dsc" && std::stoi(row[t.column("prn")]) == prn && std::stod(row[0]) < 60.0) {
                               row[0] = std::to_string(kLateDecodingS);
@@ -200,7 +160,7 @@ class NavKnowledge : public ::testing::Test {
     if (!have_navigation_file()) GTEST_SKIP() << "shared data not found: set VISORS_DATA_PATH to the shared data folder";
     ASSERT_NE(prn, 0) << "no PRN of the DSC's early and late fixes decoded at the start";
   }
-  static Table nav(const std::string& out, const std::string& file) { return read_table(dir->path() / out / file); }
+  static CsvTable nav(const std::string& out, const std::string& file) { return read_csv_table(dir->path() / out / file); }
   static TempDir* dir;
   static int prn;
 };
@@ -212,7 +172,7 @@ int NavKnowledge::prn = 0;
 TEST_F(NavKnowledge, TruthAttitudeIsForScoringOnly) {
   for (const char* craft : {"dsc", "osc"}) {
     const std::string file = std::string("nav_") + craft + ".csv";
-    const Table original = nav("nav", file), changed = nav("nav_truth_changed", file);
+    const CsvTable original = nav("nav", file), changed = nav("nav_truth_changed", file);
     ASSERT_GT(original.rows.size(), 300U) << craft;
     EXPECT_EQ(estimates(changed), estimates(original)) << craft;
     int scores_differ = 0;
@@ -253,7 +213,7 @@ TEST_F(NavKnowledge, FiltersTakeTheReportedAttitude) {
 // a lock at a frame start; the run starts at one) plus the 10 s between the two point solutions.
 TEST_F(NavKnowledge, ColdStartWaitsForTheDecodedDataSets) {
   const auto summary = nlohmann::json::parse(file_text(dir->path() / "nav" / "summary.json"));
-  const Table decoded = read_table(dir->path() / "run" / "ephemeris_decoded.csv");
+  const CsvTable decoded = read_csv_table(dir->path() / "run" / "ephemeris_decoded.csv");
   double first_s = 1e9;
   for (const auto& row : decoded.rows) first_s = std::min(first_s, std::stod(row[0]));
   EXPECT_EQ(first_s, 18.0);
@@ -263,7 +223,7 @@ TEST_F(NavKnowledge, ColdStartWaitsForTheDecodedDataSets) {
 // The DSC's receiver decoded `prn`'s set at 200 s: no fix of the DSC's filter holds it before
 // then; some after; the OSC's filter, whose receiver decoded it at the start, fixes it before.
 TEST_F(NavKnowledge, DataSetIsNotUsedBeforeItsReceiverDecodedIt) {
-  const auto uses = [](const Table& fixes, double from_s, double to_s) {
+  const auto uses = [](const CsvTable& fixes, double from_s, double to_s) {
     int n = 0;
     for (const auto& row : fixes.rows) {
       const double t_s = std::stod(row[0]);
@@ -272,7 +232,7 @@ TEST_F(NavKnowledge, DataSetIsNotUsedBeforeItsReceiverDecodedIt) {
     }
     return n;
   };
-  const Table dsc = nav("nav_late", "fixes_dsc.csv"), osc = nav("nav_late", "fixes_osc.csv");
+  const CsvTable dsc = nav("nav_late", "fixes_dsc.csv"), osc = nav("nav_late", "fixes_osc.csv");
   ASSERT_GT(dsc.rows.size(), 100U);
   std::printf("G%02d decoded by the DSC at %.0f s: in %d DSC fix rows before, %d after; in %d OSC fix rows before\n", prn,
               kLateDecodingS, uses(dsc, 0.0, kLateDecodingS), uses(dsc, kLateDecodingS, 1e9), uses(osc, 0.0, kLateDecodingS));

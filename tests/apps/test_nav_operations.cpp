@@ -14,6 +14,7 @@
 #include "core/files/data_path.hpp"
 #include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
+#include "support/csv_table.hpp"
 #include "support/temp_file.hpp"
 #include "support/white_receiver.hpp"
 
@@ -22,25 +23,19 @@ namespace {
 
 bool have_navigation_file() { return have_gnss_data("NYA100NOR_S_20241280000_01D_GN.rnx"); }
 
-void replace(std::string& text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-}
-
 // The default gnss-sim scenario, 600 s, with an observation at 300-360 s (slews from 150 s and
 // back until ~510 s), OSC maneuver pieces from 60 s (three before the slew; the rest of the
 // burst falls in it and is skipped), laser ranges every 2 s in the observation.
 std::string operations_scenario(const std::filesystem::path& dir, const std::string& name, double phase_sigma_m) {
   std::string text = file_text(std::filesystem::path(VISORS_SOURCE_DIR) / "data/scenarios/gnss_sim.toml");
-  replace(text, "duration_s = 5700.0", "duration_s = 600.0");
-  replace(text, "attitude = \"nominal\"", "attitude = \"campaign\"");
-  replace(text, "phase_sigma_m = 0.002", "phase_sigma_m = " + std::to_string(phase_sigma_m));
-  replace(text, "first_start_s = 1500.0", "first_start_s = 300.0");
-  replace(text, "duration_s = 10.0", "duration_s = 60.0");
-  replace(text, "spacecraft = \"none\"", "spacecraft = \"osc\"");
-  replace(text, "first_burst_s = 900.0", "first_burst_s = 60.0");
-  replace(text, "enabled = false", "enabled = true");
+  replace_once(text, "duration_s = 5700.0", "duration_s = 600.0");
+  replace_once(text, "attitude = \"nominal\"", "attitude = \"campaign\"");
+  replace_once(text, "phase_sigma_m = 0.002", "phase_sigma_m = " + std::to_string(phase_sigma_m));
+  replace_once(text, "first_start_s = 1500.0", "first_start_s = 300.0");
+  replace_once(text, "duration_s = 10.0", "duration_s = 60.0");
+  replace_once(text, "spacecraft = \"none\"", "spacecraft = \"osc\"");
+  replace_once(text, "first_burst_s = 900.0", "first_burst_s = 60.0");
+  replace_once(text, "enabled = false", "enabled = true");
   whiten_shipped_receiver(text);  // the filter's figures under white receiver noise
   // The flight team's filter is told its receiver's noise ([nav]; the filter never reads the
   // truth's): the SD phase of two receivers, sqrt(2) x phase_sigma_m.
