@@ -116,6 +116,11 @@ core::Result<GpsReceiver> GpsReceiver::create(const GpsReceiverSettings& setting
   receiver.epoch_.receiver_phase_cycles = receiver.rng_.uniform();
   receiver.clock_m_ = receiver.rng_.normal(settings.initial_clock_sigma_m);
   receiver.clock_rate_mps_ = receiver.rng_.normal(settings.clock_step_sigma_m) / settings.epoch_interval_s;  // f_-1
+  receiver.prn_rng_.reserve(gnss::kMaxGpsPrn + 1);
+  for (int prn = 0; prn <= gnss::kMaxGpsPrn; ++prn) {
+    const auto seed = static_cast<std::uint64_t>(receiver.rng_.uniform() * 9007199254740992.0);  // 53 random bits
+    receiver.prn_rng_.emplace_back(seed, "gps.prn");
+  }
   return receiver;
 }
 
@@ -123,9 +128,9 @@ void GpsReceiver::reacquire_all() {
   for (Track& track : tracks_) track.prn = 0;
 }
 
-std::int64_t GpsReceiver::draw_ambiguity() {
+std::int64_t GpsReceiver::draw_ambiguity(int prn) {
   // An arbitrary integer in [-2^20, 2^20): a receiver starts the phase count anywhere.
-  return static_cast<std::int64_t>(std::floor(rng_.uniform() * 2097152.0)) - 1048576;
+  return static_cast<std::int64_t>(std::floor(prn_rng(prn).uniform() * 2097152.0)) - 1048576;
 }
 
 // A geodetic position and its local axes (the Klobuchar model's azimuth and elevation are
@@ -277,7 +282,7 @@ void GpsReceiver::assign_channels(core::GpsTime t, std::size_t count, const GpsS
       if (tracks_[k].prn != 0) continue;
       tracks_[k] = Track{};
       tracks_[k].prn = prn;
-      tracks_[k].ambiguity = draw_ambiguity();
+      tracks_[k].ambiguity = draw_ambiguity(prn);
       tracks_[k].lock_start = t;
       tracks_[k].acquired = t;
       break;
@@ -293,7 +298,7 @@ bool GpsReceiver::lost_lock(Track& track, core::GpsTime t, bool& flagged) {
   flagged = true;
   if (track.lock_start == t) {  // acquired at this epoch
     track.half_cycle =
-        settings_.half_cycle_slip_probability > 0.0 && rng_.uniform() < settings_.half_cycle_slip_probability;
+        settings_.half_cycle_slip_probability > 0.0 && prn_rng(track.prn).uniform() < settings_.half_cycle_slip_probability;
     return true;
   }
   if (track.half_cycle && t.seconds_since(track.acquired) >= settings_.half_cycle_resolve_s - 1e-9) {
@@ -301,10 +306,11 @@ bool GpsReceiver::lost_lock(Track& track, core::GpsTime t, bool& flagged) {
     track.lock_start = t;
     return true;
   }
-  if (!(settings_.cycle_slip_probability > 0.0 && rng_.uniform() < settings_.cycle_slip_probability)) return false;
-  const auto size = 1 + static_cast<std::int64_t>(rng_.uniform() * settings_.max_slip_cycles);
-  track.ambiguity += rng_.uniform() < 0.5 ? -size : size;
-  flagged = !(settings_.unflagged_slip_fraction > 0.0 && rng_.uniform() < settings_.unflagged_slip_fraction);
+  RandomStream& rng = prn_rng(track.prn);
+  if (!(settings_.cycle_slip_probability > 0.0 && rng.uniform() < settings_.cycle_slip_probability)) return false;
+  const auto size = 1 + static_cast<std::int64_t>(rng.uniform() * settings_.max_slip_cycles);
+  track.ambiguity += rng.uniform() < 0.5 ? -size : size;
+  flagged = !(settings_.unflagged_slip_fraction > 0.0 && rng.uniform() < settings_.unflagged_slip_fraction);
   if (flagged) track.lock_start = t;
   return true;
 }
@@ -314,14 +320,15 @@ bool GpsReceiver::lost_lock(Track& track, core::GpsTime t, bool& flagged) {
 void GpsReceiver::step_multipath(Track& track, core::GpsTime t) {
   const double sc = settings_.code_multipath_m, sp = settings_.phase_multipath_m;
   if (!(sc > 0.0 || sp > 0.0)) return;
+  RandomStream& rng = prn_rng(track.prn);
   if (track.acquired == t) {
-    if (sc > 0.0) track.code_multipath = rng_.normal(sc);
-    if (sp > 0.0) track.phase_multipath = rng_.normal(sp);
+    if (sc > 0.0) track.code_multipath = rng.normal(sc);
+    if (sp > 0.0) track.phase_multipath = rng.normal(sp);
   } else {
     const double a = std::exp(-t.seconds_since(track.multipath_time) / settings_.multipath_tau_s);
     const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
-    if (sc > 0.0) track.code_multipath = a * track.code_multipath + b * rng_.normal(sc);
-    if (sp > 0.0) track.phase_multipath = a * track.phase_multipath + b * rng_.normal(sp);
+    if (sc > 0.0) track.code_multipath = a * track.code_multipath + b * rng.normal(sc);
+    if (sp > 0.0) track.phase_multipath = a * track.phase_multipath + b * rng.normal(sp);
   }
   track.multipath_time = t;
 }
@@ -375,11 +382,12 @@ void GpsReceiver::measure_channel(Track& track, const Candidate& candidate, cons
   m.prn = track.prn;
   const double scale = elevation_scale(candidate.elevation);
   const double noise_scale = settings_.elevation_dependent_noise ? scale : 1.0;
-  m.pseudorange_m = geometry_m + iono_m + rng_.normal(noise_scale * settings_.code_sigma_m);
-  m.carrier_phase_cycles = (geometry_m - iono_m + rng_.normal(noise_scale * settings_.phase_sigma_m)) / gnss::kL1WavelengthM +
+  RandomStream& rng = prn_rng(track.prn);
+  m.pseudorange_m = geometry_m + iono_m + rng.normal(noise_scale * settings_.code_sigma_m);
+  m.carrier_phase_cycles = (geometry_m - iono_m + rng.normal(noise_scale * settings_.phase_sigma_m)) / gnss::kL1WavelengthM +
                            static_cast<double>(track.ambiguity) + phase_offset;
   m.doppler_hz = -(range_rate + out.receiver_clock_rate_mps - satellite_clock_rate - iono_rate) / gnss::kL1WavelengthM +
-                 rng_.normal(settings_.doppler_sigma_hz);
+                 rng.normal(settings_.doppler_sigma_hz);
   m.cn0_dbhz = settings_.elevation_dependent_noise ? 50.0 - 20.0 * std::log10(scale)
                                                    : 35.0 + 15.0 * std::sin(std::max(candidate.elevation, 0.0));
   step_multipath(track, t);

@@ -206,7 +206,8 @@ class GpsReceiver {
   struct Reception;  // the antenna at the true reception time (gps_receiver.cpp)
 
   GpsReceiver(const GpsReceiverSettings& settings, RandomStream rng) : settings_(settings), rng_(std::move(rng)) {}
-  std::int64_t draw_ambiguity();
+  RandomStream& prn_rng(int prn) { return prn_rng_[static_cast<std::size_t>(prn)]; }
+  std::int64_t draw_ambiguity(int prn);  // from that PRN's stream
 
   // The steps of measure(), in order.
   void step_clock(core::GpsTime t);
@@ -224,7 +225,12 @@ class GpsReceiver {
                        const GpsSatelliteTruth& satellites);
 
   GpsReceiverSettings settings_;
-  RandomStream rng_;
+  RandomStream rng_;  // the receiver's own draws: mounting, phase offset, clock, data gaps
+  /// One stream per PRN (index: the PRN), seeded from rng_ at creation, for each channel's draws
+  /// (ambiguity, slips, half cycles, multipath, noise): a satellite acquired a step earlier or
+  /// later, or not at all, leaves every other satellite's draws as they were, so that two runs
+  /// that differ in one setting differ only where that setting acts (paired comparisons).
+  std::vector<RandomStream> prn_rng_;
   Eigen::Vector3d boresight_body_ = Eigen::Vector3d::UnitZ();
   double clock_m_ = 0.0;       // c dt_r at the last epoch [m]
   double clock_rate_mps_ = 0.0;  // its slope from the last epoch on (before the first: f_-1) [m/s]

@@ -34,7 +34,7 @@
 namespace visors::sim {
 namespace {
 
-constexpr int kSteps = 300;
+constexpr int kSteps = 480;  // the real sky's first fix comes 90-150 s after the cold start
 
 bool have_gps_constellation() { return core::files::find_data_file(GnssSettings{}.nav_file).has_value(); }
 
