@@ -474,6 +474,10 @@ CampaignScenario default_campaign() {
   return s;
 }
 
+std::int64_t step_at(double t_s, double step_s) {
+  return t_s >= 0.0 ? static_cast<std::int64_t>(std::llround(t_s / step_s)) : -1;
+}
+
 core::Result<CampaignScenario> campaign_from_toml(const std::string& text) {
   auto parsed = parse(text);
   if (!parsed.ok()) return parsed.error();

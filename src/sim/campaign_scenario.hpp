@@ -156,6 +156,10 @@ struct CampaignScenario {
   GnssSettings gnss;   // GPS constellation and receivers (visors gnss-sim)
 };
 
+/// The step of the timeline at t_s seconds since t0, `step_s` a step, or -1 for a negative
+/// (disabled) time: when a timed fault or command happens.
+std::int64_t step_at(double t_s, double step_s);
+
 /// The default scenario (the mission test case).
 CampaignScenario default_campaign();
 

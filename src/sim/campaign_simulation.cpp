@@ -27,11 +27,6 @@ std::string vector_text(const Eigen::Vector3d& x, double scale) {
   return fmt::format("[{:.4f}, {:.4f}, {:.4f}]", scale * x(0), scale * x(1), scale * x(2));
 }
 
-// The step of the timeline at `t_s` seconds since t0, or -1 for a negative (disabled) time.
-std::int64_t step_at(double t_s, double step_s) {
-  return t_s >= 0.0 ? static_cast<std::int64_t>(std::llround(t_s / step_s)) : -1;
-}
-
 // The GPS world of a cdgps run, or nothing: without the constellation there is no GPS to navigate
 // with, and the run goes on with ideal navigation (the main command works without the shared
 // data), loudly (`fallbacks`, the event log).

@@ -21,11 +21,6 @@ using gnc::Mode;
 // The host switches roles after the active spacecraft has reported GNC incapable this long [s].
 constexpr double kRoleSwitchAfter_s = 60.0;
 
-// The step of the timeline at `t_s` seconds since t0, or -1 for a negative (disabled) time.
-std::int64_t step_at(double t_s, double step_s) {
-  return t_s >= 0.0 ? static_cast<std::int64_t>(std::llround(t_s / step_s)) : -1;
-}
-
 core::Result<bool> set_up_component(HostedComponent& c, const CampaignScenario& s, bool active, bool gps) {
   std::optional<gnc::OnboardNavigation> onboard;
   if (gps) {
