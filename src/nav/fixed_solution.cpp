@@ -34,7 +34,9 @@ FixedSolutionUpdate::FixedSolutionUpdate(Index max_states, Index max_constraints
       max_constraints_(max_constraints),
       S_(Eigen::MatrixXd::Zero(max_constraints, max_constraints)),
       W_(Eigen::MatrixXd::Zero(max_constraints, max_states)),
-      v_(Eigen::VectorXd::Zero(max_constraints)) {}
+      v_(Eigen::VectorXd::Zero(max_constraints)),
+      G_(Eigen::MatrixXd::Zero(max_states, max_constraints)),
+      K_(Eigen::MatrixXd::Zero(max_states, max_constraints)) {}
 
 std::string_view to_string(Status status) {
   switch (status) {
@@ -111,6 +113,44 @@ Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eige
   // symmetric whatever round-off asymmetry the input P had.
   P.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose(), -1.0);
   P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
+  return Status::kOk;
+}
+
+Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eigen::MatrixXd> P,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
+                                  double variance, const Eigen::Ref<const Eigen::VectorXd>& gain_mask) {
+  if (gain_mask.size() != x.size()) return Status::kSizeMismatch;
+  if (!gain_mask.allFinite()) return Status::kNotFinite;
+  if ((gain_mask.array() == 1.0).all()) return apply(x, P, C, z, variance);
+  if (const Status status = check(x, P, C, z, variance); status != Status::kOk) return status;
+  const Index n = x.size();
+  const Index k = C.rows();
+  if (k == 0) return Status::kOk;
+  const auto [first, width] = column_span(C);
+  const auto c = C.middleCols(first, width);
+  auto G = G_.topLeftCorner(n, k);
+  auto K = K_.topLeftCorner(n, k);
+  auto v = v_.head(k);
+  G.noalias() = P.middleCols(first, width) * c.transpose();  // P C'
+  S_.topLeftCorner(k, k).noalias() = c * G.middleRows(first, width);
+  S_.topLeftCorner(k, k).diagonal().array() += variance;
+  v = z;
+  v.noalias() -= c * x.segment(first, width);
+  // K = G S^-1 masked, from the Cholesky factor of S before it is overwritten.
+  if (!factor(k)) return Status::kNotPositiveDefinite;
+  const auto L = S_.topLeftCorner(k, k).triangularView<Eigen::Lower>();
+  K = G;
+  L.solveInPlace(K.transpose());           // K' <- L^-1 G'
+  L.transpose().solveInPlace(K.transpose());  // K' <- L^-T L^-1 G' = S^-1 G'
+  K.array().colwise() *= gain_mask.array();
+  if (!K.allFinite()) return Status::kNotFinite;
+  x.noalias() += K * v;
+  // P - K G' - G K' + K S K' with K S = (masked K) S rebuilt from L: K S = (K L) L'.
+  P.noalias() -= K * G.transpose();
+  P.noalias() -= G * K.transpose();
+  G.noalias() = K * S_.topLeftCorner(k, k).triangularView<Eigen::Lower>();  // K L
+  P.noalias() += G * G.transpose();                                          // K L L' K' = K S K'
+  P.triangularView<Eigen::StrictlyUpper>() = P.transpose();  // exactly symmetric
   return Status::kOk;
 }
 

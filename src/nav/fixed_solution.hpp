@@ -61,6 +61,13 @@ class FixedSolutionUpdate {
   Status apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eigen::MatrixXd> P, const Eigen::Ref<const Eigen::MatrixXd>& C,
                const Eigen::Ref<const Eigen::VectorXd>& z, double variance = 0.0);
 
+  /// The same with consider states: gain_mask (n_x, entries 0 or 1) zeroes the gain of each state
+  /// whose entry is 0, so its estimate is held, and P+ is the Joseph form for that gain,
+  ///   P+ = (I - K C) P (I - K C)' + s K K' = P - K G' - G K' + K S K',  G = P C',
+  /// which holds for any K (an all-ones mask gives the update above). O(n_x^2 k). Allocates nothing.
+  Status apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eigen::MatrixXd> P, const Eigen::Ref<const Eigen::MatrixXd>& C,
+               const Eigen::Ref<const Eigen::VectorXd>& z, double variance, const Eigen::Ref<const Eigen::VectorXd>& gain_mask);
+
   [[nodiscard]] Eigen::Index max_states() const { return max_states_; }
   [[nodiscard]] Eigen::Index max_constraints() const { return max_constraints_; }
 
@@ -77,6 +84,8 @@ class FixedSolutionUpdate {
   Eigen::MatrixXd S_;  // max_constraints x max_constraints: C P C' + s I, then its Cholesky factor
   Eigen::MatrixXd W_;  // max_constraints x max_states: C P, then L^-1 C P
   Eigen::VectorXd v_;  // max_constraints: z - C x, then L^-1 (z - C x)
+  Eigen::MatrixXd G_;  // max_states x max_constraints: P C' (the consider form)
+  Eigen::MatrixXd K_;  // max_states x max_constraints: the masked gain, then K S
 };
 
 /// "ok", "size_mismatch", "out_of_capacity", "not_finite", "negative_variance",

@@ -60,26 +60,33 @@ bool joseph_update(NavMatrix& P, const NavRow& h, const NavVector& gain, double 
 
 ScalarUpdateResult scalar_update_lower(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
                                        double gate_sigmas, ScalarUpdateWorkspace& workspace) {
+  return scalar_update_lower(x, P, h, innovation, variance, variance, gate_sigmas, workspace);
+}
+
+ScalarUpdateResult scalar_update_lower(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
+                                       double gate_variance, double gate_sigmas, ScalarUpdateWorkspace& workspace) {
   ScalarUpdateResult result;
   result.innovation = innovation;
-  if (!finite_scalars(innovation, variance, gate_sigmas) || !(variance > 0.0) || !(gate_sigmas > 0.0) ||
-      !h.allFinite() || !x.allFinite()) {
+  if (!finite_scalars(innovation, variance, gate_sigmas) || !std::isfinite(gate_variance) || !(variance > 0.0) ||
+      !(gate_variance > 0.0) || !(gate_sigmas > 0.0) || !h.allFinite() || !x.allFinite()) {
     return result;
   }
   NavVector& u = workspace.ph;
   sparse_product_lower(P, h, u);
   if (!u.allFinite()) return result;  // a non-finite P (see joseph_update)
-  const double s = (h * u).value() + variance;
-  if (!std::isfinite(s) || !(s > 0.0)) return result;  // P not positive semidefinite along h
-  result.innovation_variance = s;
-  result.normalised_innovation = innovation / std::sqrt(s);
-  result.normalised_innovation_squared = innovation * innovation / s;
-  if (std::abs(innovation) > gate_sigmas * std::sqrt(s)) {
+  const double hph = (h * u).value();
+  const double s = hph + variance;
+  const double s_gate = hph + gate_variance;
+  if (!std::isfinite(s) || !(s > 0.0) || !(s_gate > 0.0)) return result;  // P not positive semidefinite along h
+  result.innovation_variance = s_gate;
+  result.normalised_innovation = innovation / std::sqrt(s_gate);
+  result.normalised_innovation_squared = innovation * innovation / s_gate;
+  if (std::abs(innovation) > gate_sigmas * std::sqrt(s_gate)) {
     result.status = ScalarUpdateStatus::kRejected;
     return result;
   }
   NavVector& k = workspace.gain;
-  k = u / s;
+  k = (u / s).cwiseProduct(workspace.gain_mask);
   if (!k.allFinite()) return result;  // overflow of a finite input (s subnormal)
   x.noalias() += k * innovation;
   joseph_rank_one_lower(P, h, k, variance, u);

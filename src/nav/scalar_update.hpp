@@ -52,6 +52,10 @@ struct ScalarUpdateResult {
 struct ScalarUpdateWorkspace {
   NavVector ph;    // P h', then (I - k h) P h' - r k
   NavVector gain;  // k = P h' / s
+  // 1: the state is estimated; 0: a consider state (Schmidt): its gain is zeroed, so its
+  // estimate is held while its covariance and its correlations with the others are carried by
+  // the Joseph form, which holds for any gain. All ones: the optimal update.
+  NavVector gain_mask = NavVector::Ones();
 };
 
 /// One scalar update in place on (x, P): innovation nu = y - h(x) [measurement unit], h the
@@ -66,6 +70,14 @@ ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, do
 /// half the matrix per scalar (bench_nav filter epoch: 88 us with it, 80 us without).
 ScalarUpdateResult scalar_update_lower(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
                                        double gate_sigmas, ScalarUpdateWorkspace& workspace);
+
+/// The same with the gate (and the reported innovation variance and NIS) on a variance of its own:
+/// s_gate = h P h' + gate_variance, while the gain uses s = h P h' + variance. For a measurement
+/// whose errors are correlated from epoch to epoch, the update weighs it by an inflated variance
+/// (what N correlated samples are worth), while a slip still shows against the per-epoch noise
+/// (nav/cdgps_settings.hpp, sdcp_correlation_inflation). gate_variance > 0, finite.
+ScalarUpdateResult scalar_update_lower(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
+                                       double gate_variance, double gate_sigmas, ScalarUpdateWorkspace& workspace);
 
 /// Copies the lower triangle of P onto its upper one: P exactly symmetric.
 void mirror_lower(NavMatrix& P);

@@ -171,6 +171,59 @@ TEST(FixedSolution, HoldUpdateCovarianceEqualsInformationForm) {
   EXPECT_LT(max_abs(updated(p, s).P - expected.P), 1e-9 * max_abs(p.prior.P));
 }
 
+// Consider states: the masked gain K = mask (P C' S^-1), the Joseph form
+// (I - K C) P (I - K C)' + s K K' (valid for any gain), written out densely.
+Gaussian dense_consider_update(const Problem& p, double s, const Eigen::VectorXd& mask) {
+  const Eigen::MatrixXd S = p.C * p.prior.P * p.C.transpose() + s * Eigen::MatrixXd::Identity(p.C.rows(), p.C.rows());
+  const Eigen::MatrixXd K = mask.asDiagonal() * (p.prior.P * p.C.transpose() * S.inverse());
+  const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(p.prior.x.size(), p.prior.x.size()) - K * p.C;
+  return {p.prior.x + K * (p.z - p.C * p.prior.x), A * p.prior.P * A.transpose() + s * K * K.transpose()};
+}
+
+Gaussian consider_updated(const Problem& p, double s, const Eigen::VectorXd& mask) {
+  auto update = FixedSolutionUpdate::create(p.prior.x.size(), p.C.rows()).value();
+  Gaussian out = p.prior;
+  EXPECT_EQ(update.apply(out.x, out.P, p.C, p.z, s, mask), Status::kOk);
+  return out;
+}
+
+Eigen::VectorXd mask_without(Index n, Index first, Index count) {
+  Eigen::VectorXd mask = Eigen::VectorXd::Ones(n);
+  mask.segment(first, count).setZero();
+  return mask;
+}
+
+TEST(FixedSolution, ConsiderStatesAreHeld) {
+  const Problem p = random_problem(10, 4, 31);
+  const Gaussian out = consider_updated(p, 1e-3, mask_without(10, 2, 3));
+  EXPECT_EQ(out.x.segment(2, 3), p.prior.x.segment(2, 3));
+}
+
+TEST(FixedSolution, ConsiderHoldCovarianceEqualsDenseJoseph) {
+  const Problem p = random_problem(10, 4, 32);
+  const Eigen::VectorXd mask = mask_without(10, 2, 3);
+  EXPECT_LT(max_abs(consider_updated(p, 1e-3, mask).P - dense_consider_update(p, 1e-3, mask).P), 1e-9 * max_abs(p.prior.P));
+}
+
+TEST(FixedSolution, ConsiderExactMeanEqualsDenseJoseph) {
+  const Problem p = random_problem(10, 4, 33);
+  const Eigen::VectorXd mask = mask_without(10, 6, 2);
+  const Gaussian expected = dense_consider_update(p, 0.0, mask);
+  EXPECT_LT(max_abs(consider_updated(p, 0.0, mask).x - expected.x), 1e-9 * (1.0 + max_abs(expected.x)));
+}
+
+TEST(FixedSolution, AllOnesMaskIsTheOptimalUpdate) {
+  const Problem p = random_problem(10, 4, 34);
+  EXPECT_EQ(consider_updated(p, 1e-3, Eigen::VectorXd::Ones(10)).P, updated(p, 1e-3).P);
+}
+
+TEST(FixedSolution, MaskOfTheWrongSizeIsASizeMismatch) {
+  const Problem p = random_problem(10, 4, 35);
+  auto update = FixedSolutionUpdate::create(10, 4).value();
+  Gaussian out = p.prior;
+  EXPECT_EQ(update.apply(out.x, out.P, p.C, p.z, 1e-3, Eigen::VectorXd::Ones(9)), Status::kSizeMismatch);
+}
+
 // The input P carries a round-off asymmetry (as a filter's time update may leave): P+ comes out
 // exactly symmetric all the same.
 TEST(FixedSolution, CovarianceComesOutExactlySymmetric) {

@@ -181,6 +181,32 @@ TEST(NavAllocation, FixedSolutionUpdateAllocatesNothing) {
   }
 }
 
+// The consider form (phase-centre states held between attitude turns): its Joseph products at
+// capacity, in the caller's and the update's preallocated storage.
+TEST(NavAllocation, ConsiderFixedSolutionUpdateAllocatesNothing) {
+  std::mt19937_64 rng(10);
+  SdFilterAtCapacity f = sd_filter_at_capacity(rng);
+  ASSERT_TRUE(f.dd.evaluate(f.x, f.P));
+  auto ils = IntegerLeastSquares::create().value();
+  FixedAtCapacity fixed;
+  fixed.fix = resolve_ambiguities(ils, f.dd.a(), f.dd.Q(), AcceptanceSettings{});
+  fixed.k = fixed_constraints(fixed.fix, ils, f.dd, fixed.C, fixed.z);
+  ASSERT_EQ(fixed.k, 62);
+  auto update = FixedSolutionUpdate::create(SdFilterAtCapacity::kStates).value();
+  Eigen::VectorXd mask = Eigen::VectorXd::Ones(SdFilterAtCapacity::kStates);
+  mask.head(3).setZero();
+  for (const double variance : {0.0, 1e-3}) {
+    Eigen::VectorXd x = f.x;
+    Eigen::MatrixXd P = f.P;
+    auto status = FixedSolutionUpdate::Status::kSizeMismatch;
+    EXPECT_EQ(test::count_allocations([&] {
+                status = update.apply(x, P, fixed.C.topRows(fixed.k), fixed.z.head(fixed.k), variance, mask);
+              }),
+              0);
+    EXPECT_EQ(status, FixedSolutionUpdate::Status::kOk) << variance;
+  }
+}
+
 // The Gauss-Markov chain is computed in a step when dt varies: fixed-size Eigen only.
 TEST(NavAllocation, GaussMarkovChainAllocatesNothing) {
   GaussMarkovChain chain{};

@@ -95,6 +95,52 @@ TEST(ScalarUpdate, JosephRankOneEqualsDenseJosephWithOptimalGain) {
   EXPECT_LT(relative_difference(f.P, expected), 1e-13);  // round-off: ~100 eps
 }
 
+// Consider states (Schmidt): a zero in the gain mask holds that state's estimate while the
+// covariance is the Joseph form of the masked gain (Bucy & Joseph; Zanetti & D'Souza 2012).
+TEST(ScalarUpdate, ConsiderStateEstimateIsHeld) {
+  std::mt19937_64 rng(41);
+  Filter f = random_filter(rng);
+  const double held = f.x(12);
+  ScalarUpdateWorkspace ws;
+  ws.gain_mask(12) = 0.0;
+  (void)scalar_update(f.x, f.P, random_row(rng), 0.3, 0.5, kWideGate, ws);
+  EXPECT_EQ(f.x(12), held);
+}
+
+TEST(ScalarUpdate, ConsiderCovarianceEqualsDenseJosephWithMaskedGain) {
+  std::mt19937_64 rng(42);
+  const Filter prior = random_filter(rng);
+  const NavRow h = random_row(rng);
+  const double r = 0.5;
+  Filter f = prior;
+  ScalarUpdateWorkspace ws;
+  ws.gain_mask.segment<3>(10).setZero();
+  (void)scalar_update(f.x, f.P, h, 0.3, r, kWideGate, ws);
+  const VectorXd k = optimal_gain(prior.P, h, r).cwiseProduct(ws.gain_mask);
+  EXPECT_LT(relative_difference(f.P, dense_joseph(prior.P, h, k, r)), 1e-13);
+}
+
+// A gate variance of its own (sdcp_correlation_inflation): the update weighs by the inflated
+// variance, the gate judges against the per-epoch one.
+TEST(ScalarUpdate, GateVarianceOfItsOwnRejectsWhatTheInflatedVarianceWouldPass) {
+  std::mt19937_64 rng(43);
+  Filter f = random_filter(rng, 1e-8, 1e-6);  // a converged filter: h P h' << r
+  const NavRow h = NavRow::Unit(0);
+  ScalarUpdateWorkspace ws;
+  EXPECT_EQ(scalar_update_lower(f.x, f.P, h, 0.02, 100.0 * 1e-5, 1e-5, 5.0, ws).status, ScalarUpdateStatus::kRejected);
+}
+
+TEST(ScalarUpdate, GateVarianceOfItsOwnLeavesTheUpdateOnTheWeightVariance) {
+  std::mt19937_64 rng(44);
+  const Filter prior = random_filter(rng);
+  const NavRow h = random_row(rng);
+  Filter f = prior;
+  ScalarUpdateWorkspace ws;
+  (void)scalar_update_lower(f.x, f.P, h, 0.3, 50.0, 0.5, kWideGate, ws);
+  mirror_lower(f.P);
+  EXPECT_LT(relative_difference(f.P, dense_joseph(prior.P, h, optimal_gain(prior.P, h, 50.0), 50.0)), 1e-13);
+}
+
 TEST(ScalarUpdate, JosephEqualsShortFormWithOptimalGain) {
   std::mt19937_64 rng(3);
   const Filter prior = random_filter(rng);
