@@ -22,7 +22,7 @@ struct FlagKey {
   bool nav::CdgpsSettings::*field;
 };
 
-constexpr std::array<NumberKey, 23> kNumbers = {{
+constexpr std::array<NumberKey, 27> kNumbers = {{
     {"max_step_s", &nav::CdgpsSettings::max_step_s},
     {"empirical_tau_s", &nav::CdgpsSettings::empirical_tau_s},
     {"empirical_sigma_mps2", &nav::CdgpsSettings::empirical_sigma_mps2},
@@ -42,17 +42,22 @@ constexpr std::array<NumberKey, 23> kNumbers = {{
     {"slot_timeout_s", &nav::CdgpsSettings::slot_timeout_s},
     {"graphic_sigma_m", &nav::CdgpsSettings::graphic_sigma_m},
     {"sdcp_sigma_m", &nav::CdgpsSettings::sdcp_sigma_m},
+    {"sdcp_correlation_inflation", &nav::CdgpsSettings::sdcp_correlation_inflation},
+    {"phase_center_turn_rate_deg_s", &nav::CdgpsSettings::phase_center_turn_rate_deg_s},
+    {"phase_center_free_after_turn_s", &nav::CdgpsSettings::phase_center_free_after_turn_s},
     {"gate_sigmas", &nav::CdgpsSettings::gate_sigmas},
     {"sd_code_sigma_m", &nav::CdgpsSettings::sd_code_sigma_m},
     {"min_weighting_elevation_deg", &nav::CdgpsSettings::min_weighting_elevation_deg},
+    {"min_fix_elevation_deg", &nav::CdgpsSettings::min_fix_elevation_deg},
     {"hold_variance_cycles2", &nav::CdgpsSettings::hold_variance_cycles2},
 }};
 
-constexpr std::array<FlagKey, 4> kFlags = {{
+constexpr std::array<FlagKey, 5> kFlags = {{
     {"sd_code", &nav::CdgpsSettings::sd_code},
     {"elevation_weighting", &nav::CdgpsSettings::elevation_weighting},
     {"ambiguity_resolution", &nav::CdgpsSettings::ambiguity_resolution},
     {"hold", &nav::CdgpsSettings::hold},
+    {"phase_center_consider_between_turns", &nav::CdgpsSettings::phase_center_consider_between_turns},
 }};
 
 std::optional<core::Error> check_nav_keys(const toml::table& table) {

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <span>
+
+#include <Eigen/Geometry>
 
 #include "core/constants.hpp"
 #include "core/rtn_frame.hpp"
@@ -36,6 +39,7 @@ struct Scalar {
   // integer, 2 dI / lambda and the codes' noise off). Independent of the state's error.
   double from_code = 0.0;
   double variance_scale = 1.0;  // elevation weighting (settings)
+  double sin_elevation = 1.0;   // sine of the elevation above the antenna plane (SDCP: the lower receiver's)
   MeasurementPrediction p;
 };
 
@@ -75,6 +79,12 @@ struct CdgpsFilter::Impl {
   int sdcp_count = 0;
   int code_count = 0;
   bool fixed_valid = false;  // x_fixed, P_fixed hold this epoch's fixed solution
+  // Attitude turns (phase_centre_gain_mask): each spacecraft's body-to-RTN attitude at the last
+  // epoch, and per body axis the last epoch at which a turn exposed it.
+  std::array<Eigen::Matrix3d, 2> body_to_rtn{};
+  core::GpsTime attitude_t;
+  bool have_attitude = false;
+  std::array<std::optional<core::GpsTime>, 3> last_exposed{};  // per body axis: the last turn that exposed it
   Eigen::Matrix<double, kMaxAmbiguities, kNavStates> C;
   Eigen::Matrix<double, kMaxAmbiguities, 1> z_fixed;
   std::array<Eigen::Index, kGpsSlots> dd_others{};
@@ -83,6 +93,7 @@ struct CdgpsFilter::Impl {
   std::array<core::GpsTime, 2 * 33> ranged_toe{};   // t_oe of the broadcast record each range used
   std::array<core::GpsTime, kGpsSlots> graphic_toe{};  // ... at each GRAPHIC slot's last measurement
   std::array<double, 2 * 33> weight_scale{};  // 1 / sin^2(elevation above the antenna plane), floored
+  std::array<double, 2 * 33> sin_elevation{};  // sin(elevation above the antenna plane)
 
   double scale(Craft c, int prn) const {
     return weighting ? weight_scale[static_cast<std::size_t>(33 * static_cast<int>(c) + prn)] : 1.0;
@@ -107,6 +118,7 @@ struct CdgpsFilter::Impl {
   bool absorb_clock_jump(const std::array<Scalar, kGpsSlots>& scalars, int count, int clock_state, double sigma_m,
                          const CdgpsSettings& s);
   void process(const CdgpsSettings& s, CdgpsEpochReport& report);
+  Eigen::Vector3d phase_centre_gain_mask(const CdgpsEpochInput& in, const CdgpsSettings& s);
   std::array<core::StateVector, 2> propagate_mean_states(NavVector& xs, double dt, const CdgpsSettings& s);
   void update_sd_code(const CdgpsSettings& s, CdgpsEpochReport& report);
   void resolve(const CdgpsSettings& s, CdgpsEpochReport& report);
@@ -357,6 +369,7 @@ void CdgpsFilter::Impl::compute_ranges(const CdgpsEpochInput& in, const gnss::Ep
       ranged_toe[index] = e->toe;
       const double sine = (antennas[k]->body_to_gcrf * antennas[k]->boresight_body).dot(ranges[index].line_of_sight_gcrf);
       weight_scale[index] = 1.0 / std::pow(std::max(sine, sin_floor), 2);
+      sin_elevation[index] = sine;
     }
   }
 }
@@ -445,6 +458,8 @@ void CdgpsFilter::Impl::predict_scalars(Craft local) {
     Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
     m.p = predict_sdcp(x, *range(Craft::kOsc, m.prn), *range(Craft::kDsc, m.prn), m.state, kLambda);
     m.variance_scale = 0.5 * (scale(Craft::kOsc, m.prn) + scale(Craft::kDsc, m.prn));  // two phases
+    m.sin_elevation = std::min(sin_elevation[static_cast<std::size_t>(33 * static_cast<int>(Craft::kOsc) + m.prn)],
+                               sin_elevation[static_cast<std::size_t>(33 * static_cast<int>(Craft::kDsc) + m.prn)]);
   }
   for (int i = 0; i < code_count; ++i) {
     Scalar& m = code_scalars[static_cast<std::size_t>(i)];
@@ -576,6 +591,43 @@ void CdgpsFilter::Impl::update_sd_code(const CdgpsSettings& s, CdgpsEpochReport&
   ++report.nis_count;
 }
 
+// Which body axes of the phase-centre states are estimated this epoch (cdgps_settings.hpp,
+// phase_center_consider_between_turns), as a gain mask (1: estimated): those a turn of either
+// spacecraft's attitude in its own orbital frame (the reported attitude against the estimated
+// centre of mass's RTN axes) faster than the threshold has exposed, until
+// phase_center_free_after_turn_s after it. A turn exposes the offsets normal to its axis only
+// (the one along it keeps its direction): body axis i counts as exposed when the turn axis is
+// more than ~25 deg from it (|k_i| < 0.9). The calibration yaws (about Z) expose X and Y, the
+// observation slews (about Y) X and Z; an axis left free after a turn that cannot see it would
+// drift with whatever error it is handed, as the states did when always free.
+Eigen::Vector3d CdgpsFilter::Impl::phase_centre_gain_mask(const CdgpsEpochInput& in, const CdgpsSettings& s) {
+  if (!s.phase_center_consider_between_turns) return Eigen::Vector3d::Ones();
+  constexpr double kTurnAxisCosine = 0.9;
+  const AntennaGeometry* antennas[2] = {&in.dsc_antenna, &in.osc_antenna};
+  const double dt = have_attitude ? t.seconds_since(attitude_t) : 0.0;
+  for (int k = 0; k < 2; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const Eigen::Matrix3d now = core::gcrf_to_rtn_matrix(centre_of_mass(x, kCrafts[k])) * antennas[k]->body_to_gcrf;
+    if (have_attitude && dt > 0.0) {
+      const Eigen::AngleAxisd turn(Eigen::Matrix3d(body_to_rtn[i].transpose() * now));  // axis in body axes
+      if (turn.angle() / dt > s.phase_center_turn_rate_deg_s * core::kDegToRad) {
+        for (int axis = 0; axis < 3; ++axis) {
+          if (std::abs(turn.axis()(axis)) < kTurnAxisCosine) last_exposed[static_cast<std::size_t>(axis)] = t;
+        }
+      }
+    }
+    body_to_rtn[i] = now;
+  }
+  attitude_t = t;
+  have_attitude = true;
+  Eigen::Vector3d mask = Eigen::Vector3d::Zero();
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& when = last_exposed[static_cast<std::size_t>(axis)];
+    if (when && t.seconds_since(*when) <= s.phase_center_free_after_turn_s) mask(axis) = 1.0;
+  }
+  return mask;
+}
+
 // Sequential scalar updates, GRAPHIC, SD code, then SDCP, each in consensus order (file comment
 // of cdgps_filter.hpp), on the lower triangle of P, mirrored once at the end.
 void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report) {
@@ -598,16 +650,17 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
   update_sd_code(s, report);
   for (int i = 0; i < sdcp_count; ++i) {
     Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
-    const double variance = m.variance_scale * s.sdcp_sigma_m * s.sdcp_sigma_m;
+    const double variance = m.variance_scale * s.sdcp_sigma_m * s.sdcp_sigma_m;  // per epoch: the gate's
+    const double weight_variance = s.sdcp_correlation_inflation * variance;       // the update's
     if (m.reinitialise) lock[static_cast<std::size_t>(m.slot)] = 0;
-    auto r = scalar_update_lower(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
+    auto r = scalar_update_lower(x, P, m.p.h, innovation(m), weight_variance, variance, s.gate_sigmas, workspace);
     if (r.status == ScalarUpdateStatus::kRejected) {  // a slip the indicator missed
       ++report.sdcp_rejected;
       ++report.detected_slips;
       ++report.new_ambiguities;
       (void)sdcp.reinitialise(m.slot, m.from_code, std::pow(s.sdcp_ambiguity_sigma_cycles, 2), x, P);
       lock[static_cast<std::size_t>(m.slot)] = 0;
-      r = scalar_update_lower(x, P, m.p.h, innovation(m), variance, s.gate_sigmas, workspace);
+      r = scalar_update_lower(x, P, m.p.h, innovation(m), weight_variance, variance, s.gate_sigmas, workspace);
     }
     if (r.status == ScalarUpdateStatus::kAccepted) {
       ++report.sdcp_used;
@@ -621,12 +674,16 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
   mirror_lower(P);  // the updates above kept the lower triangle only (scalar_update.hpp)
 }
 
-// Integer ambiguity resolution on the DDs of this epoch's SDCP slots (file comment).
+// Integer ambiguity resolution on the DDs of this epoch's SDCP slots (file comment), those of the
+// satellites above min_fix_elevation_deg at both receivers; the lower ones stay float.
 void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report) {
+  const bool masked = s.min_fix_elevation_deg > 0.0;
+  const double sin_mask = std::sin(s.min_fix_elevation_deg * core::kDegToRad);
+  const auto fixable = [=](const Scalar& m) { return m.slot >= 0 && (!masked || m.sin_elevation >= sin_mask); };
   int reference = -1, others = 0;
   for (int i = 0; i < sdcp_count; ++i) {
     const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
-    if (m.slot < 0) continue;
+    if (!fixable(m)) continue;
     if (reference < 0 || lock[static_cast<std::size_t>(m.slot)] > lock[static_cast<std::size_t>(sdcp_scalars[static_cast<std::size_t>(reference)].slot)]) {
       reference = i;
     }
@@ -635,7 +692,7 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
   report.dd_prns[0] = sdcp_scalars[static_cast<std::size_t>(reference)].prn;
   for (int i = 0; i < sdcp_count; ++i) {
     const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
-    if (m.slot < 0 || i == reference) continue;
+    if (!fixable(m) || i == reference) continue;
     report.dd_prns[static_cast<std::size_t>(others + 1)] = m.prn;
     dd_others[static_cast<std::size_t>(others++)] = m.state;
   }
@@ -649,7 +706,7 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
   const Eigen::Index k = fixed_constraints(report.fix, ils, dd, C, z_fixed);
   x_fixed = x;
   P_fixed = P;
-  if (k == 0 || fixer.apply(x_fixed, P_fixed, C.topRows(k), z_fixed.head(k), 0.0) != FixedSolutionUpdate::Status::kOk) return;
+  if (k == 0 || fixer.apply(x_fixed, P_fixed, C.topRows(k), z_fixed.head(k), 0.0, workspace.gain_mask) != FixedSolutionUpdate::Status::kOk) return;
   // Wrong-fix check (digest 6.6): the fixed solution must explain every SDCP used to the gate.
   for (int i = 0; i < sdcp_count; ++i) {
     const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
@@ -670,7 +727,7 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
   }
   if (s.hold && report.fix.outcome == FixOutcome::kFixed) {
     const Eigen::Index held = rows_to_hold(k, s.hold_variance_cycles2);
-    report.held = held > 0 && fixer.apply(x, P, C.topRows(held), z_fixed.head(held), s.hold_variance_cycles2) ==
+    report.held = held > 0 && fixer.apply(x, P, C.topRows(held), z_fixed.head(held), s.hold_variance_cycles2, workspace.gain_mask) ==
                                   FixedSolutionUpdate::Status::kOk;
   }
 }
@@ -732,6 +789,9 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
     report.clock_jumps += m.absorb_clock_jump(m.code_scalars, m.code_count, state::clock(remote), settings_.sd_code_sigma_m,
                                               settings_) ? 1 : 0;
   }
+  const Eigen::Vector3d free = m.phase_centre_gain_mask(in, settings_);
+  for (const Craft c : kCrafts) m.workspace.gain_mask.segment<3>(state::phase_center(c)) = free;
+  report.phase_centre_axes_estimated = static_cast<int>(free.sum());
   m.order_by_consensus(m.graphic_scalars, m.graphic_count);
   m.order_by_consensus(m.sdcp_scalars, m.sdcp_count);
   m.process(settings_, report);

@@ -25,8 +25,13 @@
 //    innovation is the epoch's median first, so that a slipped or blundered one cannot capture
 //    the nearly free receiver clock (optionally weighted by the elevation, CdgpsSettings). A rejected SDCP is a cycle slip the indicator
 //    missed: its slot is reinitialised and the measurement processed again (it then only sets the
-//    new ambiguity); a rejected GRAPHIC is a code outlier and is dropped.
-// 3. Integer ambiguity resolution: the SDCP slots updated this epoch form double differences
+//    new ambiguity); a rejected GRAPHIC is a code outlier and is dropped. An SDCP is weighed by
+//    its per-epoch variance times sdcp_correlation_inflation (correlated multipath) and gated on
+//    the per-epoch variance alone. The phase-centre states have a gain only along the body axes
+//    an attitude turn has just exposed; otherwise they are consider states
+//    (docs/phase-centre-estimation.md).
+// 3. Integer ambiguity resolution: the SDCP slots updated this epoch (of the satellites above
+//    min_fix_elevation_deg at both antennas) form double differences
 //    against the one with the most epochs of continuous lock (nav/double_difference.hpp); the
 //    acceptance of nav/ambiguity_acceptance.hpp (success rate and ratio, partial fixing) decides;
 //    the fixed solution is the float state conditioned on the fixed integers
@@ -90,6 +95,7 @@ struct CdgpsEpochReport {
   double graphic_nis_sum = 0.0;  // the GRAPHIC part of nis_sum (graphic_used scalars)
   double sdcp_nis_sum = 0.0;     // the SDCP part of nis_sum (sdcp_used scalars)
   int double_differences = 0;
+  int phase_centre_axes_estimated = 0;  // body axes of the phase-centre states with a gain this epoch (the others: consider states)
   /// The satellites of this epoch's double differences: the reference, then the others.
   std::array<int, kGpsSlots> dd_prns{};
   /// The fixed integer of each double difference, aligned with dd_prns (element 0, the reference's,

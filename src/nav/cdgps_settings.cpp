@@ -43,8 +43,18 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   if (!(s.graphic_bias_random_walk_m >= 0.0 && std::isfinite(s.graphic_bias_random_walk_m))) {
     return core::Error{"graphic_bias_random_walk_m", "must be a finite number >= 0"};
   }
+  if (!positive(s.phase_center_turn_rate_deg_s)) return core::Error{"phase_center_turn_rate_deg_s", "must be a finite number > 0"};
+  if (!(std::isfinite(s.phase_center_free_after_turn_s) && s.phase_center_free_after_turn_s >= 0.0)) {
+    return core::Error{"phase_center_free_after_turn_s", "must be a finite number >= 0"};
+  }
+  if (!(std::isfinite(s.sdcp_correlation_inflation) && s.sdcp_correlation_inflation >= 1.0)) {
+    return core::Error{"sdcp_correlation_inflation", "must be a finite number >= 1"};
+  }
   if (!(s.min_float_s_before_fix >= 0.0 && s.min_float_s_before_fix <= 3600.0)) {
     return core::Error{"min_float_s_before_fix", "must be in [0, 3600] s"};
+  }
+  if (!(s.min_fix_elevation_deg >= 0.0 && s.min_fix_elevation_deg < 90.0)) {
+    return core::Error{"min_fix_elevation_deg", "must be in [0, 90) deg"};
   }
   if (!(s.min_weighting_elevation_deg > 0.0 && s.min_weighting_elevation_deg <= 90.0)) {
     return core::Error{"min_weighting_elevation_deg", "must be in (0, 90] deg"};

@@ -60,6 +60,20 @@ struct CdgpsSettings {
   // them apart only through the attitude's turns (docs/decisions.md: with a 0.1 mm prior the
   // states were held at the calibration, which the truth then equalled exactly).
   double phase_center_sigma_m = 5e-3;
+  // The phase-centre states as consider states between attitude turns. With both spacecraft in
+  // the same attitude, fixed in the orbital frame, C (p_osc - p_dsc) is a constant RTN offset
+  // between the antennas and the centres of mass; along-track it is a free relative orbit, so the
+  // data cannot tell it from the centres of mass, and estimated states drift with whatever
+  // along-track error they are handed (docs/navigation-multipath.md: 10 mm with no phase-centre
+  // error in the truth). They get a gain only from a turn of either spacecraft's attitude in its
+  // orbital frame faster than phase_center_turn_rate_deg_s (a slew: the antenna offset jumps, the
+  // centres of mass cannot) until phase_center_free_after_turn_s after it, and only along the
+  // body axes the turn exposes (normal to its axis); otherwise their estimate is held at what the
+  // last turns gave (the calibration before any) while their covariance and correlations are
+  // carried (Schmidt consider states, Joseph form). false: always estimated.
+  bool phase_center_consider_between_turns = true;
+  double phase_center_turn_rate_deg_s = 0.5;  // [deg/s]: the slews turn at 1.5, the nominal attitude at < 0.1
+  double phase_center_free_after_turn_s = 300.0;  // [s]
   // New ambiguities start at their code value (cdgps_filter.cpp, start_ambiguities): GRAPHIC
   // minus code, off by the code's ionospheric delay (2-5 m at 500 km in 2024) and noise; SD
   // phase minus SD code, off by the SD code's noise (0.3 m: 1.5 cycles) and multipath.
@@ -76,6 +90,15 @@ struct CdgpsSettings {
   // graphic_bias_random_walk_m. (As white noise, 0.15 m before: the NIS then depended on time.)
   double graphic_sigma_m = 0.1;
   double sdcp_sigma_m = 0.00283;           // sqrt(2) x 2 mm
+  // Variance factor of an SDCP in the float filter's update, >= 1: the SD phase's multipath is
+  // correlated from one epoch to the next (structure multipath changes as the line of sight turns
+  // in the antenna frame, over tens of seconds), so N epochs carry the information of fewer
+  // independent ones: N (1 - phi) / (1 + phi) for a first-order Gauss-Markov error, phi =
+  // exp(-1 s / tau). Weighed as white, the float filter follows the multipath's rate into its
+  // relative velocity. The innovation gate (slip detection) and the wrong-fix check keep the
+  // per-epoch sdcp_sigma_m: inflating them would let a cycle slip or a wrong integer through.
+  // 1: white. Default: docs/navigation-multipath.md (measured on seeds outside the acceptance set).
+  double sdcp_correlation_inflation = 12.0;
   double gate_sigmas = 5.0;                // scalar innovation gate [innovation sigmas]
   // The SD code (nav/gps_measurement_model.hpp) of the satellites both receivers track, averaged
   // into one scalar per epoch: it ties the clock difference to the codes at every epoch. Without
@@ -102,6 +125,12 @@ struct CdgpsSettings {
   // converged: the closed loop's cold start fixed wrong integers 7 s after it (white receiver
   // noise, 2 epochs) before this guard. RTKLIB's demo5 waits similarly (arminfix, arthres1).
   double min_float_s_before_fix = 30.0;
+  // Elevation mask of the integer resolution [deg]: a satellite lower than this above either
+  // antenna's plane stays in the float solution, unfixed (RTKLIB's arelmask). Multipath grows as
+  // 1 / sin(elevation) (2 mm at the zenith is 11.5 mm at 10 deg, 23 mm at 5 deg), and a float
+  // ambiguity biased by a few hundredths of a cycle passes the acceptance test with a wrong
+  // integer. 0: every satellite tracked.
+  double min_fix_elevation_deg = 15.0;
   AcceptanceSettings acceptance{};
   // Fix-and-hold: accepted full fixes fed back into the float filter, each fixed combination once,
   // as a pseudo-measurement of this variance. A DD ambiguity is an integer exactly, so the hold

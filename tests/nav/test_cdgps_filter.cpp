@@ -7,9 +7,12 @@
 // consistent with their variances, and an injected unflagged slip must be detected.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "gnss/ephemeris_set.hpp"
 #include "core/rtn_frame.hpp"
@@ -138,6 +141,8 @@ RunOutcome simulate(int epochs, int slip_epoch = -1, const Impulse& impulse = {}
   Simulation sim;
   CdgpsSettings settings;
   settings.elevation_weighting = false;  // this simulation's noise does not depend on the elevation
+  settings.min_fix_elevation_deg = 0.0;   // ... nor has multipath
+  settings.sdcp_correlation_inflation = 1.0;  // white: each epoch independent
   settings.position_sigma_m = std::max(settings.position_sigma_m, 1.5 * start.scale * 6.0);
   settings.sd_code = remote.sd_code;
   settings.graphic_sigma_m = 0.1;  // no broadcast error here: (0.2 m code + 2 mm phase) / 2
@@ -579,6 +584,93 @@ TEST(CdgpsFilterLaser, CutsTheLineOfSightErrorWithoutAFix) {
   const RunOutcome without = simulate(400, -1, {}, {true, 0.0});
   const RunOutcome with = simulate(400, -1, {}, {true, 0.003});
   EXPECT_LT(with.los_error_rms_m, 0.5 * without.los_error_rms_m) << without.los_error_rms_m << " -> " << with.los_error_rms_m;
+}
+
+// Phase-centre states (cdgps_settings.hpp, phase_center_consider_between_turns). Both receivers'
+// phase centres are off their calibration (truth p_dsc = (3, -4, 2) mm, p_osc = (-2, 5, -1) mm,
+// body axes; their difference (-5, 9, -3) mm is what single differences see). Both spacecraft
+// fly one attitude fixed in the DSC's orbital frame, body (X, Y, Z) = (T, N, R), and from epoch
+// `yaw_epoch` turn about body Z at 1.5 deg/s to 90 deg (the calibration yaw of
+// sim/attitude_profile.hpp), then hold.
+struct PhaseCentreRun {
+  Eigen::Vector3d dp_before_m = Eigen::Vector3d::Zero();  // estimated p_osc - p_dsc just before the yaw
+  Eigen::Vector3d dp_end_m = Eigen::Vector3d::Zero();     // ... at the end
+  int estimated_epochs_before_yaw = 0;                    // epochs with a phase-centre axis estimated before the yaw
+};
+
+PhaseCentreRun fly_phase_centre_yaw(int epochs, int yaw_epoch, bool consider) {
+  Simulation sim;
+  CdgpsSettings settings;
+  settings.elevation_weighting = false;  // white, elevation-independent noise (simulate())
+  settings.min_fix_elevation_deg = 0.0;
+  settings.sdcp_correlation_inflation = 1.0;
+  settings.graphic_sigma_m = 0.1;
+  settings.phase_center_consider_between_turns = consider;
+  auto filter = CdgpsFilter::create(settings, model(), model()).value();
+  core::GpsTime t = epoch();
+  filter.initialise(t, sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  const Eigen::Vector3d p_truth[2] = {Eigen::Vector3d(3e-3, -4e-3, 2e-3), Eigen::Vector3d(-2e-3, 5e-3, -1e-3)};
+  Eigen::Matrix3d body_to_rtn;
+  body_to_rtn << 0, 0, 1, 1, 0, 0, 0, 1, 0;  // columns: body X = T, Y = N, Z = R
+  PhaseCentreRun out;
+  const auto dp = [&filter] {
+    const NavVector& x = filter.x();
+    return Eigen::Vector3d(state::kPhaseCenterUnit *
+                           (x.segment<3>(state::phase_center(Craft::kOsc)) - x.segment<3>(state::phase_center(Craft::kDsc))));
+  };
+  for (int n = 0; n < epochs; ++n) {
+    if (n > 0) {
+      sim.step(t);
+      t = t + 1.0;
+      filter.predict(t);
+    }
+    if (n == yaw_epoch) out.dp_before_m = dp();
+    const double yaw = std::clamp(1.5 * (n - yaw_epoch), 0.0, 90.0) * M_PI / 180.0;
+    AntennaGeometry antenna;
+    antenna.body_to_gcrf = core::gcrf_to_rtn_matrix(sim.rx[0].x).transpose() * body_to_rtn *
+                           Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    antenna.boresight_body = Eigen::Vector3d::UnitZ();
+    GpsReceiverEpoch e[2];
+    for (int k = 0; k < 2; ++k) {
+      const ReceiverEstimate truth{sim.rx[k].x.r, sim.rx[k].x.v, sim.rx[k].clock_m, p_truth[k]};
+      e[k] = test::synthetic_observations(t, truth, sim.records, sim.frame, sim.rx[k].integers, sim.rx[k].phase_offset_cycles,
+                                          0.2, sim.phase_sigma_m, sim.rng, antenna);
+    }
+    const CdgpsEpochReport r = filter.update(CdgpsEpochInput{&e[0], &e[1], antenna, antenna}, sim.ephemerides, sim.frame);
+    EXPECT_TRUE(r.accepted) << r.reason;
+    if (n < yaw_epoch && r.phase_centre_axes_estimated > 0) ++out.estimated_epochs_before_yaw;
+  }
+  out.dp_end_m = dp();
+  return out;
+}
+
+class CdgpsFilterPhaseCentre : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { run = new PhaseCentreRun(fly_phase_centre_yaw(700, 300, true)); }
+  static void TearDownTestSuite() { delete run; }
+  static PhaseCentreRun* run;
+};
+PhaseCentreRun* CdgpsFilterPhaseCentre::run = nullptr;
+
+// No turn yet: consider states, their estimate held at the calibration (zero) exactly.
+TEST_F(CdgpsFilterPhaseCentre, HeldAtTheCalibrationWithoutATurn) { EXPECT_EQ(run->dp_before_m, Eigen::Vector3d::Zero()); }
+
+TEST_F(CdgpsFilterPhaseCentre, NotEstimatedWithoutATurn) { EXPECT_EQ(run->estimated_epochs_before_yaw, 0); }
+
+// The yaw about Z exposes the difference's X and Y (its Z stays along the turn axis): to 1 mm of
+// the truth's -5 and 9 mm (2 mm white phase, fixed integers; 6.8 min after the yaw: -4.82 and
+// 9.02 mm).
+TEST_F(CdgpsFilterPhaseCentre, YawExposesTheDifferenceAlongX) { EXPECT_NEAR(run->dp_end_m.x(), -5e-3, 1e-3); }
+
+TEST_F(CdgpsFilterPhaseCentre, YawExposesTheDifferenceAlongY) { EXPECT_NEAR(run->dp_end_m.y(), 9e-3, 1e-3); }
+
+// The difference's Z lies along the yaw axis: no turn has exposed it, so it is still held at the
+// calibration (its truth, -3 mm, unseen).
+TEST_F(CdgpsFilterPhaseCentre, YawLeavesTheAxisAlongItHeld) { EXPECT_EQ(run->dp_end_m.z(), 0.0); }
+
+// Always estimated (the option off), the states move before any turn: what drifted in the closed loop.
+TEST(CdgpsFilterPhaseCentreAlwaysFree, MovesWithoutATurn) {
+  EXPECT_NE(fly_phase_centre_yaw(201, 200, false).dp_before_m, Eigen::Vector3d::Zero());
 }
 
 }  // namespace

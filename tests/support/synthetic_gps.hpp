@@ -35,17 +35,17 @@ inline std::vector<gnss::BroadcastEphemeris> synthetic_constellation(core::GpsTi
 }
 
 /// Code and phase of a zenith-pointing receiver (5 deg mask above the local horizontal) with
-/// clock `clock_m`; phase = (geometric range + noise) / lambda + integers[prn] + phase offset.
+/// clock `clock_m`, its phase centre at the antenna geometry plus truth.pco_error_body_m; phase = (geometric range + noise) / lambda + integers[prn] + phase offset.
 inline nav::GpsReceiverEpoch synthetic_observations(core::GpsTime t, const nav::ReceiverEstimate& truth,
                                                      const std::vector<gnss::BroadcastEphemeris>& records,
                                                      core::OnboardEarthFrame& frame, const std::vector<double>& integers,
                                                      double phase_offset_cycles, double code_sigma_m, double phase_sigma_m,
-                                                     std::mt19937_64& rng) {
+                                                     std::mt19937_64& rng, const nav::AntennaGeometry& antenna = {}) {
   std::normal_distribution<double> gauss;
   nav::GpsReceiverEpoch e;
   e.t = t;
   for (const auto& eph : records) {
-    const nav::RangePrediction p = nav::predict_range(t, truth, {}, eph, frame);
+    const nav::RangePrediction p = nav::predict_range(t, truth, antenna, eph, frame);
     if (p.line_of_sight_gcrf.dot(truth.r_gcrf_m.normalized()) < std::sin(5.0 * M_PI / 180.0)) continue;
     if (e.count == nav::kGpsSlots) break;
     const double geometric = p.range_m + truth.clock_m - p.satellite_clock_m;
