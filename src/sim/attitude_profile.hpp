@@ -38,6 +38,7 @@
 // has certainly finished (pi / rate after its end_s) starts its slew from wherever the return slew
 // is; one that begins later starts from the nominal attitude.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -48,9 +49,28 @@
 
 namespace visors::sim {
 
+/// Calibration yaws of the nominal attitude (docs/phase-centre-estimation.md): a turn of yaw_rad
+/// about body +Z (the antenna boresight, which stays at the zenith: the antenna sees the same
+/// sky), a hold, and the turn back, each starting at first_s + k period_s [s, simulation time].
+/// The observation slews all turn about body Y (nominal and observation attitudes share it), so
+/// without a yaw the phase-centre offsets along Y, which the relative orbit cannot tell from an
+/// along-track offset, are never observable. Both spacecraft fly the same plan, so the turn is
+/// synchronous and the carrier wind-up cancels in the single differences. A yaw whose span would
+/// come within margin_s of an observation window (its slew start to the end of a pi return
+/// slew) is not flown; windows are scheduled at least ~2900 s ahead (gnc min_lead_s), more than
+/// a yaw lasts. yaw_rad = 0: none.
+struct CalibrationYaw {
+  double yaw_rad = 0.0;       // [rad], in [0, pi]
+  double hold_s = 120.0;      // [s] at the yawed attitude
+  double period_s = 5700.0;   // [s] between yaw starts (about an orbit)
+  double first_s = 1200.0;    // [s] the first yaw's start
+  double margin_s = 300.0;    // [s] clearance from observation windows
+};
+
 struct AttitudeSettings {
   double slew_rate_radps = 1.5 * core::kDegToRad;  // eigen-axis slew rate [rad/s] (issue default)
   double settling_s = 30.0;                        // settling time after a slew [s] (issue default)
+  CalibrationYaw calibration{};                    // none by default
 
   /// Ok, or the offending field by name.
   [[nodiscard]] core::Result<bool> validate() const;
@@ -80,6 +100,9 @@ class AttitudeProfile {
                                                 const Eigen::Vector3d& v_gcrf_mps,
                                                 const Eigen::Vector3d& sun_gcrf_unit) const;
 
+  /// Whether a calibration yaw (or its turns) is under way at t_s [s].
+  [[nodiscard]] bool in_calibration_yaw(double t_s) const { return calibration_start(t_s).has_value(); }
+
   /// Duration of an eigen-axis slew through angle_rad at the configured rate [s].
   [[nodiscard]] double slew_duration_s(double angle_rad) const;
   /// Slew plus settling [s]: how long before start_s the slew must be commanded.
@@ -99,9 +122,13 @@ class AttitudeProfile {
   explicit AttitudeProfile(const AttitudeSettings& settings) : settings_(settings) {}
 
   struct Context;  // the query's state and its circular-orbit predictor
+  enum class Pointing { kNominal, kObservation, kCalibration };
   Eigen::Quaterniond in_window(std::size_t index, double t_s, const Context& context) const;
-  Eigen::Quaterniond slew(const Eigen::Quaterniond& q_from, double t0_s, double t_s, bool to_observation,
+  Eigen::Quaterniond slew(const Eigen::Quaterniond& q_from, double t0_s, double t_s, Pointing to,
                           const Context& context) const;
+  [[nodiscard]] double calibration_span_s() const;
+  [[nodiscard]] std::optional<double> calibration_start(double t_s) const;
+  Eigen::Quaterniond in_calibration(double start_s, double t_s, const Context& context) const;
 
   AttitudeSettings settings_;
   std::vector<ObservationWindow> windows_;

@@ -264,7 +264,8 @@ core::Result<bool> read_attitude(const toml::table& root, CampaignScenario& s) {
   if (t == nullptr) return true;
   const std::string sec = "attitude";
   if (auto e = check_keys(*t, sec, {"slew_rate_deg_s", "pointing_sigma_arcsec", "pointing_tau_s", "jitter_sigma_arcsec",
-                                    "knowledge_sigma_arcsec", "knowledge_tau_s"})) {
+                                    "knowledge_sigma_arcsec", "knowledge_tau_s", "calibration_yaw_deg", "calibration_hold_s",
+                                    "calibration_period_s", "calibration_first_s", "calibration_margin_s"})) {
     return *e;
   }
   AdcsSettings& a = s.adcs;
@@ -282,6 +283,23 @@ core::Result<bool> read_attitude(const toml::table& root, CampaignScenario& s) {
   a.knowledge_sigma_rad = knowledge * arcsec;
   a.knowledge_tau_s = knowledge_tau;
   if (auto ok = a.validate(); !ok) return Error{"attitude." + ok.error().field, ok.error().message};
+  CalibrationYaw& c = s.calibration_yaw;
+  VISORS_TRY(yaw, number_at(*t, sec, "calibration_yaw_deg", c.yaw_rad / core::kDegToRad));
+  VISORS_TRY(hold, number_at(*t, sec, "calibration_hold_s", c.hold_s));
+  VISORS_TRY(period, number_at(*t, sec, "calibration_period_s", c.period_s));
+  VISORS_TRY(first, number_at(*t, sec, "calibration_first_s", c.first_s));
+  VISORS_TRY(margin, number_at(*t, sec, "calibration_margin_s", c.margin_s));
+  c = CalibrationYaw{yaw * core::kDegToRad, hold, period, first, margin};
+  AttitudeSettings attitude{.slew_rate_radps = a.slew_rate_radps, .settling_s = 0.0, .calibration = c};
+  if (auto ok = attitude.validate(); !ok) {
+    static constexpr const char* kKeys[][2] = {{"calibration.yaw_rad", "calibration_yaw_deg"}, {"calibration.hold_s", "calibration_hold_s"},
+                                               {"calibration.period_s", "calibration_period_s"}, {"calibration.first_s", "calibration_first_s"},
+                                               {"calibration.margin_s", "calibration_margin_s"}};
+    for (const auto& [field, key] : kKeys) {
+      if (ok.error().field == field) return Error{sec + "." + key, ok.error().message};
+    }
+    return Error{sec + "." + ok.error().field, ok.error().message};
+  }
   return true;
 }
 
@@ -551,9 +569,12 @@ std::string campaign_to_toml(const CampaignScenario& s) {
     const Eigen::Vector3d x = rad / core::kArcsecToRad;
     return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", x.x(), x.y(), x.z());
   };
-  out += fmt::format("[attitude]\nslew_rate_deg_s = {:.17g}\npointing_sigma_arcsec = {}\npointing_tau_s = {:.17g}\njitter_sigma_arcsec = {}\nknowledge_sigma_arcsec = {}\nknowledge_tau_s = {:.17g}\n\n",
+  out += fmt::format("[attitude]\nslew_rate_deg_s = {:.17g}\npointing_sigma_arcsec = {}\npointing_tau_s = {:.17g}\njitter_sigma_arcsec = {}\nknowledge_sigma_arcsec = {}\nknowledge_tau_s = {:.17g}\n",
                      deg(a.slew_rate_radps), arcsec3(a.pointing_sigma_rad), a.pointing_tau_s, arcsec3(a.jitter_sigma_rad),
                      arcsec3(a.knowledge_sigma_rad), a.knowledge_tau_s);
+  const CalibrationYaw& c = s.calibration_yaw;
+  out += fmt::format("calibration_yaw_deg = {:.17g}\ncalibration_hold_s = {:.17g}\ncalibration_period_s = {:.17g}\ncalibration_first_s = {:.17g}\ncalibration_margin_s = {:.17g}\n\n",
+                     deg(c.yaw_rad), c.hold_s, c.period_s, c.first_s, c.margin_s);
   out += fmt::format("[clock]\npps_sigma_ns = {:.17g}\noscillator_sigma_ppm = {:.17g}\n\n", s.host_clock.pps_sigma_s * 1e9,
                      s.host_clock.oscillator_sigma * 1e6);
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);

@@ -17,6 +17,7 @@
 #include "dynamics/force_model_config.hpp"
 #include "gnc/gnc_config.hpp"
 #include "sim/adcs_model.hpp"
+#include "sim/attitude_profile.hpp"
 #include "sim/gnss_settings.hpp"
 #include "sim/host_clock.hpp"
 #include "sim/propulsion.hpp"
@@ -143,6 +144,9 @@ struct CampaignScenario {
   /// The bus ADCS of both spacecraft ([attitude], truth): its slew rate, control error and the
   /// error of the attitude it reports to the flight software (sim/adcs_model.hpp).
   AdcsSettings adcs;
+  /// The calibration yaws of both spacecraft's nominal attitude ([attitude] calibration_*; the
+  /// commanded attitude, sim/attitude_profile.hpp): 90 deg about the boresight once an orbit.
+  CalibrationYaw calibration_yaw{.yaw_rad = 90.0 * core::kDegToRad};
   /// The host computers' time at tone ([clock], truth): the PPS error and the oscillator that
   /// keeps the tone without a receiver solution (sim/host_clock.hpp).
   HostClockSettings host_clock;

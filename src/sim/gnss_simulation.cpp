@@ -242,6 +242,7 @@ core::Result<bool> plan_attitude(GnssRun& run, const CampaignScenario& s, double
   run.operations = std::move(operations).value();
   AttitudeSettings flown;
   flown.slew_rate_radps = s.adcs.slew_rate_radps;
+  flown.calibration = s.calibration_yaw;
   auto profile = AttitudeProfile::create(flown);
   if (!profile.ok()) return core::Error{"attitude.slew_rate_deg_s", profile.error().message};
   run.profile.emplace(std::move(profile).value());

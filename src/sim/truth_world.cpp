@@ -27,6 +27,7 @@ core::Result<bool> set_up(TruthSpacecraft& x, const CampaignScenario& s, const S
   // software plans with (gnc.science.slew_rate_radps); settling is not part of the truth attitude.
   AttitudeSettings attitude_settings;
   attitude_settings.slew_rate_radps = s.adcs.slew_rate_radps;
+  attitude_settings.calibration = s.calibration_yaw;
   auto attitude = AttitudeProfile::create(attitude_settings);
   if (!attitude.ok()) return core::Error{"attitude.slew_rate_deg_s", attitude.error().message};
   x.attitude.emplace(std::move(attitude).value());

@@ -235,3 +235,86 @@ TEST(AttitudeProfile, NominalFallsBackToVelocityWhenSunIsAtZenith) {
 }
 
 }  // namespace
+
+// Calibration yaws (CalibrationYaw): 90 deg about the boresight from first_s = 3000 s, 120 s hold,
+// once every 5700 s. At 1.5 deg/s each turn takes 60 s (hand), so the hold is [3060, 3180] s.
+AttitudeProfile yawing_profile() {
+  AttitudeSettings settings;
+  settings.calibration = {.yaw_rad = 90.0 * kDegToRad, .hold_s = 120.0, .period_s = 5700.0, .first_s = 3000.0, .margin_s = 300.0};
+  auto p = AttitudeProfile::create(settings);
+  EXPECT_TRUE(p.ok());
+  return std::move(p).value();
+}
+
+TEST(AttitudeProfile, CalibrationYawKeepsTheAntennaOnTheZenith) {
+  const Orbit o;
+  const AttitudeProfile p = yawing_profile();
+  const double t = 3120.0;
+  EXPECT_LT(visors::sim::antenna_off_zenith_rad(attitude(p, o, t), o.r(t)), 1e-9);
+}
+
+TEST(AttitudeProfile, CalibrationYawTurnsThePayloadAxisByTheYaw) {
+  const Orbit o;
+  const AttitudeProfile p = yawing_profile();
+  const double t = 3120.0;
+  const Eigen::Vector3d x_nominal = AttitudeProfile::nominal_body_to_gcrf(o.r(t), o.v(t), o.sun) * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(angle_between(attitude(p, o, t) * Eigen::Vector3d::UnitX(), x_nominal), 90.0 * kDegToRad, 1e-9);
+}
+
+// The sign: +90 deg about +Z takes body +X to where nominal +Y was (right-handed turn).
+TEST(AttitudeProfile, CalibrationYawIsAPositiveTurnAboutBodyZ) {
+  const Orbit o;
+  const AttitudeProfile p = yawing_profile();
+  const double t = 3120.0;
+  const Eigen::Vector3d y_nominal = AttitudeProfile::nominal_body_to_gcrf(o.r(t), o.v(t), o.sun) * Eigen::Vector3d::UnitY();
+  EXPECT_LT(angle_between(attitude(p, o, t) * Eigen::Vector3d::UnitX(), y_nominal), 1e-9);
+}
+
+TEST(AttitudeProfile, NominalBeforeTheFirstCalibrationYaw) {
+  const Orbit o;
+  const AttitudeProfile p = yawing_profile();
+  const double t = 2999.0;
+  EXPECT_LT(rotation_angle_rad(attitude(p, o, t), AttitudeProfile::nominal_body_to_gcrf(o.r(t), o.v(t), o.sun)), 1e-12);
+}
+
+TEST(AttitudeProfile, NominalAgainAfterTheCalibrationYaw) {
+  const Orbit o;
+  const AttitudeProfile p = yawing_profile();
+  const double t = 3260.0;  // 3000 + 60 + 120 + 60 = 3240 s, the return done (hand)
+  EXPECT_LT(rotation_angle_rad(attitude(p, o, t), AttitudeProfile::nominal_body_to_gcrf(o.r(t), o.v(t), o.sun)), 1e-9);
+}
+
+TEST(AttitudeProfile, CalibrationYawRepeatsAfterThePeriod) {
+  const Orbit o;
+  const AttitudeProfile p = yawing_profile();
+  const double t = 3120.0 + 5700.0;
+  const Eigen::Vector3d x_nominal = AttitudeProfile::nominal_body_to_gcrf(o.r(t), o.v(t), o.sun) * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(angle_between(attitude(p, o, t) * Eigen::Vector3d::UnitX(), x_nominal), 90.0 * kDegToRad, 1e-9);
+}
+
+TEST(AttitudeProfile, CalibrationYawTurnsNoFasterThanTheSlewRate) {
+  const Orbit o;
+  const AttitudeProfile p = yawing_profile();
+  const double dt = 0.1, limit = 1.5 * kDegToRad * dt * (1.0 + 1e-9);
+  double worst = 0.0;
+  Eigen::Quaterniond previous = attitude(p, o, 2990.0);
+  for (double t = 2990.0 + dt; t < 3300.0; t += dt) {
+    const Eigen::Quaterniond q = attitude(p, o, t);
+    worst = std::max(worst, rotation_angle_rad(previous, q));
+    previous = q;
+  }
+  EXPECT_LE(worst, limit);
+}
+
+TEST(AttitudeProfile, CalibrationYawGivesWayToAnObservation) {
+  const Orbit o;
+  AttitudeProfile p = yawing_profile();
+  ASSERT_TRUE(p.schedule({3400.0, 3500.0, 3600.0}).ok());  // within margin_s of the yaw's end
+  EXPECT_FALSE(p.in_calibration_yaw(3120.0));
+}
+
+TEST(AttitudeProfile, CalibrationPeriodShorterThanAYawIsRejected) {
+  AttitudeSettings settings;
+  settings.calibration = {.yaw_rad = 90.0 * kDegToRad, .hold_s = 120.0, .period_s = 200.0};
+  EXPECT_EQ(settings.validate().error().field, "calibration.period_s");
+}
