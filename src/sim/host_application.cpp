@@ -18,9 +18,6 @@ namespace {
 using gnc::GroundCommand;
 using gnc::Mode;
 
-// The host switches roles after the active spacecraft has reported GNC incapable this long [s].
-constexpr double kRoleSwitchAfter_s = 60.0;
-
 core::Result<bool> set_up_component(HostedComponent& c, const CampaignScenario& s, bool active, bool gps) {
   std::optional<gnc::OnboardNavigation> onboard;
   if (gps) {
@@ -232,11 +229,12 @@ void HostApplication::read_outputs(std::size_t k, const gnc::OutputRecords& out,
 }
 
 // kFdirPolicy's triggers on the active spacecraft's outputs: a passive-safety violation (once per
-// violation), GNC incapable for kRoleSwitchAfter_s while the other is capable (and not in a bus
+// violation), GNC incapable for its persistence (GncIncapablePersistence) while the other is capable (and not in a bus
 // safe mode, whose last outputs are stale).
 void HostApplication::apply_fdir(std::size_t k, core::GpsTime t, double t_s) {
   HostedComponent& v = craft_[k];
   const HostedComponent& other = craft_[1 - k];
+  if (!v.out.gnc_incapable) v.incapable.ever_capable = true;  // passive too: it may become the active one
   if (!v.out.telemetry.active) return;
   const core::GpsTime next = t + step_s_;
   if (v.out.passive_safety_violated && !v.violation_reported) {
@@ -247,15 +245,20 @@ void HostApplication::apply_fdir(std::size_t k, core::GpsTime t, double t_s) {
     respond(FdirTrigger::kSafetyViolation, k, next, t_s, v.name);
   }
   if (!v.out.passive_safety_violated) v.violation_reported = false;
-  if (!v.out.gnc_incapable) {
-    v.incapable_since_s = -1.0;
-    return;
-  }
-  if (v.incapable_since_s < 0.0) v.incapable_since_s = t_s;
-  if (t_s - v.incapable_since_s >= kRoleSwitchAfter_s && !other.out.gnc_incapable && !in_safe_mode(1 - k, t_s)) {
-    v.incapable_since_s = -1.0;
+  if (v.incapable.due(v.out.gnc_incapable, t_s) && !other.out.gnc_incapable && !in_safe_mode(1 - k, t_s)) {
+    v.incapable = GncIncapablePersistence{.since_s = -1.0, .ever_capable = v.incapable.ever_capable};
     respond(FdirTrigger::kGncIncapable, k, next, t_s, fmt::format("{} GNC incapable", v.name));
   }
+}
+
+bool GncIncapablePersistence::due(bool incapable, double t_s) {
+  if (!incapable) {
+    since_s = -1.0;
+    ever_capable = true;
+    return false;
+  }
+  if (since_s < 0.0) since_s = t_s;
+  return t_s - since_s >= (ever_capable ? kAfterCapable_s : kBeforeCapable_s);
 }
 
 void HostApplication::respond(FdirTrigger trigger, std::size_t victim, core::GpsTime deliver_at, double t_s, std::string_view what) {

@@ -8,7 +8,8 @@
 // and its response, which may depend on whether the formation is in science (science or the
 // transfer to it) at the trigger:
 //   passive-safety violation reported           -> escape (whatever the mode);
-//   GNC incapable for 60 s, the other capable   -> role switch;
+//   GNC incapable for 60 s (600 s before it     -> role switch;
+//   was first capable), the other capable
 //   a non-GNC fault it can ride out             -> in science: transfer to standby; else role switch;
 //   unable to act (bus safe mode, failed        -> role switch; in science, then the new active
 //   thruster)                                      one commanded back to standby the step after
@@ -35,6 +36,22 @@
 
 namespace visors::sim {
 
+/// The persistence of "GNC incapable" before the host switches roles (kFdirPolicy): 60 s once
+/// the spacecraft has been capable, 600 s before. A cold start is not a fault: both spacecraft are
+/// incapable until their first solution (the real sky's first fix comes 70-150 s after the
+/// receivers start, the broadcast ephemerides being decoded 18-36 s after lock), and the one that
+/// is first capable by a few seconds is no better a choice than the active one (with 60 s, four
+/// of the seeds 1-10 switched roles at the cold start). A receiver that never delivers still
+/// hands over, after 600 s.
+struct GncIncapablePersistence {
+  static constexpr double kAfterCapable_s = 60.0;
+  static constexpr double kBeforeCapable_s = 600.0;
+  double since_s = -1.0;  // since when incapable is reported, -1 if not
+  bool ever_capable = false;
+  /// One step's report at t_s [s]: whether the persistence has run out (then it restarts).
+  bool due(bool incapable, double t_s);
+};
+
 /// One spacecraft's flight component and what the host keeps for it.
 struct HostedComponent {
   gnc::Spacecraft id = gnc::Spacecraft::kDsc;
@@ -48,7 +65,7 @@ struct HostedComponent {
   std::optional<gnc::GroundCommand> command;          // delivered at the next step
   std::optional<gnc::GroundCommand> command_after;    // delivered at the step after
   bool violation_reported = false;
-  double incapable_since_s = -1.0;  // since when GNC incapable is reported, -1 if not
+  GncIncapablePersistence incapable;
 };
 
 /// What sets off the host's FDIR (file comment).

@@ -50,4 +50,37 @@ TEST(FdirPolicy, GncIncapableSwitchesRoles) {
   EXPECT_EQ(fdir_response(FdirTrigger::kGncIncapable, Mode::kScience), FdirResponse::kRoleSwitch);
 }
 
+// GNC incapable's persistence (GncIncapablePersistence): 60 s once capable, 600 s at the cold start.
+using visors::sim::GncIncapablePersistence;
+
+bool due_after(GncIncapablePersistence& p, double from_s, double to_s) {
+  bool due = false;
+  for (double t = from_s; t <= to_s; t += 1.0) due = p.due(true, t);
+  return due;
+}
+
+TEST(GncIncapablePersistence, ColdStartIsNotAFaultAfterAMinute) {
+  GncIncapablePersistence p;
+  EXPECT_FALSE(due_after(p, 0.0, 150.0));  // the real sky's first fix: 70-150 s
+}
+
+TEST(GncIncapablePersistence, ColdStartThatNeverEndsHandsOverAfterTenMinutes) {
+  GncIncapablePersistence p;
+  EXPECT_TRUE(due_after(p, 0.0, 600.0));
+}
+
+TEST(GncIncapablePersistence, OnceCapableAMinuteIsEnough) {
+  GncIncapablePersistence p;
+  (void)p.due(false, 0.0);
+  EXPECT_TRUE(due_after(p, 1.0, 61.0));
+}
+
+TEST(GncIncapablePersistence, CapableAgainRestartsTheCount) {
+  GncIncapablePersistence p;
+  (void)p.due(false, 0.0);
+  (void)due_after(p, 1.0, 50.0);
+  (void)p.due(false, 51.0);
+  EXPECT_FALSE(due_after(p, 52.0, 100.0));
+}
+
 }  // namespace
