@@ -78,6 +78,7 @@ CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunReco
   output_every_ = static_cast<std::int64_t>(std::llround(s.output_step_s / s.step_s));
   fault_step_ = step_at(s.fault.impulse_t_s, s.step_s);
   non_gnc_fault_step_ = step_at(s.fault.non_gnc_fault_t_s, s.step_s);
+  metrics_.set_aim(s.t0, s.gnc.science.geometry);
 }
 
 core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenario& scenario, RunRecorder& recorder,
@@ -249,8 +250,11 @@ void CampaignSimulation::execute_maneuver(std::size_t k, core::GpsTime t) {
     }
     return;
   }
+  // Intended: the commanded body impulse through the attitude the flight software was told.
+  const Eigen::Vector3d intended_gcrf = truth_[k].q_reported_body_to_gcrf * v.out.maneuver->dv_body_mps;
   auto executed = truth_.execute_impulse(k, ts_, v.out.maneuver->dv_body_mps, sensors_.clock(k).offset_s());
   if (executed.ok()) {
+    metrics_.add_impulse_error(k, ts_, truth_[k].q_body_to_gcrf * executed->dv_executed_body_mps - intended_gcrf, truth_[0].x_gcrf);
     metrics_.add_delta_v(k, mode, thruster_l1_norm(executed->dv_executed_body_mps));
     telemetry.dv_body_mps = executed->dv_commanded_body_mps;
     telemetry.executed = true;

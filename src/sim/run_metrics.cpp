@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "astro/apparent_sun.hpp"
 #include "astro/mean_osculating.hpp"
+#include "core/rtn_frame.hpp"
 #include "astro/relative_orbital_elements.hpp"
 #include "core/rtn_frame.hpp"
 #include "sim/host_application.hpp"
@@ -91,11 +93,52 @@ void RunMetrics::score_navigation(const TruthWorld& truth, const Sensors& sensor
   }
 }
 
-void RunMetrics::sample_alignment(PendingObservation& p, const TruthWorld& truth, double t_s) {
+void RunMetrics::set_aim(core::GpsTime t0, const control::ScienceGeometry& geometry) {
+  aim_t0_ = t0;
+  aim_geometry_ = geometry;
+}
+
+void RunMetrics::add_impulse_error(std::size_t k, double t_s, const Eigen::Vector3d& dv_error_gcrf_mps,
+                                   const core::StateVector& dsc_gcrf) {
+  const double sign = k == 1 ? 1.0 : -1.0;  // relative: OSC minus DSC
+  last_burn_ = LastBurn{t_s, sign * (core::gcrf_to_rtn_matrix(dsc_gcrf) * dv_error_gcrf_mps),
+                        dsc_gcrf.r.cross(dsc_gcrf.v).norm() / dsc_gcrf.r.squaredNorm()};
+}
+
+// The budget of this step's alignment sample (sim/error_budget.hpp), from the active spacecraft's
+// navigation solution scored this step; none without one.
+std::optional<ErrorBudget> RunMetrics::budget_at(const TruthWorld& truth, const HostApplication& host, double t_s) const {
+  const std::size_t active = host.active_index();
+  const NavigationSample& nav = navigation_samples_[active];
+  const std::optional<gnc::NavigationTelemetry>& record = host[active].out.navigation;
+  if (!nav.valid || !record) return std::nullopt;
   const TruthSpacecraft& dsc = truth[0];
   const TruthSpacecraft& osc = truth[1];
+  const Eigen::Matrix3d rtn_to_gcrf = core::gcrf_to_rtn_matrix(dsc.x_gcrf).transpose();
+  BudgetInputs in;
+  in.payload_true = {osc.payload_gcrf_m() - dsc.payload_gcrf_m(), osc.x_gcrf.v - dsc.x_gcrf.v};
+  in.com_true = {osc.x_gcrf.r - dsc.x_gcrf.r, osc.x_gcrf.v - dsc.x_gcrf.v};
+  in.com_estimated = {in.com_true.r + rtn_to_gcrf * nav.position_rtn_m, in.com_true.v + rtn_to_gcrf * nav.velocity_rtn_mps};
+  in.lever_error = rtn_to_gcrf * (nav.antenna_rtn_m - nav.position_rtn_m);
+  in.target_true = dsc.target_unit_gcrf;
+  in.target_estimated = astro::apparent_target_unit_gcrf(aim_t0_ + t_s, record->dsc_gcrf, aim_geometry_.target_offset_rad);
+  in.focal_distance_m = aim_geometry_.focal_distance_m;
+  in.dsc_position = dsc.x_gcrf.r;
+  if (last_burn_ && t_s >= last_burn_->t_s) {
+    const core::StateVector response = hcw_impulse_response(last_burn_->dv_rtn_mps, last_burn_->n_radps, t_s - last_burn_->t_s);
+    in.last_burn = {rtn_to_gcrf * response.r, rtn_to_gcrf * response.v};
+  }
+  return error_budget(in);
+}
+
+void RunMetrics::sample_alignment(PendingObservation& p, const TruthWorld& truth, const HostApplication& host, double t_s) {
+  const TruthSpacecraft& dsc = truth[0];
+  const TruthSpacecraft& osc = truth[1];
+  const double worst_before = p.result.lateral_error_m;
+  const bool first = p.result.samples == 0;
   const AlignmentSample sample = add_alignment_sample(p.result, osc.payload_gcrf_m(), osc.x_gcrf.v, dsc.payload_gcrf_m(),
                                                       dsc.x_gcrf.v, dsc.target_unit_gcrf, requirements_);
+  if (first || sample.lateral_m > worst_before) p.budget = budget_at(truth, host, t_s);
   recorder_->alignment_sample(p.result.index, t_s, dsc.x_gcrf, dsc.q_body_to_gcrf, osc.x_gcrf, osc.q_body_to_gcrf,
                               dsc.target_unit_gcrf, sample);
   for (std::size_t k = 0; k < 2; ++k) {
@@ -107,7 +150,7 @@ void RunMetrics::sample_alignment(PendingObservation& p, const TruthWorld& truth
 void RunMetrics::close_observation(PendingObservation& p, double t_s) {
   p.done = true;
   const bool ok = p.result.success(requirements_);
-  recorder_->observation(p.result, ok);
+  recorder_->observation(p.result, ok, p.budget);
   recorder_->event(t_s, "sim", "observation",
                    fmt::format("attempt {}: lateral {:.2f} mm, lateral velocity {:.3f} mm/s, focus {:.2f} mm: {}", p.result.index,
                                1e3 * p.result.lateral_error_m, 1e3 * p.result.lateral_velocity_mps, 1e3 * p.result.focus_error_m,
@@ -119,7 +162,7 @@ void RunMetrics::record(const TruthWorld& truth, const HostApplication& host, do
                         bool in_observation) {
   for (PendingObservation& p : observations_) {
     if (p.done) continue;
-    if (t_s >= p.start_s && t_s <= p.end_s) sample_alignment(p, truth, t_s);
+    if (t_s >= p.start_s && t_s <= p.end_s) sample_alignment(p, truth, host, t_s);
     else if (t_s > p.end_s) close_observation(p, t_s);
   }
   TimeseriesRow row = truth_geometry(truth[0].x_gcrf, truth[1].x_gcrf);
@@ -167,6 +210,15 @@ void RunMetrics::add_to_summary(nlohmann::json& summary, const std::array<std::s
                     {"lateral_velocity_mps", p.result.lateral_velocity_mps}, {"focus_error_m", p.result.focus_error_m},
                     {"lateral_x_m", p.result.lateral_detector_m.x()}, {"lateral_y_m", p.result.lateral_detector_m.y()},
                     {"focus_signed_m", p.result.focus_signed_m}, {"success", ok}});
+    if (p.budget) {
+      nlohmann::json budget;
+      for (int i = 0; i < kBudgetTerms; ++i) {
+        const BudgetComponents& c = (*p.budget)[static_cast<std::size_t>(i)];
+        budget[std::string(to_string(static_cast<BudgetTerm>(i)))] = {
+            {"x_m", c.x_m}, {"y_m", c.y_m}, {"focus_m", c.focus_m}, {"velocity_x_mps", c.velocity_x_mps}, {"velocity_y_mps", c.velocity_y_mps}};
+      }
+      list.back()["budget"] = budget;
+    }
   }
   summary["observations"] = list;
   summary["success_rate"] = attempts > 0 ? static_cast<double>(successes) / attempts : 0.0;

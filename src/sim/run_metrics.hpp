@@ -13,9 +13,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
+
+#include "control/guidance.hpp"
 #include "core/constants.hpp"
+#include "core/gps_time.hpp"
 #include "gnc/messages.hpp"
 #include "sim/alignment_metrics.hpp"
+#include "sim/error_budget.hpp"
 #include "sim/navigation_score.hpp"
 #include "sim/run_recorder.hpp"
 #include "sim/truth_world.hpp"
@@ -33,6 +38,12 @@ class RunMetrics {
   void open_observation(int index, double start_s, double end_s);
   /// The executed impulse of spacecraft k in `mode`: its L1 norm in the thrusters' frame [m/s].
   void add_delta_v(std::size_t k, gnc::Mode mode, double l1_mps);
+  /// The aim the flight software computes (its target direction, sim/error_budget.hpp): t0 and
+  /// the science geometry it is configured with.
+  void set_aim(core::GpsTime t0, const control::ScienceGeometry& geometry);
+  /// The execution error of spacecraft k's impulse at t_s (true minus intended velocity change,
+  /// GCRF [m/s]), with the DSC's true state then: the error budget's last burn.
+  void add_impulse_error(std::size_t k, double t_s, const Eigen::Vector3d& dv_error_gcrf_mps, const core::StateVector& dsc_gcrf);
 
   /// Each component's navigation solution at t_s against the truth (the antenna lever against
   /// the one the flight software is told, `told`); `in_slew`: the step is in a slew to or from an
@@ -57,10 +68,18 @@ class RunMetrics {
  private:
   struct PendingObservation {
     AlignmentResult result;
+    std::optional<ErrorBudget> budget;  // at the worst lateral sample, with on-board navigation
     double start_s = 0.0, end_s = 0.0;
     bool done = false;
   };
-  void sample_alignment(PendingObservation& p, const TruthWorld& truth, double t_s);
+  // The last impulse's execution error in the DSC's RTN frame then, and the mean motion.
+  struct LastBurn {
+    double t_s = 0.0;
+    Eigen::Vector3d dv_rtn_mps = Eigen::Vector3d::Zero();  // relative: OSC minus DSC
+    double n_radps = 0.0;
+  };
+  void sample_alignment(PendingObservation& p, const TruthWorld& truth, const HostApplication& host, double t_s);
+  [[nodiscard]] std::optional<ErrorBudget> budget_at(const TruthWorld& truth, const HostApplication& host, double t_s) const;
   void close_observation(PendingObservation& p, double t_s);
   void record_navigation_rows(const HostApplication& host, double t_s, bool in_slew, bool in_observation);
 
@@ -72,6 +91,9 @@ class RunMetrics {
   std::array<std::array<double, gnc::kModeCount>, 2> dv_by_mode_mps_{};  // executed, L1 in the thrusters' frame
   std::array<double, 2> dv_total_mps_{};
   NavigationScore navigation_score_;
+  std::optional<LastBurn> last_burn_;
+  core::GpsTime aim_t0_;
+  control::ScienceGeometry aim_geometry_;
   std::array<NavigationSample, 2> navigation_samples_{};
   std::array<std::int64_t, 2> rows_epochs_{}, rows_fixed_{};  // at each spacecraft's last navigation.csv row
   std::array<std::vector<float>, 2> step_us_;  // wall time of each component step [us]

@@ -61,7 +61,8 @@ core::Result<RunRecorder> RunRecorder::open(const std::filesystem::path& dir, co
   r.alignment_samples_ = std::move(samples).value();
   write_header(r.timeseries_.get(), report::kTimeseriesColumns);
   write_header(r.observations_.get(), report::kObservationColumns, true);
-  write_header(r.observations_.get(), report::kObservationPointingColumns);
+  write_header(r.observations_.get(), report::kObservationPointingColumns, true);
+  write_header(r.observations_.get(), report::kObservationBudgetColumns);
   write_header(r.events_.get(), report::kEventColumns);
   write_header(r.alignment_samples_.get(), report::kAlignmentSampleColumns);
   return r;
@@ -99,13 +100,21 @@ void RunRecorder::timeseries(const TimeseriesRow& row) {
   std::fputs(line.c_str(), timeseries_.get());
 }
 
-void RunRecorder::observation(const AlignmentResult& result, bool success) {
+void RunRecorder::observation(const AlignmentResult& result, bool success, const std::optional<ErrorBudget>& budget) {
   const Eigen::Vector2d pointing_arcsec = result.payload_pointing_rad / core::kArcsecToRad;
-  std::fputs(fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{},{:.6g},{:.6g}\n", result.index, result.t_s, result.lateral_error_m,
-                         result.lateral_velocity_mps, result.focus_error_m, success ? 1 : 0, pointing_arcsec.x(),
-                         pointing_arcsec.y())
-                 .c_str(),
-             observations_.get());
+  std::string line = fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{},{:.6g},{:.6g}", result.index, result.t_s, result.lateral_error_m,
+                                 result.lateral_velocity_mps, result.focus_error_m, success ? 1 : 0, pointing_arcsec.x(),
+                                 pointing_arcsec.y());
+  for (int i = 0; i < kBudgetTerms; ++i) {
+    if (!budget) {
+      line += ",,,,,";
+      continue;
+    }
+    const BudgetComponents& c = (*budget)[static_cast<std::size_t>(i)];
+    line += fmt::format(",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", c.x_m, c.y_m, c.focus_m, c.velocity_x_mps, c.velocity_y_mps);
+  }
+  line += '\n';
+  std::fputs(line.c_str(), observations_.get());
 }
 
 void RunRecorder::alignment_sample(int index, double t_s, const core::StateVector& dsc_gcrf, const Eigen::Quaterniond& q_dsc,

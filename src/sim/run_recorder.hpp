@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "core/state_vector.hpp"
 #include "core/status.hpp"
 #include "sim/alignment_metrics.hpp"
+#include "sim/error_budget.hpp"
 #include "sim/navigation_score.hpp"
 
 namespace visors::sim {
@@ -52,7 +54,8 @@ class RunRecorder {
   /// processed epochs fixed since the spacecraft's previous row, where the step lies.
   void navigation(double t_s, std::string_view spacecraft, const NavigationSample& sample, double fixed_fraction,
                   bool in_slew, bool in_observation);
-  void observation(const AlignmentResult& result, bool success);
+  /// An observations.csv row: the score, the pointing and the error budget (empty columns without one).
+  void observation(const AlignmentResult& result, bool success, const std::optional<ErrorBudget>& budget);
   /// An alignment_samples.csv row: attempt `index` at t_s, both spacecraft's true centre-of-mass
   /// states (GCRF) and attitudes, the target's apparent direction from the DSC, the sample's values.
   void alignment_sample(int index, double t_s, const core::StateVector& dsc_gcrf, const Eigen::Quaterniond& q_dsc,
