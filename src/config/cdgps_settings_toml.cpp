@@ -52,12 +52,13 @@ constexpr std::array<NumberKey, 27> kNumbers = {{
     {"hold_variance_cycles2", &nav::CdgpsSettings::hold_variance_cycles2},
 }};
 
-constexpr std::array<FlagKey, 5> kFlags = {{
+constexpr std::array<FlagKey, 6> kFlags = {{
     {"sd_code", &nav::CdgpsSettings::sd_code},
     {"elevation_weighting", &nav::CdgpsSettings::elevation_weighting},
     {"ambiguity_resolution", &nav::CdgpsSettings::ambiguity_resolution},
     {"hold", &nav::CdgpsSettings::hold},
     {"phase_center_consider_between_turns", &nav::CdgpsSettings::phase_center_consider_between_turns},
+    {"phase_center_boresight_estimated", &nav::CdgpsSettings::phase_center_boresight_estimated},
 }};
 
 std::optional<core::Error> check_nav_keys(const toml::table& table) {

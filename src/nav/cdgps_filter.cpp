@@ -621,7 +621,7 @@ Eigen::Vector3d CdgpsFilter::Impl::phase_centre_gain_mask(const CdgpsEpochInput&
   attitude_t = t;
   have_attitude = true;
   Eigen::Vector3d mask = Eigen::Vector3d::Zero();
-  for (int axis = 0; axis < 3; ++axis) {
+  for (int axis = 0; axis < (s.phase_center_boresight_estimated ? 3 : 2); ++axis) {
     const auto& when = last_exposed[static_cast<std::size_t>(axis)];
     if (when && t.seconds_since(*when) <= s.phase_center_free_after_turn_s) mask(axis) = 1.0;
   }
