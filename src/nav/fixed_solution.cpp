@@ -87,23 +87,33 @@ std::pair<Index, Index> FixedSolutionUpdate::column_span(const Eigen::Ref<const 
   return last < 0 ? std::pair<Index, Index>{0, 0} : std::pair<Index, Index>{first, last - first + 1};
 }
 
+// The update's common part for k = C.rows() >= 1: W = C P (k x n), S = C P C' + s I factored
+// (L in S_), v = z - C x; kNotPositiveDefinite when S is not numerically positive definite.
+Status FixedSolutionUpdate::innovation_system(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                              const Eigen::Ref<const Eigen::MatrixXd>& P,
+                                              const Eigen::Ref<const Eigen::MatrixXd>& C,
+                                              const Eigen::Ref<const Eigen::VectorXd>& z, double variance) {
+  const Index k = C.rows();
+  const auto [first, width] = column_span(C);
+  const auto c = C.middleCols(first, width);
+  auto W = W_.topLeftCorner(k, x.size());
+  W.noalias() = c * P.middleRows(first, width);  // = C P = (P C')' for the symmetric P
+  S_.topLeftCorner(k, k).noalias() = W.middleCols(first, width) * c.transpose();
+  S_.topLeftCorner(k, k).diagonal().array() += variance;
+  v_.head(k) = z;
+  v_.head(k).noalias() -= c * x.segment(first, width);
+  return factor(k) ? Status::kOk : Status::kNotPositiveDefinite;
+}
+
 Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eigen::MatrixXd> P,
                                   const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
                                   double variance) {
   if (const Status status = check(x, P, C, z, variance); status != Status::kOk) return status;
-  const Index n = x.size();
   const Index k = C.rows();
   if (k == 0) return Status::kOk;
-  const auto [first, width] = column_span(C);
-  const auto c = C.middleCols(first, width);
-  auto W = W_.topLeftCorner(k, n);
+  if (const Status status = innovation_system(x, P, C, z, variance); status != Status::kOk) return status;
+  auto W = W_.topLeftCorner(k, x.size());
   auto v = v_.head(k);
-  W.noalias() = c * P.middleRows(first, width);  // = C P = (P C')' for the symmetric P
-  S_.topLeftCorner(k, k).noalias() = W.middleCols(first, width) * c.transpose();
-  S_.topLeftCorner(k, k).diagonal().array() += variance;
-  v = z;
-  v.noalias() -= c * x.segment(first, width);
-  if (!factor(k)) return Status::kNotPositiveDefinite;
   const auto L = S_.topLeftCorner(k, k).triangularView<Eigen::Lower>();
   L.solveInPlace(W);  // W = L^-1 C P
   L.solveInPlace(v);  // v = L^-1 (z - C x)
@@ -126,30 +136,22 @@ Status FixedSolutionUpdate::apply(Eigen::Ref<Eigen::VectorXd> x, Eigen::Ref<Eige
   const Index n = x.size();
   const Index k = C.rows();
   if (k == 0) return Status::kOk;
-  const auto [first, width] = column_span(C);
-  const auto c = C.middleCols(first, width);
+  if (const Status status = innovation_system(x, P, C, z, variance); status != Status::kOk) return status;
   auto G = G_.topLeftCorner(n, k);
   auto K = K_.topLeftCorner(n, k);
-  auto v = v_.head(k);
-  G.noalias() = P.middleCols(first, width) * c.transpose();  // P C'
-  S_.topLeftCorner(k, k).noalias() = c * G.middleRows(first, width);
-  S_.topLeftCorner(k, k).diagonal().array() += variance;
-  v = z;
-  v.noalias() -= c * x.segment(first, width);
-  // K = G S^-1 masked, from the Cholesky factor of S before it is overwritten.
-  if (!factor(k)) return Status::kNotPositiveDefinite;
+  G = W_.topLeftCorner(k, n).transpose();  // P C'
   const auto L = S_.topLeftCorner(k, k).triangularView<Eigen::Lower>();
   K = G;
-  L.solveInPlace(K.transpose());           // K' <- L^-1 G'
+  L.solveInPlace(K.transpose());              // K' <- L^-1 G'
   L.transpose().solveInPlace(K.transpose());  // K' <- L^-T L^-1 G' = S^-1 G'
   K.array().colwise() *= gain_mask.array();
   if (!K.allFinite()) return Status::kNotFinite;
-  x.noalias() += K * v;
-  // P - K G' - G K' + K S K' with K S = (masked K) S rebuilt from L: K S = (K L) L'.
+  x.noalias() += K * v_.head(k);
+  // P - K G' - G K' + K S K', with K S K' = (K L)(K L)'.
   P.noalias() -= K * G.transpose();
   P.noalias() -= G * K.transpose();
   G.noalias() = K * S_.topLeftCorner(k, k).triangularView<Eigen::Lower>();  // K L
-  P.noalias() += G * G.transpose();                                          // K L L' K' = K S K'
+  P.noalias() += G * G.transpose();
   P.triangularView<Eigen::StrictlyUpper>() = P.transpose();  // exactly symmetric
   return Status::kOk;
 }

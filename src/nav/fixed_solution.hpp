@@ -77,6 +77,9 @@ class FixedSolutionUpdate {
                const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
                double variance) const;
   bool factor(Eigen::Index k);
+  Status innovation_system(const Eigen::Ref<const Eigen::VectorXd>& x, const Eigen::Ref<const Eigen::MatrixXd>& P,
+                           const Eigen::Ref<const Eigen::MatrixXd>& C, const Eigen::Ref<const Eigen::VectorXd>& z,
+                           double variance);
   static std::pair<Eigen::Index, Eigen::Index> column_span(const Eigen::Ref<const Eigen::MatrixXd>& C);
 
   Eigen::Index max_states_ = 0;
