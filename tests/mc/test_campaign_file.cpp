@@ -108,7 +108,7 @@ TEST(CampaignFile, BaseScenarioIsFoundBesideTheCampaign) {
 TEST(CampaignFile, ShippedSensitivityCampaignIsValid) {
   const auto c = load_campaign("campaigns/paper_sensitivity.toml");
   ASSERT_TRUE(c.ok()) << c.error().describe();
-  EXPECT_EQ(c->sweeps.size(), 3U);  // CoM knowledge, magnitude error, direction error (the paper's figure)
+  EXPECT_EQ(c->sweeps.size(), 4U);  // CoM knowledge, magnitude error, direction error (the paper's figure), phase centre
 }
 
 TEST(CampaignFile, ShippedIdealNavigationCentreOfMassCampaignIsValid) {
