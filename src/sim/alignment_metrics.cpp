@@ -16,6 +16,12 @@ AlignmentSample alignment_sample(const Eigen::Vector3d& p_osc, const Eigen::Vect
   return {(d - along * sun_unit).norm(), (w - w.dot(sun_unit) * sun_unit).norm(), along - requirements.focal_distance_m};
 }
 
+DetectorAxes detector_axes(const Eigen::Vector3d& sun_unit, const Eigen::Vector3d& dsc_position_gcrf) {
+  const Eigen::Vector3d up = dsc_position_gcrf - dsc_position_gcrf.dot(sun_unit) * sun_unit;  // the vertical, normal to the Sun line
+  const Eigen::Vector3d x = up.squaredNorm() > 0.0 ? Eigen::Vector3d(up.normalized()) : sun_unit.unitOrthogonal();
+  return {x, sun_unit.cross(x), sun_unit};
+}
+
 AlignmentSample add_alignment_sample(AlignmentResult& result, const Eigen::Vector3d& p_osc, const Eigen::Vector3d& v_osc,
                                      const Eigen::Vector3d& p_dsc, const Eigen::Vector3d& v_dsc, const Eigen::Vector3d& sun_unit,
                                      const AlignmentRequirements& requirements) {
@@ -25,10 +31,8 @@ AlignmentSample add_alignment_sample(AlignmentResult& result, const Eigen::Vecto
   const double lateral_velocity = sample.lateral_velocity_mps;
   const double focus = std::abs(sample.focus_signed_m);
   if (result.samples == 0 || lateral > result.lateral_error_m) {
-    const Eigen::Vector3d up = p_dsc - p_dsc.dot(sun_unit) * sun_unit;  // the vertical, normal to the Sun line
-    const Eigen::Vector3d x = up.squaredNorm() > 0.0 ? Eigen::Vector3d(up.normalized()) : sun_unit.unitOrthogonal();
-    const Eigen::Vector3d y = sun_unit.cross(x);
-    result.lateral_detector_m = Eigen::Vector2d(d.dot(x), d.dot(y));
+    const DetectorAxes axes = detector_axes(sun_unit, p_dsc);
+    result.lateral_detector_m = Eigen::Vector2d(d.dot(axes.x), d.dot(axes.y));
   }
   if (result.samples == 0 || focus > result.focus_error_m) result.focus_signed_m = sample.focus_signed_m;
   result.lateral_error_m = std::max(result.lateral_error_m, lateral);

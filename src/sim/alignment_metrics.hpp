@@ -50,6 +50,13 @@ struct AlignmentSample {
   double focus_signed_m = 0.0;
 };
 
+/// The detector's frame of a sample: z the target's apparent direction `sun_unit`, x the DSC's
+/// radial direction projected normal to z (any normal when degenerate), y = z x x (unit, GCRF).
+struct DetectorAxes {
+  Eigen::Vector3d x, y, z;
+};
+DetectorAxes detector_axes(const Eigen::Vector3d& sun_unit, const Eigen::Vector3d& dsc_position_gcrf);
+
 /// The sample of payload points p, their inertial velocities v (GCRF [m], [m/s]) and the target's
 /// apparent unit direction from the DSC (the file comment's formulas).
 AlignmentSample alignment_sample(const Eigen::Vector3d& p_osc, const Eigen::Vector3d& v_osc, const Eigen::Vector3d& p_dsc,

@@ -4,20 +4,13 @@
 
 #include <Eigen/Geometry>
 
+#include "sim/alignment_metrics.hpp"
+
 namespace visors::sim {
 namespace {
 
-// Lateral (x: the vertical normal to s, y = s x x) and focus components of v.
-struct DetectorFrame {
-  Eigen::Vector3d x, y, z;
-  DetectorFrame(const Eigen::Vector3d& s, const Eigen::Vector3d& dsc_position) : z(s) {
-    const Eigen::Vector3d up = dsc_position - dsc_position.dot(s) * s;
-    x = up.squaredNorm() > 0.0 ? Eigen::Vector3d(up.normalized()) : s.unitOrthogonal();
-    y = s.cross(x);
-  }
-};
-
-BudgetComponents components(const DetectorFrame& f, const Eigen::Vector3d& r, const Eigen::Vector3d& v) {
+// Lateral (x, y) and focus (z) components of r and v in the detector frame.
+BudgetComponents components(const DetectorAxes& f, const Eigen::Vector3d& r, const Eigen::Vector3d& v) {
   return {r.dot(f.x), r.dot(f.y), r.dot(f.z), v.dot(f.x), v.dot(f.y)};
 }
 
@@ -36,7 +29,7 @@ std::string_view to_string(BudgetTerm term) {
 }
 
 ErrorBudget error_budget(const BudgetInputs& in) {
-  const DetectorFrame frame(in.target_true, in.dsc_position);
+  const DetectorAxes frame = detector_axes(in.target_true, in.dsc_position);
   const Eigen::Vector3d navigation_r = in.com_estimated.r - in.com_true.r;  // d_e - d_c
   const Eigen::Vector3d navigation_v = in.com_estimated.v - in.com_true.v;
   const Eigen::Vector3d control_r = in.com_estimated.r - in.focal_distance_m * in.target_estimated;
