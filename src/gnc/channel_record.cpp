@@ -389,8 +389,10 @@ std::size_t encode(const Telemetry& m, std::uint32_t sequence, std::span<std::ui
     for (std::int64_t v : m.records.by_status) w.i64(v);
     w.u8(m.navigation_valid ? 1 : 0);
     w.u8(m.navigation_fixed ? 1 : 0);
-    w.zeros(6);
+    w.u8(m.drag_valid ? 1 : 0);
+    w.zeros(5);
     w.time(m.navigation_update);
+    w.f64(m.differential_drag_mps2);
   });
 }
 
@@ -597,9 +599,12 @@ RecordStatus decode(std::span<const std::uint8_t> in, Telemetry& message, Record
       *v = r.i64();
     }
     for (std::int64_t& v : m.records.by_status) v = r.i64();
-    if (!flag(r.u8(), m.navigation_valid) || !flag(r.u8(), m.navigation_fixed)) return RecordStatus::kBadEnumeration;
-    if (!r.zeros(6)) return RecordStatus::kBadPadding;
+    if (!flag(r.u8(), m.navigation_valid) || !flag(r.u8(), m.navigation_fixed) || !flag(r.u8(), m.drag_valid)) {
+      return RecordStatus::kBadEnumeration;
+    }
+    if (!r.zeros(5)) return RecordStatus::kBadPadding;
     m.navigation_update = r.time();
+    m.differential_drag_mps2 = r.f64();
     return RecordStatus::kAccepted;
   });
 }

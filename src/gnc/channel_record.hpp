@@ -37,7 +37,8 @@
 //                  (6 f64), safety margin (f64), a * target ROE (6 f64), observations_done,
 //                  pending_pieces (2 i32), plans, planning_failures (2 i64), rejected by
 //                  channel (7 i64), records refused by status (11 i64), navigation_valid,
-//                  navigation_fixed (2 u8), 6 bytes 0, navigation_update (i64 ns)      296
+//                  navigation_fixed, drag_valid (3 u8), 5 bytes 0, navigation_update
+//                  (i64 ns), differential drag (f64)                                    304
 //   navigation     has_solution, valid, fixed, fix_applied, full_fix (5 u8), dd_count,
 //   telemetry      dd_reference_prn (2 u8), 1 byte 0; update_t (i64 ns); DSC r, v; OSC r, v
 //                  (GCRF; 12 f64); p DSC, p OSC (body; 6 f64); empirical DSC, OSC (RTN;
@@ -124,7 +125,7 @@ struct RecordHeader {
 
 /// The whole record's size of a channel [bytes].
 [[nodiscard]] constexpr std::size_t record_size(Channel channel) {
-  constexpr std::size_t kPayload[] = {0, 32, 264, 456, 8, 40, 792, 8, 48, 32, 296, 624};
+  constexpr std::size_t kPayload[] = {0, 32, 264, 456, 8, 40, 792, 8, 48, 32, 304, 624};
   static_assert(std::size(kPayload) == kChannels + 1, "one payload size per channel");
   return kHeaderBytes + kPayload[static_cast<std::size_t>(channel)] + kChecksumBytes;
 }

@@ -16,9 +16,14 @@
 namespace visors::gnc {
 
 struct DifferentialDragSettings {
-  double baseline_s = 300.0;  // [s]; nav noise 1 cm on a*da against ~0.5 m of change at 1e-6 m/s^2
-  double settle_s = 60.0;     // wait after a maneuver before a new baseline [s]
-  double gain = 0.3;          // weight of a new measurement [-]
+  /// Measurement baseline [s]. Short enough that one fits between the science approach's burns
+  /// (150 s apart, settle included), so the estimate follows the drag of the last minutes before
+  /// an observation instead of keeping the value of the last quiet stretch (the drag varies by a
+  /// factor 3-4 over an orbit with density and attitude); long enough that the navigation's
+  /// centimetre-level noise on a*da stays small against the change (0.16 m at 1e-6 m/s^2).
+  double baseline_s = 90.0;
+  double settle_s = 30.0;  // wait after a maneuver before a new baseline [s]
+  double gain = 0.3;       // weight of a new measurement (0, 1] [-]
 };
 
 class DifferentialDragEstimator {

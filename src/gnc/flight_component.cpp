@@ -31,7 +31,8 @@ FlightComponent::FlightComponent(const GncConfig& config, control::StochasticMpc
       active_(config.active),
       mass_kg_(config.mass_kg),
       navigation_(std::move(navigation)),
-      geometry_(config.science.geometry) {
+      geometry_(config.science.geometry),
+      drag_(config.drag) {
   waypoints_.reserve(static_cast<std::size_t>(config.transfer.max_waypoints));
   plan_.impulses.reserve(control::kMaxClosedFormImpulses);
   ls_plan_.plan.impulses.reserve(control::kMaxLeastSquaresBurns);
@@ -70,6 +71,8 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
   telemetry_.roe_target_m.setZero();
   if (observation_ && estimate_) telemetry_.roe_target_m = estimate_->chief_mean.a * observation_->roe_target;
   telemetry_.pending_pieces = queue_.pending();
+  telemetry_.drag_valid = drag_.valid();
+  telemetry_.differential_drag_mps2 = drag_.along_track_mps2();
   telemetry_.star_tracker_power = out.star_tracker_power;
   telemetry_.lrf_power = out.lrf_power;
   telemetry_.gnc_incapable = out.gnc_incapable;
@@ -273,7 +276,9 @@ void FlightComponent::run_standby() {
   control::ClosedFormSettings settings;
   settings.earliest_burn_s = config_.burn_latency_s;
   const double tf = config_.standby_keeping.plan_orbits * chief_period_s();
-  if (control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, target, tf, settings, config_.gravity).ok()) {
+  const astro::RelativeOrbitalElements aim =
+      config_.standby_keeping.drag_compensation ? astro::RelativeOrbitalElements(target - drag_drift(tf)) : target;
+  if (control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, aim, tf, settings, config_.gravity).ok()) {
     replace_plan(plan_.impulses);
   } else {
     planning_failed();
@@ -301,7 +306,11 @@ bool FlightComponent::plan_leg() {
   settings.normal_burns = config_.transfer.normal_burns;
   leg_end_ = estimate_->t + tf;
   leg_planned_ = true;
-  if (!control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, waypoints_[leg_], tf, settings,
+  // The planner's model is linear, so aiming at target - drift lets the drag carry the formation
+  // onto the waypoint.
+  astro::RelativeOrbitalElements target = waypoints_[leg_];
+  if (config_.transfer.drag_compensation) target -= drag_drift(tf);
+  if (!control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, target, tf, settings,
                                       config_.gravity)
            .ok()) {
     planning_failed();
@@ -465,14 +474,14 @@ void FlightComponent::replan_last_burn(const astro::RelativeOrbitalElements& tar
   replace_plan(single_);
 }
 
-astro::RelativeOrbitalElements FlightComponent::drag_drift(double to_aligned) const {
+astro::RelativeOrbitalElements FlightComponent::drag_drift(double horizon_s) const {
   astro::RelativeOrbitalElements drift = astro::RelativeOrbitalElements::Zero();
-  if (!drag_.valid() || !(to_aligned > 0.0)) return drift;
+  if (!drag_.valid() || !(horizon_s > 0.0)) return drift;
   const int nodes = config_.science.drag_drift_nodes;
-  const double h = to_aligned / nodes;
+  const double h = horizon_s / nodes;
   const Eigen::Vector3d dv_rtn(0.0, drag_.along_track_mps2() * h, 0.0);
   for (int k = 0; k < nodes; ++k) {
-    drift += control::impulse_effect(estimate_->chief_mean, (k + 0.5) * h, to_aligned, config_.gravity) * dv_rtn;
+    drift += control::impulse_effect(estimate_->chief_mean, (k + 0.5) * h, horizon_s, config_.gravity) * dv_rtn;
   }
   return drift;
 }

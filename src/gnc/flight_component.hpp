@@ -13,7 +13,8 @@
 //  - standby: once per check period, if a|de - de_t| > deadband or a|dlambda - dlambda_t| >
 //    threshold, a closed-form plan back to the standby ROE over plan_orbits;
 //  - transfer: guidance waypoints (control::transfer_waypoints) flown as closed-form legs of
-//    leg_orbits each (two normal burns per leg), each leg planned from the current estimate;
+//    leg_orbits each (two normal burns per leg), each leg planned from the current estimate and
+//    aimed off by the estimated differential drag's drift over the leg (as the standby plans);
 //  - science, per observation (observation_schedule.hpp: exact aligned target at mid-window):
 //    the stochastic MPC (reachable-set planner) every mpc_period_s towards the aligned ROE carried
 //    back to the start of the fine-control window; inside the window the least-squares planner at
@@ -103,9 +104,10 @@ class FlightComponent {
   bool replace_plan(std::span<const control::Impulse> impulses);
   void planning_failed();
   double chief_period_s() const;
-  /// The mean-ROE change at `to_aligned` s (since the estimate) that the estimated differential
-  /// drag produces from now on (midpoint quadrature of Phi Gamma a_T).
-  astro::RelativeOrbitalElements drag_drift(double to_aligned) const;
+  /// The mean-ROE change at `horizon_s` s after the estimate that the estimated differential drag
+  /// produces from the estimate on (midpoint quadrature of Phi Gamma a_T); zero until the
+  /// estimator is valid.
+  astro::RelativeOrbitalElements drag_drift(double horizon_s) const;
   double since(core::GpsTime t) const { return now_.seconds_since(t); }
 
   GncConfig config_;

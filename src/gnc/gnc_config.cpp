@@ -29,6 +29,11 @@ core::Result<GncConfig> validate(const GncConfig& config) {
   if (config.transfer.max_waypoints < 1 || config.transfer.max_waypoints > kMaxTransferWaypoints) {
     return core::Error{"transfer.max_waypoints", "must be in [1, " + std::to_string(kMaxTransferWaypoints) + "]"};
   }
+  if (!positive(config.drag.baseline_s)) return core::Error{"drag.baseline_s", "must be > 0"};
+  if (!(config.drag.settle_s >= 0.0 && std::isfinite(config.drag.settle_s))) {
+    return core::Error{"drag.settle_s", "must be finite and >= 0"};
+  }
+  if (!(config.drag.gain > 0.0 && config.drag.gain <= 1.0)) return core::Error{"drag.gain", "must be in (0, 1]"};
   const auto& sc = config.science;
   if (!positive(sc.least_squares_window_s)) return core::Error{"science.least_squares_window_s", "must be > 0"};
   if (sc.least_squares_burns < 1 || sc.least_squares_burns > control::kMaxLeastSquaresBurns) {

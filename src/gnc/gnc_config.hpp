@@ -11,6 +11,7 @@
 #include "control/stochastic_mpc.hpp"
 #include "core/constants.hpp"
 #include "core/status.hpp"
+#include "gnc/differential_drag_estimator.hpp"
 #include "gnc/messages.hpp"
 #include "safety/escape_maneuver.hpp"
 #include "safety/passive_safety_settings.hpp"
@@ -28,6 +29,9 @@ struct StandbyKeepingSettings {
   double dlambda_threshold_m = 20.0;
   /// Horizon of a station-keeping plan (closed form needs >= 1.5 orbits) [chief orbits].
   double plan_orbits = 2.0;
+  /// Aim each plan off by the drift the estimated differential drag causes over its horizon
+  /// (the closed-form planner's model is J2 only).
+  bool drag_compensation = true;
 };
 
 struct TransferSettings {
@@ -40,6 +44,11 @@ struct TransferSettings {
   int normal_burns = 2;
   /// The last allowed burn of a leg is this long before the leg end [s].
   double end_margin_s = 60.0;
+  /// Aim each leg off by the drift the estimated differential drag causes over it. The
+  /// closed-form planner's model is J2 only; at 500 km and high solar activity a 1e-6 m/s^2
+  /// differential acceleration moves the along-track separation by 1.5 a_T t^2 ~ 100 m over a
+  /// 1.6-orbit leg, which the first science approach then has to undo.
+  bool drag_compensation = true;
   /// Capacity of the waypoint list, reserved at creation (1..kMaxTransferWaypoints): a transfer
   /// needing more legs is a planning failure (a degenerate geometry; the paper's transfers take
   /// 4-8 legs).
@@ -113,6 +122,7 @@ struct GncConfig {
   control::StandbyOrbit standby;
   StandbyKeepingSettings standby_keeping;
   TransferSettings transfer;
+  DifferentialDragSettings drag;
   ScienceSettings science;
   safety::PassiveSafetySettings safety;
   safety::EscapeSettings escape;

@@ -185,6 +185,10 @@ struct Telemetry {
   // On-board navigation (mode "cdgps"): its solution is in use, its last update was fixed, when.
   bool navigation_valid = false, navigation_fixed = false;
   core::GpsTime navigation_update;
+  /// The differential along-track acceleration the planners assume (deputy minus chief), and
+  /// whether its estimator is valid (differential_drag_estimator.hpp) [m/s^2].
+  bool drag_valid = false;
+  double differential_drag_mps2 = 0.0;
 };
 
 /// What the on-board navigation did so far (telemetry).

@@ -27,11 +27,12 @@ inline constexpr std::array<std::string_view, 28> kAlignmentSampleColumns{
     "osc_qz",     "target_x",   "target_y",   "target_z",   "lateral_m",  "lateral_velocity_mps", "focus_m"};
 
 /// The columns of timeseries.csv, in order.
-inline constexpr std::array<std::string_view, 26> kTimeseriesColumns{
+inline constexpr std::array<std::string_view, 30> kTimeseriesColumns{
     "t_s",         "mode",        "active",     "ada_mean_m",      "adl_mean_m", "adex_mean_m", "adey_mean_m",
     "adix_mean_m", "adiy_mean_m", "ada_osc_m",  "adl_osc_m",       "adex_osc_m", "adey_osc_m",  "adix_osc_m",
     "adiy_osc_m",  "r_r_m",       "r_t_m",      "r_n_m",           "v_r_mps",    "v_t_mps",     "v_n_mps",
-    "sep_rn_m",    "sep_3d_m",    "safety_margin_m", "dv_dsc_mps", "dv_osc_mps"};
+    "sep_rn_m",    "sep_3d_m",    "safety_margin_m", "dv_dsc_mps", "dv_osc_mps", "drag_area_dsc_m2",
+    "drag_area_osc_m2", "drag_t_difference_mps2", "drag_t_estimate_mps2"};
 
 /// The columns of observations.csv and events.csv, in order.
 inline constexpr std::array<std::string_view, 6> kObservationColumns{

@@ -433,7 +433,7 @@ core::Result<bool> read_gnc(const toml::table& root, CampaignScenario& s) {
   if (auto e = check_keys(*g, sec, {"standby_de_deadband_m", "standby_dlambda_threshold_m", "transfer_leg_orbits",
                                     "mpc_period_s", "least_squares_window_s", "safety_epsilon_m", "safety_q_sigma",
                                     "safety_horizon_orbits", "safety_check_period_s", "escape_da_target_m",
-                                    "north", "least_squares_burns_before_s"})) {
+                                    "north", "least_squares_burns_before_s", "drag_compensation"})) {
     return *e;
   }
   auto& c = s.gnc;
@@ -448,6 +448,7 @@ core::Result<bool> read_gnc(const toml::table& root, CampaignScenario& s) {
   VISORS_TRY(period, number_at(*g, sec, "safety_check_period_s", c.safety.check_period_s));
   VISORS_TRY(da, number_at(*g, sec, "escape_da_target_m", c.escape.da_target_m));
   VISORS_TRY(north, bool_at(*g, sec, "north", c.science.geometry.north));
+  VISORS_TRY(drag, bool_at(*g, sec, "drag_compensation", c.transfer.drag_compensation));
   c.standby_keeping.de_deadband_m = de;
   c.standby_keeping.dlambda_threshold_m = dl;
   c.transfer.leg_orbits = leg;
@@ -459,6 +460,8 @@ core::Result<bool> read_gnc(const toml::table& root, CampaignScenario& s) {
   c.safety.check_period_s = period;
   c.escape.da_target_m = da;
   c.science.geometry.north = north;
+  c.transfer.drag_compensation = drag;
+  c.standby_keeping.drag_compensation = drag;
   if (auto ok = read_burn_times(*g, sec, c.science); !ok) return ok.error();
   if (auto ok = gnc::validate(c); !ok) return Error{"gnc (" + ok.error().field + ")", ok.error().message};
   return true;
@@ -578,11 +581,11 @@ std::string campaign_to_toml(const CampaignScenario& s) {
   out += fmt::format("[clock]\npps_sigma_ns = {:.17g}\noscillator_sigma_ppm = {:.17g}\n\n", s.host_clock.pps_sigma_s * 1e9,
                      s.host_clock.oscillator_sigma * 1e6);
   out += fmt::format("[crosslink]\ndelay_s = {:.17g}\ndrop_probability = {:.17g}\n\n", s.crosslink_delay_s, s.crosslink_drop_probability);
-  out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\nleast_squares_burns_before_s = [{:.17g}]\n\n",
+  out += fmt::format("[gnc]\nstandby_de_deadband_m = {:.17g}\nstandby_dlambda_threshold_m = {:.17g}\ntransfer_leg_orbits = {:.17g}\nmpc_period_s = {:.17g}\nleast_squares_window_s = {:.17g}\nsafety_epsilon_m = {:.17g}\nsafety_q_sigma = {:.17g}\nsafety_horizon_orbits = {:.17g}\nsafety_check_period_s = {:.17g}\nescape_da_target_m = {:.17g}\nnorth = {}\ndrag_compensation = {}\nleast_squares_burns_before_s = [{:.17g}]\n\n",
                      g.standby_keeping.de_deadband_m, g.standby_keeping.dlambda_threshold_m, g.transfer.leg_orbits,
                      g.science.mpc_period_s, g.science.least_squares_window_s, g.safety.epsilon_m, g.safety.q_sigma,
                      g.safety.horizon_orbits, g.safety.check_period_s, g.escape.da_target_m, g.science.geometry.north,
-                     fmt::join(std::span(g.science.least_squares_burns_before_s.data(),
+                     g.transfer.drag_compensation, fmt::join(std::span(g.science.least_squares_burns_before_s.data(),
                                          static_cast<std::size_t>(g.science.least_squares_burns)),
                                ", "));
   out += fmt::format("[fault]\nimpulse_t_s = {:.17g}\nimpulse_dv_rtn_mps = [{:.17g}, {:.17g}, {:.17g}]\nnon_gnc_fault_t_s = {:.17g}\n",

@@ -132,7 +132,7 @@ core::Result<bool> CampaignSimulation::step() {
   }
   inject_faults(t);
   const bool navigation_rows = sensors_.has_gps() && k_ % output_every_ == 0;
-  metrics_.record(truth_, host_, ts_, k_, output_every_, scenario_.gnc.gravity, sensors_.has_gps(),
+  metrics_.record(truth_, host_, t, ts_, k_, output_every_, scenario_.gnc.gravity, sensors_.has_gps(),
                   navigation_rows && in_slew(ts_), navigation_rows && in_observation(ts_));
   update_end();
   if (auto ok = truth_.propagate(t, scenario_.step_s); !ok) return ok.error();

@@ -105,8 +105,10 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SpacecraftProperties, mass, drag_area, cd, sr
 namespace visors::gnc {
 NLOHMANN_JSON_SERIALIZE_ENUM(Spacecraft, {{Spacecraft::kDsc, "dsc"}, {Spacecraft::kOsc, "osc"}})
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StandbyKeepingSettings, check_period_orbits, de_deadband_m, dlambda_threshold_m,
-                                   plan_orbits)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TransferSettings, waypoints, leg_orbits, normal_burns, end_margin_s, max_waypoints)
+                                   plan_orbits, drag_compensation)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DifferentialDragSettings, baseline_s, settle_s, gain)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TransferSettings, waypoints, leg_orbits, normal_burns, end_margin_s, max_waypoints,
+                                   drag_compensation)
 void to_json(nlohmann::json& j, const ScienceSettings& s) {
   j = {{"geometry", s.geometry},
        {"choose_pole", s.choose_pole},
@@ -134,6 +136,7 @@ void to_json(nlohmann::json& j, const GncConfig& c) {
        {"standby", c.standby},
        {"standby_keeping", c.standby_keeping},
        {"transfer", c.transfer},
+       {"drag", c.drag},
        {"science", c.science},
        {"safety", c.safety},
        {"escape", c.escape},

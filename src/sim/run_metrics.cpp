@@ -50,6 +50,16 @@ double payload_pointing_rad(const TruthSpacecraft& x) {
   return std::atan2(los_gcrf.cross(x.target_unit_gcrf).norm(), los_gcrf.dot(x.target_unit_gcrf));
 }
 
+// The true differential drag along the DSC's T axis (the quantity the flight software's estimator
+// measures, differential_drag_estimator.hpp) and the active spacecraft's estimate of it.
+void add_drag(const TruthWorld& truth, core::GpsTime t, const gnc::Telemetry& active, TimeseriesRow& row) {
+  for (std::size_t k = 0; k < 2; ++k) row.drag_area_m2[k] = truth.drag_area_m2(k);
+  const Eigen::Vector3d difference = truth.drag_acceleration_gcrf(1, t) - truth.drag_acceleration_gcrf(0, t);
+  row.drag_t_difference_mps2 = (core::gcrf_to_rtn_matrix(truth[0].x_gcrf) * difference)(1);
+  row.has_drag_estimate = active.drag_valid;
+  row.drag_t_estimate_mps2 = active.differential_drag_mps2;
+}
+
 }  // namespace
 
 RunMetrics::RunMetrics(RunRecorder& recorder, int observations) : recorder_(&recorder) {
@@ -157,7 +167,7 @@ void RunMetrics::close_observation(PendingObservation& p, double t_s) {
                                ok ? "success" : "failure"));
 }
 
-void RunMetrics::record(const TruthWorld& truth, const HostApplication& host, double t_s, std::int64_t step,
+void RunMetrics::record(const TruthWorld& truth, const HostApplication& host, core::GpsTime t, double t_s, std::int64_t step,
                         std::int64_t output_every, const core::EarthGravityConstants& gravity, bool navigation, bool in_slew,
                         bool in_observation) {
   for (PendingObservation& p : observations_) {
@@ -178,6 +188,7 @@ void RunMetrics::record(const TruthWorld& truth, const HostApplication& host, do
   row.safety_margin_m = now.out.telemetry.safety_margin_m;
   row.dv_dsc_mps = dv_total_mps_[0];
   row.dv_osc_mps = dv_total_mps_[1];
+  add_drag(truth, t, now.out.telemetry, row);
   recorder_->timeseries(row);
   if (navigation) record_navigation_rows(host, t_s, in_slew, in_observation);
 }

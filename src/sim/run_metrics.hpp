@@ -54,7 +54,8 @@ class RunMetrics {
 
   /// This step's alignment samples (closing the attempts that ended) and minimum separations;
   /// every `output_every` steps the time series and, with on-board navigation, navigation.csv.
-  void record(const TruthWorld& truth, const HostApplication& host, double t_s, std::int64_t step, std::int64_t output_every,
+  void record(const TruthWorld& truth, const HostApplication& host, core::GpsTime t, double t_s, std::int64_t step,
+              std::int64_t output_every,
               const core::EarthGravityConstants& gravity, bool navigation, bool in_slew, bool in_observation);
 
   [[nodiscard]] std::array<std::vector<float>, 2>& step_us() { return step_us_; }

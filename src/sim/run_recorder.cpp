@@ -96,7 +96,10 @@ void RunRecorder::timeseries(const TimeseriesRow& row) {
   for (int i = 0; i < 3; ++i) line += fmt::format(",{:.17g}", row.v_rtn_mps(i));
   line += fmt::format(",{:.17g},{:.17g},", row.sep_rn_m, row.sep_3d_m);
   if (row.has_margin) line += fmt::format("{:.17g}", row.safety_margin_m);
-  line += fmt::format(",{:.17g},{:.17g}\n", row.dv_dsc_mps, row.dv_osc_mps);
+  line += fmt::format(",{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},", row.dv_dsc_mps, row.dv_osc_mps, row.drag_area_m2[0],
+                      row.drag_area_m2[1], row.drag_t_difference_mps2);
+  if (row.has_drag_estimate) line += fmt::format("{:.9g}", row.drag_t_estimate_mps2);
+  line += '\n';
   std::fputs(line.c_str(), timeseries_.get());
 }
 

@@ -3,6 +3,7 @@
 // time series, the observations, the event log and summary.json. Rows are streamed to the files
 // as the run goes (a crash leaves what was simulated), numbers with 17 significant digits.
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -40,6 +41,10 @@ struct TimeseriesRow {
   bool has_margin = false;
   double safety_margin_m = 0.0;
   double dv_dsc_mps = 0.0, dv_osc_mps = 0.0;
+  std::array<double, 2> drag_area_m2{};  // DSC, OSC at their attitudes
+  double drag_t_difference_mps2 = 0.0;   // true drag, OSC minus DSC, along the DSC's T axis
+  bool has_drag_estimate = false;        // the active spacecraft's estimator is valid
+  double drag_t_estimate_mps2 = 0.0;     // its estimate of drag_t_difference_mps2
 };
 
 class RunRecorder {

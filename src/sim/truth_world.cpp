@@ -91,6 +91,13 @@ core::Result<bool> TruthWorld::propagate(core::GpsTime t, double step_s) {
   return true;
 }
 
+Eigen::Vector3d TruthWorld::drag_acceleration_gcrf(std::size_t k, core::GpsTime t) const {
+  const TruthSpacecraft& x = craft_[k];
+  return x.dynamics.forces->acceleration_terms(t, x.x_gcrf).drag;
+}
+
+double TruthWorld::drag_area_m2(std::size_t k) const { return craft_[k].dynamics.forces->spacecraft().drag_area; }
+
 nlohmann::json TruthWorld::summary() const {
   const auto vector = [](const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
   nlohmann::json out;

@@ -84,6 +84,13 @@ class TruthWorld {
   [[nodiscard]] std::array<TruthSpacecraft, 2>& craft() { return craft_; }
   [[nodiscard]] const std::array<TruthSpacecraft, 2>& craft() const { return craft_; }
 
+  /// The drag acceleration of spacecraft k at t in its present state and attitude, GCRF [m/s^2]
+  /// (t must be the time of the present state: the propagator evaluates the same at its next
+  /// step, so the force model's time caches are unchanged).
+  [[nodiscard]] Eigen::Vector3d drag_acceleration_gcrf(std::size_t k, core::GpsTime t) const;
+  /// The drag area of spacecraft k at its present attitude [m^2].
+  [[nodiscard]] double drag_area_m2(std::size_t k) const;
+
   /// What the run drew for each spacecraft (docs/run-directory.md "truth"): the body vectors
   /// from the structural origin, the true mass, Cd, Cr, the propulsion's Isp and nozzle biases.
   [[nodiscard]] nlohmann::json summary() const;

@@ -162,6 +162,8 @@ Telemetry telemetry() {
   m.navigation_valid = true;
   m.navigation_fixed = true;
   m.navigation_update = t0() + 9.0;
+  m.drag_valid = true;
+  m.differential_drag_mps2 = -1.25e-6;
   return m;
 }
 
@@ -391,6 +393,8 @@ TEST(ChannelRecord, TelemetryRoundTrip) {
   EXPECT_EQ(out.records.by_status, in.records.by_status);
   EXPECT_EQ(out.navigation_fixed, in.navigation_fixed);
   EXPECT_EQ(out.navigation_update, in.navigation_update);
+  EXPECT_EQ(out.drag_valid, in.drag_valid);
+  EXPECT_EQ(out.differential_drag_mps2, in.differential_drag_mps2);
 }
 
 TEST(ChannelRecord, NavigationTelemetryRoundTrip) {

@@ -56,11 +56,23 @@ TEST(DifferentialDragEstimator, RecoversAConstantAlongTrackAcceleration) {
   EXPECT_NEAR(estimator.along_track_mps2(), a_t, 1e-15);
 }
 
+// After a maneuver: settle_s of waiting, then a full baseline_s before the first measurement.
 TEST(DifferentialDragEstimator, AManeuverRestartsTheBaseline) {
-  DifferentialDragEstimator estimator;
+  const DifferentialDragSettings settings;
+  DifferentialDragEstimator estimator(settings);
   estimator.maneuver(kT0);
-  for (int k = 0; k < 300; ++k) estimator.observe(kT0 + static_cast<double>(k), 0.01 * k, 1.1e-3);
+  const int first = static_cast<int>(settings.settle_s + settings.baseline_s);
+  for (int k = 0; k < first; ++k) estimator.observe(kT0 + static_cast<double>(k), 0.01 * k, 1.1e-3);
   EXPECT_FALSE(estimator.valid());
+}
+
+TEST(DifferentialDragEstimator, AManeuverDelaysTheFirstMeasurementBySettleAndBaseline) {
+  const DifferentialDragSettings settings;
+  DifferentialDragEstimator estimator(settings);
+  estimator.maneuver(kT0);
+  const int first = static_cast<int>(settings.settle_s + settings.baseline_s);
+  for (int k = 0; k <= first; ++k) estimator.observe(kT0 + static_cast<double>(k), 0.01 * k, 1.1e-3);
+  EXPECT_TRUE(estimator.valid());
 }
 
 // The aligned target, built back into states: the OSC is 40 m from the DSC along the Sun line
@@ -107,6 +119,18 @@ TEST(GncConfig, BurnCountOutsideTheArrayIsNamed) {
   GncConfig config;
   config.science.least_squares_burns = visors::control::kMaxLeastSquaresBurns + 1;
   EXPECT_EQ(validate(config).error().field, "science.least_squares_burns");
+}
+
+TEST(GncConfig, DragEstimatorGainAboveOneIsNamed) {
+  GncConfig config;
+  config.drag.gain = 1.5;
+  EXPECT_EQ(validate(config).error().field, "drag.gain");
+}
+
+TEST(GncConfig, DragEstimatorNonPositiveBaselineIsNamed) {
+  GncConfig config;
+  config.drag.baseline_s = 0.0;
+  EXPECT_EQ(validate(config).error().field, "drag.baseline_s");
 }
 
 TEST(GncConfig, OnlyTheUsedBurnTimesAreChecked) {

@@ -91,11 +91,14 @@ void SyntheticRun::write_timeseries(const SyntheticRunOptions& options) {
     if (k > 0 && k % 450 == 0) dv_osc += 0.001;
     // The margin is recorded only after the first on-board check.
     const std::string margin = k < 60 ? "" : fmt::format("{}", std::hypot(rr, rn) - 20.0);
-    out << fmt::format("{},{},dsc,{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", t,
+    // Differential drag: the truth varies over the orbit; the estimate exists after its first baseline.
+    const double drag = -1e-7 * (1.0 + 0.5 * std::sin(u));
+    const std::string drag_estimate = k < 60 ? "" : fmt::format("{}", -1e-7);
+    out << fmt::format("{},{},dsc,{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},0.35,0.35,{},{}\n", t,
                        mode_at(t / duration_s_), ada, adl, adex, adey, adix, adiy, ada + ripple, adl - ripple,
                        adex + 0.5 * ripple, adey - 0.5 * ripple, adix + 0.3 * ripple, adiy + 0.3 * ripple, rr, rt, rn,
                        vr, vt, vn, std::hypot(rr, rn), std::sqrt(rr * rr + rt * rt + rn * rn), margin, dv_dsc,
-                       dv_osc);
+                       dv_osc, drag, drag_estimate);
   }
   rows_ = samples;
 }
