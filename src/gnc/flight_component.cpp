@@ -276,8 +276,8 @@ void FlightComponent::run_standby() {
   control::ClosedFormSettings settings;
   settings.earliest_burn_s = config_.burn_latency_s;
   const double tf = config_.standby_keeping.plan_orbits * chief_period_s();
-  const astro::RelativeOrbitalElements aim =
-      config_.standby_keeping.drag_compensation ? astro::RelativeOrbitalElements(target - drag_drift(tf)) : target;
+  astro::RelativeOrbitalElements aim = target;
+  if (config_.standby_keeping.drag_compensation) aim -= drag_drift(tf);  // as the transfer legs (plan_leg)
   if (control::plan_closed_form_into(plan_, estimate_->chief_mean, estimate_->roe_mean, aim, tf, settings, config_.gravity).ok()) {
     replace_plan(plan_.impulses);
   } else {

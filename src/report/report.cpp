@@ -35,6 +35,7 @@ std::string render_report(const RunData& run) {
   html += "<section id=\"figures\"><h2>Figures</h2>\n" + all_figures(run) + "</section>\n";
   html += delta_v_table(run);
   html += observation_table(run);
+  html += budget_table(run);
   html += event_table(run);
   html += "</body>\n</html>\n";
   return html;

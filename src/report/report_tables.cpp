@@ -164,6 +164,36 @@ std::string observation_table(const RunData& run) {
   return out + "</table></section>\n";
 }
 
+std::string budget_table(const RunData& run) {
+  const auto with_budget = [](const Observation& o) { return o.has_budget; };
+  if (std::none_of(run.observations.begin(), run.observations.end(), with_budget)) {
+    return none("error-budget", "Error budget");
+  }
+  std::string out =
+      "<section id=\"error-budget\"><h2>Error budget</h2>\n<p>Each attempt's true alignment error at its worst "
+      "lateral sample, split by source (the terms add up to it): lateral x, y and focus [mm].</p>\n<table>\n"
+      "<tr><th>#</th><th>lateral error [mm]</th>";
+  for (std::size_t k = 0; k < kReportBudgetTerms; ++k) {
+    std::string_view name = kObservationBudgetColumns[5 * k];  // budget_<term>_x_m
+    name.remove_prefix(std::string_view("budget_").size());
+    name.remove_suffix(std::string_view("_x_m").size());
+    std::string label(name);
+    std::replace(label.begin(), label.end(), '_', ' ');
+    out += fmt::format("<th>{}</th>", label);
+  }
+  out += "</tr>\n";
+  for (const Observation& o : run.observations) {
+    if (!o.has_budget) continue;
+    out += fmt::format("<tr><td>{}</td><td>{}</td>", format_fixed(o.index, 0), format_fixed(1e3 * o.lateral_error_m, 1));
+    for (const BudgetTermSample& b : o.budget) {
+      out += fmt::format("<td>{}, {}, {}</td>", format_fixed(1e3 * b.x_m, 1), format_fixed(1e3 * b.y_m, 1),
+                         format_fixed(1e3 * b.focus_m, 1));
+    }
+    out += "</tr>\n";
+  }
+  return out + "</table></section>\n";
+}
+
 std::string event_table(const RunData& run) {
   if (run.events.empty()) return none("events", "Event log");
   std::string out =

@@ -18,6 +18,9 @@ inline constexpr double kRequiredSuccessRate = 0.20;
 std::string summary_box(const RunData& run);
 std::string delta_v_table(const RunData& run);
 std::string observation_table(const RunData& run);
+/// Each attempt's error budget at its worst lateral sample (lateral x, y and focus of every term;
+/// docs/run-directory.md), when observations.csv has it.
+std::string budget_table(const RunData& run);
 std::string event_table(const RunData& run);
 
 }  // namespace visors::report

@@ -1,5 +1,6 @@
 #include "report/run_data.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -80,6 +81,29 @@ core::Result<Timeseries> load_timeseries(const std::filesystem::path& path) {
   return s;
 }
 
+// The error budget's position columns (x, y, focus of each term), when observations.csv has them;
+// an attempt whose cells are empty (no on-board navigation) has none.
+core::Result<bool> load_budget(const CsvTable& t, std::vector<Observation>& observations) {
+  if (!t.column(kObservationBudgetColumns[0])) return true;
+  for (std::size_t k = 0; k < kReportBudgetTerms; ++k) {
+    std::array<std::vector<double>, 3> xyf;
+    for (std::size_t c = 0; c < 3; ++c) {
+      auto values = t.numbers(kObservationBudgetColumns[5 * k + c]);
+      if (!values) return values.error();
+      xyf[c] = std::move(values).value();
+    }
+    for (std::size_t r = 0; r < observations.size(); ++r) {
+      observations[r].budget[k] = {xyf[0][r], xyf[1][r], xyf[2][r]};
+    }
+  }
+  for (Observation& o : observations) {
+    o.has_budget = std::all_of(o.budget.begin(), o.budget.end(), [](const BudgetTermSample& b) {
+      return std::isfinite(b.x_m) && std::isfinite(b.y_m) && std::isfinite(b.focus_m);
+    });
+  }
+  return true;
+}
+
 core::Result<std::vector<Observation>> load_observations(const std::filesystem::path& path) {
   if (absent_or_empty(path)) return std::vector<Observation>{};
   auto read = read_table(path, kObservationColumns);
@@ -95,9 +119,16 @@ core::Result<std::vector<Observation>> load_observations(const std::filesystem::
   for (std::size_t r = 0; r < t.row_count(); ++r) {
     const double success = columns[5][r];
     if (success != 0.0 && success != 1.0) return t.cell_error(r, "success", "must be 0 or 1");
-    observations.push_back({columns[0][r], columns[1][r], columns[2][r], columns[3][r], columns[4][r],
-                            success == 1.0});
+    Observation o;
+    o.index = columns[0][r];
+    o.t_s = columns[1][r];
+    o.lateral_error_m = columns[2][r];
+    o.lateral_velocity_mps = columns[3][r];
+    o.focus_error_m = columns[4][r];
+    o.success = success == 1.0;
+    observations.push_back(o);
   }
+  if (auto ok = load_budget(t, observations); !ok) return ok.error();
   return observations;
 }
 

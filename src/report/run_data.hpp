@@ -4,6 +4,7 @@
 // summary.json are required; a missing or empty observations.csv or events.csv is an empty list,
 // because a short run may have neither.
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/status.hpp"
+#include "report/run_directory.hpp"
 
 namespace visors::report {
 
@@ -30,6 +32,13 @@ struct Timeseries {
   [[nodiscard]] std::size_t size() const { return t_s.size(); }
 };
 
+/// One error-budget term at an attempt's worst lateral sample (run_directory.hpp
+/// kObservationBudgetColumns) [m].
+struct BudgetTermSample {
+  double x_m = 0.0, y_m = 0.0, focus_m = 0.0;
+};
+inline constexpr std::size_t kReportBudgetTerms = kObservationBudgetColumns.size() / 5;
+
 struct Observation {
   double index = 0.0;
   double t_s = 0.0;
@@ -37,6 +46,8 @@ struct Observation {
   double lateral_velocity_mps = 0.0;
   double focus_error_m = 0.0;
   bool success = false;
+  bool has_budget = false;  // observations.csv has the budget columns, filled (on-board navigation)
+  std::array<BudgetTermSample, kReportBudgetTerms> budget{};
 };
 
 struct Event {

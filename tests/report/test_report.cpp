@@ -43,7 +43,8 @@ TEST(Report, HasEveryFigureAndTable) {
     EXPECT_NE(html.find(std::string("<figure id=\"") + id + "-figure\">"), std::string::npos) << id;
   }
   EXPECT_EQ(count(html, "<figcaption>"), std::size(kFigureIds));
-  for (const char* section : {"id=\"summary\"", "id=\"delta-v-budget\"", "id=\"observations\"", "id=\"events\""}) {
+  for (const char* section : {"id=\"summary\"", "id=\"delta-v-budget\"", "id=\"observations\"", "id=\"error-budget\"",
+                              "id=\"events\""}) {
     EXPECT_NE(html.find(section), std::string::npos) << section;
   }
   EXPECT_NE(html.find("0.3488"), std::string::npos);  // the paper's standby budget
@@ -53,6 +54,24 @@ TEST(Report, HasEveryFigureAndTable) {
   EXPECT_EQ(html.find("<script"), std::string::npos);  // no scripts at all, not even the recorded one
   // The only URLs are the SVG namespace: nothing is fetched from the network.
   EXPECT_EQ(count(html, "http"), count(html, "http://www.w3.org/2000/svg"));
+}
+
+// The budget table: one row per attempt, every term's lateral x, y and focus (synthetic_run.cpp:
+// attempt 2, 31 mm lateral, is 24.5 mm of "control other" along x).
+TEST(Report, ErrorBudgetRowGivesEachTerm) {
+  const test::SyntheticRun run;
+  const std::string html = rendered(run);
+  EXPECT_NE(html.find("<tr><td>2</td><td>31.0</td><td>1.0, 0.0, 0.0</td><td>2.0, 0.0, 0.0</td><td>3.0, 0.0, 0.0</td>"
+                      "<td>0.0, 0.0, 0.0</td><td>0.5, 0.0, 0.0</td><td>24.5, 0.0, 0.0</td></tr>"),
+            std::string::npos);
+}
+
+TEST(Report, ErrorBudgetHeaderNamesTheTerms) {
+  const test::SyntheticRun run;
+  const std::string html = rendered(run);
+  EXPECT_NE(html.find("<th>navigation</th><th>phase centre</th><th>geometry</th><th>target direction</th>"
+                      "<th>last burn</th><th>control other</th>"),
+            std::string::npos);
 }
 
 TEST(Report, EscapesRecordedText) {
@@ -70,6 +89,7 @@ TEST(Report, MissingOptionalFilesRenderNone) {
   EXPECT_NE(html.find("<section id=\"observations\"><h2>Observations</h2><p class=\"none\">none</p>"),
             std::string::npos);
   EXPECT_NE(html.find("<section id=\"events\"><h2>Event log</h2><p class=\"none\">none</p>"), std::string::npos);
+  EXPECT_NE(html.find("<section id=\"error-budget\"><h2>Error budget</h2><p class=\"none\">none</p>"), std::string::npos);
   EXPECT_NE(test::figure_svg(html, "fig-alignment").find(">none</text>"), std::string::npos);
   // An observations.csv with its header only is also "none".
   std::ofstream(run.dir() / kObservationsFile) << "index,t_s,lateral_error_m,lateral_velocity_mps,focus_error_m,success\n";
