@@ -1,6 +1,6 @@
 #pragma once
 // Reducing long series to what a figure can show. A 35-orbit run sampled every 10 s has ~20,000
-// rows; drawn point by point, the seven figures would weigh tens of megabytes, yet a panel a few
+// rows; drawn point by point, the eight figures would weigh tens of megabytes, yet a panel a few
 // hundred pixels wide cannot show more than a few values per pixel column. All functions work in
 // pixel coordinates (after the data -> screen map), so the reduction is tied to what is visible.
 

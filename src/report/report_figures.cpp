@@ -191,6 +191,27 @@ std::string delta_v_figure(const RunData& run) {
               "Cumulative executed delta-v of each spacecraft (L1 norm in the thrusters' frame).");
 }
 
+std::string drag_figure(const RunData& run) {
+  const Timeseries& ts = run.timeseries;
+  const std::vector<double> t = hours(ts.t_s);
+  const auto micro = [](const std::vector<double>& v) {
+    std::vector<double> out(v.size());
+    std::transform(v.begin(), v.end(), out.begin(), [](double x) { return 1e6 * x; });
+    return out;
+  };
+  Figure figure("fig-drag", kWidth, 300.0, 1);
+  Plot& plot = figure.add(Plot("differential drag, along-track", "time [h]", "[\u00b5m/s\u00b2]"));
+  plot.line("truth (OSC minus DSC)", t, micro(ts.drag_t_difference), kMean);
+  if (any_finite(ts.drag_t_estimate)) {
+    plot.line("on-board estimate (active)", t, micro(ts.drag_t_estimate), Style{"#e07b39", 1.2, false});
+  }
+  add_time_marks(plot, run);
+  return wrap("fig-drag", figure.svg("differential along-track drag, truth and on-board estimate, versus time"),
+              "The true drag acceleration of the OSC minus the DSC's along the DSC's T axis (attitude-dependent "
+              "areas, the truth's atmosphere) and the active spacecraft's on-board estimate, which its planners "
+              "aim off by (docs/drag-prediction.md).");
+}
+
 std::string mode_figure(const RunData& run) {
   const Timeseries& ts = run.timeseries;
   std::vector<std::string> names(kModes.begin(), kModes.end());
@@ -267,7 +288,8 @@ std::string navigation_figure(const RunData& run) {
 
 std::string all_figures(const RunData& run) {
   return roe_figure(run) + ei_vector_figure(run) + separation_figure(run) + trajectory_figure(run) +
-         alignment_figure(run) + navigation_figure(run) + delta_v_figure(run) + mode_figure(run);
+         alignment_figure(run) + navigation_figure(run) + delta_v_figure(run) + drag_figure(run) +
+         mode_figure(run);
 }
 
 }  // namespace visors::report

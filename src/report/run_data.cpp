@@ -72,7 +72,9 @@ core::Result<Timeseries> load_timeseries(const std::filesystem::path& path) {
       take_numbers(t, "v_r_mps", s.v_r, error) && take_numbers(t, "v_t_mps", s.v_t, error) &&
       take_numbers(t, "v_n_mps", s.v_n, error) && take_numbers(t, "sep_rn_m", s.sep_rn, error) &&
       take_numbers(t, "sep_3d_m", s.sep_3d, error) && take_numbers(t, "safety_margin_m", s.safety_margin, error) &&
-      take_numbers(t, "dv_dsc_mps", s.dv_dsc, error) && take_numbers(t, "dv_osc_mps", s.dv_osc, error);
+      take_numbers(t, "dv_dsc_mps", s.dv_dsc, error) && take_numbers(t, "dv_osc_mps", s.dv_osc, error) &&
+      take_numbers(t, "drag_t_difference_mps2", s.drag_t_difference, error) &&
+      take_numbers(t, "drag_t_estimate_mps2", s.drag_t_estimate, error);
   if (!ok) return *error;
   // Every sample needs a time: a missing one would misplace all the figures.
   for (std::size_t r = 0; r < s.t_s.size(); ++r) {

@@ -28,6 +28,7 @@ struct Timeseries {
   std::vector<double> v_r, v_t, v_n;
   std::vector<double> sep_rn, sep_3d, safety_margin;
   std::vector<double> dv_dsc, dv_osc;
+  std::vector<double> drag_t_difference, drag_t_estimate;  // [m/s^2] (the estimate NaN while not valid)
 
   [[nodiscard]] std::size_t size() const { return t_s.size(); }
 };
