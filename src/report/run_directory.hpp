@@ -44,10 +44,10 @@ inline constexpr std::array<std::string_view, 6> kObservationColumns{
 inline constexpr std::array<std::string_view, 2> kObservationPointingColumns{"payload_pointing_dsc_arcsec",
                                                                             "payload_pointing_osc_arcsec"};
 /// The error budget's columns after the pointing (sim/error_budget.hpp): per term (navigation,
-/// phase_centre, geometry, target_direction, last_burn, control_other) its lateral x, y and focus
-/// [m] and lateral velocity x, y [m/s] at the worst lateral sample; empty without on-board
-/// navigation.
-inline constexpr std::array<std::string_view, 30> kObservationBudgetColumns{
+/// phase_centre, geometry, target_direction, last_burn, drag_prediction, control_other) its
+/// lateral x, y and focus [m] and lateral velocity x, y [m/s] at the worst lateral sample; empty
+/// without on-board navigation.
+inline constexpr std::array<std::string_view, 35> kObservationBudgetColumns{
     "budget_navigation_x_m", "budget_navigation_y_m", "budget_navigation_focus_m",
     "budget_navigation_velocity_x_mps", "budget_navigation_velocity_y_mps", "budget_phase_centre_x_m",
     "budget_phase_centre_y_m", "budget_phase_centre_focus_m", "budget_phase_centre_velocity_x_mps",
@@ -56,7 +56,9 @@ inline constexpr std::array<std::string_view, 30> kObservationBudgetColumns{
     "budget_target_direction_x_m", "budget_target_direction_y_m", "budget_target_direction_focus_m",
     "budget_target_direction_velocity_x_mps", "budget_target_direction_velocity_y_mps",
     "budget_last_burn_x_m", "budget_last_burn_y_m", "budget_last_burn_focus_m",
-    "budget_last_burn_velocity_x_mps", "budget_last_burn_velocity_y_mps", "budget_control_other_x_m",
+    "budget_last_burn_velocity_x_mps", "budget_last_burn_velocity_y_mps", "budget_drag_prediction_x_m",
+    "budget_drag_prediction_y_m", "budget_drag_prediction_focus_m", "budget_drag_prediction_velocity_x_mps",
+    "budget_drag_prediction_velocity_y_mps", "budget_control_other_x_m",
     "budget_control_other_y_m", "budget_control_other_focus_m", "budget_control_other_velocity_x_mps",
     "budget_control_other_velocity_y_mps"};
 

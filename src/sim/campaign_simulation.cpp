@@ -71,7 +71,7 @@ CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunReco
       truth_(std::move(truth)),
       sensors_(std::move(sensors)),
       host_(std::move(host)),
-      metrics_(recorder, scenario.observations) {
+      metrics_(recorder, scenario.observations, scenario.step_s) {
   const CampaignScenario& s = scenario_;
   end_s_ = s.observations == 0 ? s.standby_s + s.tail_s : s.max_duration_s;
   steps_total_ = static_cast<std::int64_t>(std::floor(s.max_duration_s / s.step_s + 1e-9));

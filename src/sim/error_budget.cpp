@@ -23,6 +23,7 @@ std::string_view to_string(BudgetTerm term) {
     case BudgetTerm::kGeometry: return "geometry";
     case BudgetTerm::kTargetDirection: return "target_direction";
     case BudgetTerm::kLastBurn: return "last_burn";
+    case BudgetTerm::kDragPrediction: return "drag_prediction";
     case BudgetTerm::kControlOther: return "control_other";
   }
   return "unknown";
@@ -42,7 +43,9 @@ ErrorBudget error_budget(const BudgetInputs& in) {
   set(BudgetTerm::kGeometry, in.payload_true.r - in.com_true.r, in.payload_true.v - in.com_true.v);
   set(BudgetTerm::kTargetDirection, in.focal_distance_m * (in.target_estimated - in.target_true), Eigen::Vector3d::Zero());
   set(BudgetTerm::kLastBurn, in.last_burn.r, in.last_burn.v);
-  set(BudgetTerm::kControlOther, control_r - in.last_burn.r, in.com_estimated.v - in.last_burn.v);
+  set(BudgetTerm::kDragPrediction, in.drag_prediction.r, in.drag_prediction.v);
+  set(BudgetTerm::kControlOther, control_r - in.last_burn.r - in.drag_prediction.r,
+      in.com_estimated.v - in.last_burn.v - in.drag_prediction.v);
   return out;
 }
 

@@ -15,11 +15,15 @@
 //   last burn              the last impulse's execution error (true minus intended velocity
 //                          change), carried to the sample by the Hill-Clohessy-Wiltshire
 //                          transition over the time since it
-//   control, other         (d_e - f s_e) - last burn: what the flight software itself would see
-//                          with perfect navigation (earlier burns, drag prediction, planning)
-// The six add up to d - f s exactly. Velocities likewise, with w = d', w_c = d_c', w_e = d_e':
-// navigation -(w_e - w_c), geometry w - w_c, last burn, control other w_e - last burn (the aim's
-// velocity is zero). Each term is given as lateral (x, y: the detector frame of
+//   drag prediction        the true differential drag minus the one the flight software's
+//                          planners assumed (its estimate along T), since the last burn, each
+//                          step's difference an impulse carried to the sample the same way
+//   control, other         (d_e - f s_e) - last burn - drag prediction: what the flight software
+//                          itself would see with perfect navigation (the navigation error the last
+//                          burns were planned from, earlier burns, planning)
+// The seven add up to d - f s exactly. Velocities likewise, with w = d', w_c = d_c', w_e = d_e':
+// navigation -(w_e - w_c), geometry w - w_c, last burn, drag prediction, control other w_e - last
+// burn - drag prediction (the aim's velocity is zero). Each term is given as lateral (x, y: the detector frame of
 // sim/alignment_metrics.hpp) and focus (along s) components.
 
 #include <array>
@@ -31,9 +35,18 @@
 
 namespace visors::sim {
 
-enum class BudgetTerm : int { kNavigation, kPhaseCentre, kGeometry, kTargetDirection, kLastBurn, kControlOther };
-inline constexpr int kBudgetTerms = 6;
-/// "navigation", "phase_centre", "geometry", "target_direction", "last_burn", "control_other".
+enum class BudgetTerm : int {
+  kNavigation,
+  kPhaseCentre,
+  kGeometry,
+  kTargetDirection,
+  kLastBurn,
+  kDragPrediction,
+  kControlOther
+};
+inline constexpr int kBudgetTerms = 7;
+/// "navigation", "phase_centre", "geometry", "target_direction", "last_burn", "drag_prediction",
+/// "control_other".
 std::string_view to_string(BudgetTerm term);
 
 /// One sample's inputs, GCRF [m, m/s].
@@ -46,6 +59,7 @@ struct BudgetInputs {
   Eigen::Vector3d target_estimated = Eigen::Vector3d::UnitX();  // s_e (unit)
   double focal_distance_m = 40.0;
   core::StateVector last_burn;           // the last burn's effect at the sample (relative)
+  core::StateVector drag_prediction;     // the drag prediction error's effect at the sample (relative)
   Eigen::Vector3d dsc_position = Eigen::Vector3d::UnitX();  // the DSC, for the detector frame's vertical
 };
 

@@ -62,7 +62,7 @@ void add_drag(const TruthWorld& truth, core::GpsTime t, const gnc::Telemetry& ac
 
 }  // namespace
 
-RunMetrics::RunMetrics(RunRecorder& recorder, int observations) : recorder_(&recorder) {
+RunMetrics::RunMetrics(RunRecorder& recorder, int observations, double step_s) : recorder_(&recorder), step_s_(step_s) {
   observations_.reserve(static_cast<std::size_t>(std::max(observations, 0)) + 4);
 }
 
@@ -113,6 +113,24 @@ void RunMetrics::add_impulse_error(std::size_t k, double t_s, const Eigen::Vecto
   const double sign = k == 1 ? 1.0 : -1.0;  // relative: OSC minus DSC
   last_burn_ = LastBurn{t_s, sign * (core::gcrf_to_rtn_matrix(dsc_gcrf) * dv_error_gcrf_mps),
                         dsc_gcrf.r.cross(dsc_gcrf.v).norm() / dsc_gcrf.r.squaredNorm()};
+  drag_since_burn_.clear();
+}
+
+// The drag prediction's impulses are kept from this long before a pending observation's start
+// (the fine-control window, 900 s by default, holds the last burn) [s].
+constexpr double kDragLookback_s = 1200.0;
+
+void RunMetrics::record_drag_prediction(const TruthWorld& truth, const HostApplication& host, core::GpsTime t,
+                                        double t_s) {
+  const bool near = std::any_of(observations_.begin(), observations_.end(), [t_s](const PendingObservation& p) {
+    return !p.done && t_s >= p.start_s - kDragLookback_s && t_s <= p.end_s;
+  });
+  if (!near) return;
+  const gnc::Telemetry& active = host[host.active_index()].out.telemetry;
+  const Eigen::Vector3d assumed_rtn(0.0, active.drag_valid ? active.differential_drag_mps2 : 0.0, 0.0);
+  const Eigen::Vector3d true_rtn =
+      core::gcrf_to_rtn_matrix(truth[0].x_gcrf) * (truth.drag_acceleration_gcrf(1, t) - truth.drag_acceleration_gcrf(0, t));
+  drag_since_burn_.push_back({t_s + 0.5 * step_s_, (true_rtn - assumed_rtn) * step_s_});
 }
 
 // The budget of this step's alignment sample (sim/error_budget.hpp), from the active spacecraft's
@@ -138,6 +156,15 @@ std::optional<ErrorBudget> RunMetrics::budget_at(const TruthWorld& truth, const 
     const core::StateVector response = hcw_impulse_response(last_burn_->dv_rtn_mps, last_burn_->n_radps, t_s - last_burn_->t_s);
     in.last_burn = {rtn_to_gcrf * response.r, rtn_to_gcrf * response.v};
   }
+  const double n_radps = dsc.x_gcrf.r.cross(dsc.x_gcrf.v).norm() / dsc.x_gcrf.r.squaredNorm();
+  core::StateVector drag{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  for (const DragImpulse& d : drag_since_burn_) {
+    if (d.t_s > t_s) continue;
+    const core::StateVector response = hcw_impulse_response(d.dv_rtn_mps, n_radps, t_s - d.t_s);
+    drag.r += response.r;
+    drag.v += response.v;
+  }
+  in.drag_prediction = {rtn_to_gcrf * drag.r, rtn_to_gcrf * drag.v};
   return error_budget(in);
 }
 
@@ -175,6 +202,7 @@ void RunMetrics::record(const TruthWorld& truth, const HostApplication& host, co
     if (t_s >= p.start_s && t_s <= p.end_s) sample_alignment(p, truth, host, t_s);
     else if (t_s > p.end_s) close_observation(p, t_s);
   }
+  record_drag_prediction(truth, host, t, t_s);
   TimeseriesRow row = truth_geometry(truth[0].x_gcrf, truth[1].x_gcrf);
   min_sep_rn_m_ = std::min(min_sep_rn_m_, row.sep_rn_m);
   min_sep_3d_m_ = std::min(min_sep_3d_m_, row.sep_3d_m);

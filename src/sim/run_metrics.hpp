@@ -32,7 +32,8 @@ class Sensors;
 
 class RunMetrics {
  public:
-  RunMetrics(RunRecorder& recorder, int observations);
+  /// step_s: the simulation step (the drag prediction's impulses) [s].
+  RunMetrics(RunRecorder& recorder, int observations, double step_s);
 
   /// An attempt the active spacecraft scheduled: scored over [start_s, end_s] [s since t0].
   void open_observation(int index, double start_s, double end_s);
@@ -79,6 +80,13 @@ class RunMetrics {
     Eigen::Vector3d dv_rtn_mps = Eigen::Vector3d::Zero();  // relative: OSC minus DSC
     double n_radps = 0.0;
   };
+  // One step's drag prediction error as an impulse: (true differential drag - the planners'
+  // estimate) * step, DSC RTN at its time, OSC minus DSC [m/s].
+  struct DragImpulse {
+    double t_s = 0.0;
+    Eigen::Vector3d dv_rtn_mps = Eigen::Vector3d::Zero();
+  };
+  void record_drag_prediction(const TruthWorld& truth, const HostApplication& host, core::GpsTime t, double t_s);
   void sample_alignment(PendingObservation& p, const TruthWorld& truth, const HostApplication& host, double t_s);
   [[nodiscard]] std::optional<ErrorBudget> budget_at(const TruthWorld& truth, const HostApplication& host, double t_s) const;
   void close_observation(PendingObservation& p, double t_s);
@@ -93,6 +101,8 @@ class RunMetrics {
   std::array<double, 2> dv_total_mps_{};
   NavigationScore navigation_score_;
   std::optional<LastBurn> last_burn_;
+  double step_s_ = 1.0;
+  std::vector<DragImpulse> drag_since_burn_;  // within kDragLookback_s of a pending observation
   core::GpsTime aim_t0_;
   control::ScienceGeometry aim_geometry_;
   std::array<NavigationSample, 2> navigation_samples_{};

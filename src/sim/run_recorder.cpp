@@ -103,6 +103,8 @@ void RunRecorder::timeseries(const TimeseriesRow& row) {
   std::fputs(line.c_str(), timeseries_.get());
 }
 
+static_assert(report::kObservationBudgetColumns.size() == 5 * kBudgetTerms, "five budget columns per term");
+
 void RunRecorder::observation(const AlignmentResult& result, bool success, const std::optional<ErrorBudget>& budget) {
   const Eigen::Vector2d pointing_arcsec = result.payload_pointing_rad / core::kArcsecToRad;
   std::string line = fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{},{:.6g},{:.6g}", result.index, result.t_s, result.lateral_error_m,

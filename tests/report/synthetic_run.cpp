@@ -111,14 +111,17 @@ void SyntheticRun::write_observations() const {
   out << header << '\n';
   // Four observations spread over the science stretch; the second misses the lateral error. The
   // budget along x only: navigation 1 mm, phase centre 2 mm, geometry 3 mm, target direction 0,
-  // last burn 0.5 mm, control other the rest of the lateral error; no velocity.
+  // last burn 0.5 mm, drag prediction 0.3 mm, control other the rest of the lateral error; no
+  // velocity.
   const double start = 0.5 * duration_s_;
   const double spacing = 0.05 * duration_s_;
   const double lateral[] = {0.008, 0.031, 0.012, 0.015};
   for (int i = 0; i < 4; ++i) {
     out << fmt::format("{},{},{},{},{},{},20,25", i + 1, start + i * spacing, lateral[i], 1.1e-4 + 1e-5 * i,
                        0.004 + 0.002 * i, lateral[i] <= 0.018 ? 1 : 0);
-    for (const double x : {0.001, 0.002, 0.003, 0.0, 0.0005, lateral[i] - 0.0065}) out << fmt::format(",{},0,0,0,0", x);
+    for (const double x : {0.001, 0.002, 0.003, 0.0, 0.0005, 0.0003, lateral[i] - 0.0068}) {
+      out << fmt::format(",{},0,0,0,0", x);
+    }
     out << '\n';
   }
 }

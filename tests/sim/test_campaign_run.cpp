@@ -274,6 +274,23 @@ TEST_F(ScienceLegWithGps, ImpulsesAndRangesReachBothFilters) {
   }
 }
 
+// The attempt's error budget (sim/error_budget.hpp) in the closed loop: its seven terms, the drag
+// prediction's among them, add up to the attempt's lateral error in the detector frame.
+TEST_F(ScienceLegWithGps, ErrorBudgetTermsAddUpToTheLateralError) {
+  const nlohmann::json& o = summary_["observations"][0];
+  ASSERT_TRUE(o.contains("budget"));
+  ASSERT_EQ(o["budget"].size(), 7U);
+  ASSERT_TRUE(o["budget"].contains("drag_prediction"));
+  double x = 0.0, y = 0.0;
+  for (const auto& [term, c] : o["budget"].items()) {
+    x += c["x_m"].get<double>();
+    y += c["y_m"].get<double>();
+  }
+  // round-off of the sums of mm-level terms
+  EXPECT_NEAR(x, o["lateral_x_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(y, o["lateral_y_m"].get<double>(), 1e-9);
+}
+
 TEST_F(ScienceLegWithGps, WritesTheNavigationTimeSeries) {
   EXPECT_EQ(navigation_csv_.rfind("t_s,spacecraft,fixed,fixed_fraction,", 0), 0U);
   EXPECT_GT(std::count(navigation_csv_.begin(), navigation_csv_.end(), '\n'), 1000);

@@ -33,6 +33,7 @@ BudgetInputs random_inputs(std::uint64_t seed) {
   in.com_estimated = {in.com_true.r + random_vector(rng, 0.01), in.com_true.v + random_vector(rng, 5e-5)};
   in.lever_error = random_vector(rng, 0.005);
   in.last_burn = {random_vector(rng, 0.003), random_vector(rng, 2e-5)};
+  in.drag_prediction = {random_vector(rng, 0.004), random_vector(rng, 3e-5)};
   in.dsc_position = Eigen::Vector3d(6.9e6, 1.0e5, -2.0e5);
   return in;
 }
