@@ -56,6 +56,25 @@ TEST(DifferentialDragEstimator, RecoversAConstantAlongTrackAcceleration) {
   EXPECT_NEAR(estimator.along_track_mps2(), a_t, 1e-15);
 }
 
+// The science approach fires every 150 s in its last 15 minutes, and the drag changes meanwhile
+// (density and attitude-dependent area: a factor 3-4 over an orbit). Here a_T steps from 1e-6 to
+// 2e-6 m/s^2 at the first burn; the estimate must follow between the burns. With the former
+// 300 s baseline and 60 s settling it kept 1e-6 (no measurement fits between two burns).
+TEST(DifferentialDragEstimator, FollowsTheDragBetweenBurns150SecondsApart) {
+  DifferentialDragEstimator estimator;
+  const double n = 1.1e-3;
+  double a_da = 0.0;
+  for (int k = 0; k <= 2000; ++k) {
+    const double a_t = k < 1000 ? 1e-6 : 2e-6;
+    if (k >= 1000 && (k - 1000) % 150 == 0) estimator.maneuver(kT0 + static_cast<double>(k));
+    estimator.observe(kT0 + static_cast<double>(k), a_da, n);
+    a_da += 2.0 * a_t / n;  // GVE, one second
+  }
+  // one measurement between two burns, each weighted 0.3: 1e-6 + (1 - 0.7^6) 1e-6 = 1.88e-6
+  // after the six intervals (measured 1.8824e-6, 2026-11)
+  EXPECT_GT(estimator.along_track_mps2(), 1.8e-6);
+}
+
 // After a maneuver: settle_s of waiting, then a full baseline_s before the first measurement.
 TEST(DifferentialDragEstimator, AManeuverRestartsTheBaseline) {
   const DifferentialDragSettings settings;
