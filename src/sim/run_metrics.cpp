@@ -50,12 +50,19 @@ double payload_pointing_rad(const TruthSpacecraft& x) {
   return std::atan2(los_gcrf.cross(x.target_unit_gcrf).norm(), los_gcrf.dot(x.target_unit_gcrf));
 }
 
+// The true drag acceleration, OSC minus DSC, in the DSC's RTN axes [m/s^2].
+Eigen::Vector3d drag_difference_rtn(const TruthWorld& truth, core::GpsTime t) {
+  return core::gcrf_to_rtn_matrix(truth[0].x_gcrf) * (truth.drag_acceleration_gcrf(1, t) - truth.drag_acceleration_gcrf(0, t));
+}
+
+// The osculating orbit's angular rate |r x v| / r^2, the HCW mean motion [rad/s].
+double mean_motion_radps(const core::StateVector& x) { return x.r.cross(x.v).norm() / x.r.squaredNorm(); }
+
 // The true differential drag along the DSC's T axis (the quantity the flight software's estimator
 // measures, differential_drag_estimator.hpp) and the active spacecraft's estimate of it.
 void add_drag(const TruthWorld& truth, core::GpsTime t, const gnc::Telemetry& active, TimeseriesRow& row) {
   for (std::size_t k = 0; k < 2; ++k) row.drag_area_m2[k] = truth.drag_area_m2(k);
-  const Eigen::Vector3d difference = truth.drag_acceleration_gcrf(1, t) - truth.drag_acceleration_gcrf(0, t);
-  row.drag_t_difference_mps2 = (core::gcrf_to_rtn_matrix(truth[0].x_gcrf) * difference)(1);
+  row.drag_t_difference_mps2 = drag_difference_rtn(truth, t)(1);
   row.has_drag_estimate = active.drag_valid;
   row.drag_t_estimate_mps2 = active.differential_drag_mps2;
 }
@@ -112,7 +119,7 @@ void RunMetrics::add_impulse_error(std::size_t k, double t_s, const Eigen::Vecto
                                    const core::StateVector& dsc_gcrf) {
   const double sign = k == 1 ? 1.0 : -1.0;  // relative: OSC minus DSC
   last_burn_ = LastBurn{t_s, sign * (core::gcrf_to_rtn_matrix(dsc_gcrf) * dv_error_gcrf_mps),
-                        dsc_gcrf.r.cross(dsc_gcrf.v).norm() / dsc_gcrf.r.squaredNorm()};
+                        mean_motion_radps(dsc_gcrf)};
   drag_since_burn_.clear();
 }
 
@@ -128,9 +135,7 @@ void RunMetrics::record_drag_prediction(const TruthWorld& truth, const HostAppli
   if (!near) return;
   const gnc::Telemetry& active = host[host.active_index()].out.telemetry;
   const Eigen::Vector3d assumed_rtn(0.0, active.drag_valid ? active.differential_drag_mps2 : 0.0, 0.0);
-  const Eigen::Vector3d true_rtn =
-      core::gcrf_to_rtn_matrix(truth[0].x_gcrf) * (truth.drag_acceleration_gcrf(1, t) - truth.drag_acceleration_gcrf(0, t));
-  drag_since_burn_.push_back({t_s + 0.5 * step_s_, (true_rtn - assumed_rtn) * step_s_});
+  drag_since_burn_.push_back({t_s + 0.5 * step_s_, (drag_difference_rtn(truth, t) - assumed_rtn) * step_s_});
 }
 
 // The budget of this step's alignment sample (sim/error_budget.hpp), from the active spacecraft's
@@ -156,7 +161,7 @@ std::optional<ErrorBudget> RunMetrics::budget_at(const TruthWorld& truth, const 
     const core::StateVector response = hcw_impulse_response(last_burn_->dv_rtn_mps, last_burn_->n_radps, t_s - last_burn_->t_s);
     in.last_burn = {rtn_to_gcrf * response.r, rtn_to_gcrf * response.v};
   }
-  const double n_radps = dsc.x_gcrf.r.cross(dsc.x_gcrf.v).norm() / dsc.x_gcrf.r.squaredNorm();
+  const double n_radps = mean_motion_radps(dsc.x_gcrf);
   core::StateVector drag{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   for (const DragImpulse& d : drag_since_burn_) {
     if (d.t_s > t_s) continue;
