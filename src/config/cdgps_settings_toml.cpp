@@ -22,7 +22,7 @@ struct FlagKey {
   bool nav::CdgpsSettings::*field;
 };
 
-constexpr std::array<NumberKey, 27> kNumbers = {{
+constexpr std::array<NumberKey, 29> kNumbers = {{
     {"max_step_s", &nav::CdgpsSettings::max_step_s},
     {"empirical_tau_s", &nav::CdgpsSettings::empirical_tau_s},
     {"empirical_sigma_mps2", &nav::CdgpsSettings::empirical_sigma_mps2},
@@ -43,6 +43,8 @@ constexpr std::array<NumberKey, 27> kNumbers = {{
     {"graphic_sigma_m", &nav::CdgpsSettings::graphic_sigma_m},
     {"sdcp_sigma_m", &nav::CdgpsSettings::sdcp_sigma_m},
     {"sdcp_correlation_inflation", &nav::CdgpsSettings::sdcp_correlation_inflation},
+    {"sdcp_multipath_sigma_m", &nav::CdgpsSettings::sdcp_multipath_sigma_m},
+    {"sdcp_multipath_tau_s", &nav::CdgpsSettings::sdcp_multipath_tau_s},
     {"phase_center_turn_rate_deg_s", &nav::CdgpsSettings::phase_center_turn_rate_deg_s},
     {"phase_center_free_after_turn_s", &nav::CdgpsSettings::phase_center_free_after_turn_s},
     {"gate_sigmas", &nav::CdgpsSettings::gate_sigmas},

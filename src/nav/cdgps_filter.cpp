@@ -19,6 +19,7 @@
 #include "nav/integer_least_squares.hpp"
 #include "nav/orbit_time_update.hpp"
 #include "nav/scalar_update.hpp"
+#include "nav/sd_multipath.hpp"
 
 namespace visors::nav {
 namespace {
@@ -47,10 +48,11 @@ struct Scalar {
 
 struct CdgpsFilter::Impl {
   Impl(dynamics::ForceModel dsc, dynamics::ForceModel osc, AmbiguitySlotBank graphic_bank, AmbiguitySlotBank sdcp_bank,
-       DoubleDifferenceAmbiguities dd_, IntegerLeastSquares ils_, FixedSolutionUpdate fixer_)
+       SdMultipathStates multipath_, DoubleDifferenceAmbiguities dd_, IntegerLeastSquares ils_, FixedSolutionUpdate fixer_)
       : models{std::move(dsc), std::move(osc)},
         graphic(std::move(graphic_bank)),
         sdcp(std::move(sdcp_bank)),
+        multipath(multipath_),
         dd(std::move(dd_)),
         ils(std::move(ils_)),
         fixer(std::move(fixer_)) {}
@@ -58,6 +60,7 @@ struct CdgpsFilter::Impl {
   std::array<dynamics::ForceModel, 2> models;
   AmbiguitySlotBank graphic;
   AmbiguitySlotBank sdcp;
+  SdMultipathStates multipath;  // bank M, in step with sdcp's slots
   DoubleDifferenceAmbiguities dd;
   IntegerLeastSquares ils;
   FixedSolutionUpdate fixer;
@@ -108,9 +111,10 @@ struct CdgpsFilter::Impl {
   void select(const CdgpsEpochInput& in, Craft local, CdgpsEpochReport& report);
   void assign_slots(AmbiguitySlotBank& bank, std::array<core::GpsTime, kGpsSlots>& last_measured,
                     std::array<Scalar, kGpsSlots>& scalars, int& count, double variance, double timeout_s,
-                    CdgpsEpochReport& report);
+                    CdgpsEpochReport& report, bool with_multipath);
   void predict_scalars(Craft local);
-  void start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count, double variance);
+  void start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count, double variance,
+                         bool with_multipath);
   void follow_ephemeris_switches(Craft local, double variance, CdgpsEpochReport& report);
   double innovation(const Scalar& m) const { return m.z - (m.p.value_m + m.p.h.dot(x - x_prior)); }
   double innovations(const std::array<Scalar, kGpsSlots>& scalars, int count, std::array<double, kGpsSlots>& values) const;
@@ -135,8 +139,9 @@ core::Result<CdgpsFilter> CdgpsFilter::create(const CdgpsSettings& settings, dyn
   auto fixer = FixedSolutionUpdate::create(kNavStates, kGpsSlots);
   if (!graphic || !sdcp || !dd || !ils || !fixer) return core::Error{"", "internal capacity"};
   auto impl = std::make_unique<Impl>(std::move(dsc_model), std::move(osc_model), std::move(graphic).value(),
-                                     std::move(sdcp).value(), std::move(dd).value(), std::move(ils).value(),
-                                     std::move(fixer).value());
+                                     std::move(sdcp).value(),
+                                     SdMultipathStates(settings.sdcp_multipath_sigma_m, settings.sdcp_multipath_tau_s),
+                                     std::move(dd).value(), std::move(ils).value(), std::move(fixer).value());
   return CdgpsFilter(settings, std::move(impl));
 }
 
@@ -196,7 +201,7 @@ void CdgpsFilter::initialise(core::GpsTime t, const core::StateVector& dsc_gcrf,
   }
   for (int i = state::kGraphicAmbiguities; i < kNavStates; ++i) m.P(i, i) = AmbiguitySlotBank::kParkedVariance;
   m.graphic.release_all(m.x, m.P);
-  m.sdcp.release_all(m.x, m.P);
+  m.sdcp.release_all(m.x, m.P);  // the multipath bank is parked with it (x, P zero, parked diagonal above)
   m.lock.fill(0);
   m.x_fixed = m.x;
   m.P_fixed = m.P;
@@ -260,6 +265,7 @@ void CdgpsFilter::predict(core::GpsTime t) {
   add_empirical_noise(m.P, before, dt, settings_);
   const double graphic_q = settings_.graphic_bias_random_walk_m * settings_.graphic_bias_random_walk_m * dt;
   for (int slot : m.graphic.active_slots()) m.P(m.graphic.state_of(slot), m.graphic.state_of(slot)) += graphic_q;
+  m.multipath.propagate(m.sdcp, dt, m.x, m.P);
   m.P = (0.5 * (m.P + m.P.transpose())).eval();
   m.t = t;
   m.fixed_valid = false;  // the fixed solution was of the previous epoch
@@ -419,7 +425,7 @@ void CdgpsFilter::Impl::select(const CdgpsEpochInput& in, Craft local, CdgpsEpoc
 // initialisation), drops measurements a full bank cannot hold.
 void CdgpsFilter::Impl::assign_slots(AmbiguitySlotBank& bank, std::array<core::GpsTime, kGpsSlots>& last_measured,
                                      std::array<Scalar, kGpsSlots>& scalars, int& count, double variance,
-                                     double timeout_s, CdgpsEpochReport& report) {
+                                     double timeout_s, CdgpsEpochReport& report, bool with_multipath) {
   for (int slot : bank.active_slots()) {
     const int prn = bank.prn_of(slot);
     const bool measured = std::any_of(scalars.begin(), scalars.begin() + count, [prn](const Scalar& m) { return m.prn == prn; });
@@ -428,6 +434,7 @@ void CdgpsFilter::Impl::assign_slots(AmbiguitySlotBank& bank, std::array<core::G
       last = t;
     } else if (t.seconds_since(last) > timeout_s) {
       bank.release(slot, x, P);
+      if (with_multipath) SdMultipathStates::park(slot, x, P);
     }
   }
   int kept = 0;
@@ -460,6 +467,12 @@ void CdgpsFilter::Impl::predict_scalars(Craft local) {
     m.variance_scale = 0.5 * (scale(Craft::kOsc, m.prn) + scale(Craft::kDsc, m.prn));  // two phases
     m.sin_elevation = std::min(sin_elevation[static_cast<std::size_t>(33 * static_cast<int>(Craft::kOsc) + m.prn)],
                                sin_elevation[static_cast<std::size_t>(33 * static_cast<int>(Craft::kDsc) + m.prn)]);
+    if (multipath.enabled()) {  // z = ... + lambda N + m: the slot's multipath state (sd_multipath.hpp)
+      const int mp = SdMultipathStates::state_of(m.slot);
+      m.p.h(mp) = state::kMultipathUnit;
+      m.p.value_m += state::kMultipathUnit * x(mp);
+      multipath.set_elevation_scale(m.slot, m.variance_scale);
+    }
   }
   for (int i = 0; i < code_count; ++i) {
     Scalar& m = code_scalars[static_cast<std::size_t>(i)];
@@ -475,10 +488,12 @@ void CdgpsFilter::Impl::predict_scalars(Craft local) {
 // 200 m off, every ambiguity absorbed the 200 m with a prior of 19 m, the filter believed its
 // state and never recovered (4 runs in 20, one wrong fix).
 void CdgpsFilter::Impl::start_ambiguities(AmbiguitySlotBank& bank, std::array<Scalar, kGpsSlots>& scalars, int count,
-                                          double variance) {
+                                          double variance, bool with_multipath) {
   for (int i = 0; i < count; ++i) {
     const Scalar& m = scalars[static_cast<std::size_t>(i)];
-    if (m.reinitialise) (void)bank.reinitialise(m.slot, m.from_code, variance, x, P);
+    if (!m.reinitialise) continue;
+    (void)bank.reinitialise(m.slot, m.from_code, variance, x, P);
+    if (with_multipath) multipath.start(m.slot, x, P);
   }
 }
 
@@ -659,6 +674,7 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
       ++report.detected_slips;
       ++report.new_ambiguities;
       (void)sdcp.reinitialise(m.slot, m.from_code, std::pow(s.sdcp_ambiguity_sigma_cycles, 2), x, P);
+      multipath.start(m.slot, x, P);
       lock[static_cast<std::size_t>(m.slot)] = 0;
       r = scalar_update_lower(x, P, m.p.h, innovation(m), weight_variance, variance, s.gate_sigmas, workspace);
     }
@@ -775,12 +791,13 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.compute_ranges(in, ephemerides, frame, sin_floor, report);
   m.select(in, settings_.local, report);
   m.assign_slots(m.graphic, m.graphic_last, m.graphic_scalars, m.graphic_count,
-                 std::pow(settings_.graphic_ambiguity_sigma_m, 2), settings_.slot_timeout_s, report);
+                 std::pow(settings_.graphic_ambiguity_sigma_m, 2), settings_.slot_timeout_s, report, false);
   m.assign_slots(m.sdcp, m.sdcp_last, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2),
-                 settings_.slot_timeout_s, report);
+                 settings_.slot_timeout_s, report, true);
   m.predict_scalars(settings_.local);
-  m.start_ambiguities(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2));
-  m.start_ambiguities(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2));
+  m.start_ambiguities(m.graphic, m.graphic_scalars, m.graphic_count, std::pow(settings_.graphic_ambiguity_sigma_m, 2),
+                      false);
+  m.start_ambiguities(m.sdcp, m.sdcp_scalars, m.sdcp_count, std::pow(settings_.sdcp_ambiguity_sigma_cycles, 2), true);
   m.follow_ephemeris_switches(settings_.local, std::pow(settings_.ephemeris_switch_sigma_m, 2), report);
   const Craft remote = settings_.local == Craft::kDsc ? Craft::kOsc : Craft::kDsc;
   report.clock_jumps += m.absorb_clock_jump(m.graphic_scalars, m.graphic_count, state::clock(settings_.local),

@@ -50,6 +50,12 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   if (!(std::isfinite(s.sdcp_correlation_inflation) && s.sdcp_correlation_inflation >= 1.0)) {
     return core::Error{"sdcp_correlation_inflation", "must be a finite number >= 1"};
   }
+  if (!(std::isfinite(s.sdcp_multipath_sigma_m) && s.sdcp_multipath_sigma_m >= 0.0)) {
+    return core::Error{"sdcp_multipath_sigma_m", "must be a finite number >= 0 [m]"};
+  }
+  if (!(std::isfinite(s.sdcp_multipath_tau_s) && s.sdcp_multipath_tau_s > 0.0)) {
+    return core::Error{"sdcp_multipath_tau_s", "must be a finite number > 0 [s]"};
+  }
   if (!(s.min_float_s_before_fix >= 0.0 && s.min_float_s_before_fix <= 3600.0)) {
     return core::Error{"min_float_s_before_fix", "must be in [0, 3600] s"};
   }

@@ -105,6 +105,13 @@ struct CdgpsSettings {
   // per-epoch sdcp_sigma_m: inflating them would let a cycle slip or a wrong integer through.
   // 1: white. Default: docs/navigation-multipath.md (measured on seeds outside the acceptance set).
   double sdcp_correlation_inflation = 12.0;
+  // The SD phase's multipath as Gauss-Markov states, one per SDCP slot (nav/sd_multipath.hpp):
+  // the SD's steady-state sigma at both antennas' zenith [m] (grown as 1 / sin(elevation) with the
+  // elevation weighting) and its correlation time [s]. 0: no states (the multipath is then part of
+  // the white sdcp_sigma_m, weighed with sdcp_correlation_inflation). With the states,
+  // sdcp_sigma_m is the white part alone and the inflation should be 1.
+  double sdcp_multipath_sigma_m = 0.0;
+  double sdcp_multipath_tau_s = 60.0;
   double gate_sigmas = 5.0;                // scalar innovation gate [innovation sigmas]
   // The SD code (nav/gps_measurement_model.hpp) of the satellites both receivers track, averaged
   // into one scalar per epoch: it ties the clock difference to the codes at every epoch. Without

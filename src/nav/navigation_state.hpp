@@ -1,10 +1,11 @@
 #pragma once
 // The state of the carrier-phase differential GPS navigation filter that each spacecraft runs on
-// board, estimating both (mission paper sec. 4.2; navigation digest sec. 5.1): 74 states in a
-// fixed layout, the same on both spacecraft, DSC block first:
+// board, estimating both (mission paper sec. 4.2; navigation digest sec. 5.1, extended by the
+// multipath bank M): 98 states in a fixed layout, the same on both spacecraft, DSC block first:
 //
 //   [ DSC: r(3) v(3) a_emp(3) c dt(1) p(3) | OSC: r(3) v(3) a_emp(3) c dt(1) p(3) |
-//     B(24): the local receiver's GRAPHIC ambiguities | N(24): SDCP ambiguities, OSC minus DSC ]
+//     B(24): the local receiver's GRAPHIC ambiguities | N(24): SDCP ambiguities, OSC minus DSC |
+//     M(24): SD carrier multipath, OSC minus DSC, one per N slot ]
 //
 // r, v: centre of mass, GCRF, at the filter epoch (the GPS time tag of the measurements);
 // a_emp: empirical acceleration, first-order Gauss-Markov, in the spacecraft's RTN frame;
@@ -12,12 +13,14 @@
 // B: GRAPHIC ambiguity of a satellite tracked by the local receiver (half the phase ambiguity);
 // N: single-difference phase ambiguity of a satellite tracked by both receivers (not an integer:
 // the receivers' phase offsets remain; only double differences are, nav/double_difference.hpp).
+// M: the SD phase's multipath of the satellite in the same N slot, first-order Gauss-Markov
+// (nav/sd_multipath.hpp); parked with its slot.
 // Ambiguity slots are assigned to satellites as they rise, set and slip (nav/ambiguity_slots.hpp).
 //
 // Units: chosen so the diagonal of P spans less than ~1e10 from a converged relative solution to
 // the priors (digest sec. 5.1: in SI it spans 1e-16 (m/s^2)^2 to 1e4 m^2, beyond double
 // precision's reach in the Joseph products): velocity in mm/s, empirical acceleration in um/s^2,
-// phase-centre offset error in mm; positions, clocks and B in m, N in cycles. to_si() / from_si()
+// phase-centre offset error and multipath in mm; positions, clocks and B in m, N in cycles. to_si() / from_si()
 // convert at the filter's edges; measurement partials and transitions are scaled by unit().
 
 #include <Eigen/Core>
@@ -26,7 +29,7 @@ namespace visors::nav {
 
 inline constexpr int kGpsSlots = 24;          // ambiguity slots per bank (GRAPHIC, SDCP)
 inline constexpr int kSpacecraftStates = 13;  // r, v, a_emp, c dt, p
-inline constexpr int kNavStates = 2 * kSpacecraftStates + 2 * kGpsSlots;  // 74
+inline constexpr int kNavStates = 2 * kSpacecraftStates + 3 * kGpsSlots;  // 98
 
 /// The two spacecraft, in the order of their blocks (conventions: DSC = chief, OSC = deputy).
 enum class Craft { kDsc = 0, kOsc = 1 };
@@ -40,10 +43,12 @@ constexpr int clock(Craft c) { return block(c) + 9; }                 // 1 state
 constexpr int phase_center(Craft c) { return block(c) + 10; }         // 3 states, body [mm]
 inline constexpr int kGraphicAmbiguities = 2 * kSpacecraftStates;     // 24 states [m]
 inline constexpr int kSdcpAmbiguities = kGraphicAmbiguities + kGpsSlots;  // 24 states [cycles]
+inline constexpr int kSdMultipath = kSdcpAmbiguities + kGpsSlots;        // 24 states [mm]
 
 inline constexpr double kVelocityUnit = 1e-3;     // [m/s] per state unit
 inline constexpr double kEmpiricalUnit = 1e-6;    // [m/s^2] per state unit
 inline constexpr double kPhaseCenterUnit = 1e-3;  // [m] per state unit
+inline constexpr double kMultipathUnit = 1e-3;    // [m] per state unit
 }  // namespace state
 
 using NavVector = Eigen::Matrix<double, kNavStates, 1>;

@@ -65,7 +65,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CdgpsSettings, local, max_step_s, empirical_t
                                    phase_center_consider_between_turns, phase_center_turn_rate_deg_s, phase_center_free_after_turn_s,
                                    phase_center_boresight_estimated,
                                    graphic_ambiguity_sigma_m, sdcp_ambiguity_sigma_cycles, slot_timeout_s,
-                                   graphic_sigma_m, sdcp_sigma_m, sdcp_correlation_inflation, gate_sigmas, sd_code, sd_code_sigma_m,
+                                   graphic_sigma_m, sdcp_sigma_m, sdcp_correlation_inflation,
+                                   sdcp_multipath_sigma_m, sdcp_multipath_tau_s, gate_sigmas, sd_code, sd_code_sigma_m,
                                    elevation_weighting, min_weighting_elevation_deg, min_fix_elevation_deg, ambiguity_resolution,
                                    min_float_s_before_fix, acceptance, hold, hold_variance_cycles2)
 }  // namespace visors::nav

@@ -1,5 +1,5 @@
 // Ambiguity slots (navigation digest sec. 5.4, 5.7-4): the bank's rules one at a time, then the
-// fixed-size filter (AmbiguitySlotBank x 2 + scalar_update, 74 states) against a reference filter
+// fixed-size filter (AmbiguitySlotBank x 2 + scalar_update, 98 states, the multipath bank M parked) against a reference filter
 // that physically resizes its matrices (std::vector + Eigen::MatrixXd holding the 26 core states
 // plus one state per tracked satellite; rows and columns inserted when a satellite rises, deleted
 // when it sets; dense textbook batch update), driven by the same scripted and random sequences.
@@ -34,7 +34,7 @@ using Eigen::RowVectorXd;
 using Eigen::VectorXd;
 
 constexpr int kCore = state::kGraphicAmbiguities;  // the 26 states before the banks
-constexpr int kBankStates = kNavStates - kCore;   // 48
+constexpr int kBankStates = kNavStates - kCore;   // 72: B, N and the multipath bank (parked here)
 
 // ---------------------------------------------------------------------------------------------
 // The bank's rules.
@@ -483,6 +483,7 @@ class Twin {
     fixed_.x.head<kCore>() = x_core;
     fixed_.P.topLeftCorner<kCore, kCore>() = P_core;
     for (AmbiguitySlotBank& bank : fixed_.banks) bank.release_all(fixed_.x, fixed_.P);
+    for (int i = state::kSdMultipath; i < kNavStates; ++i) fixed_.P(i, i) = AmbiguitySlotBank::kParkedVariance;
   }
 
   int rise(Key key, double value, double variance) {
@@ -580,7 +581,7 @@ void Twin::check(int epoch) {
     }
   }
   findings_.x_relative = std::max(findings_.x_relative, dx_max / x.cwiseAbs().maxCoeff());
-  // The rest of the 74-state layout, independently of consistent(): what a deleted state leaves,
+  // The rest of the 98-state layout, independently of consistent(): what a deleted state leaves,
   // x = 0, P = 0 but the parked diagonal.
   std::array<bool, kNavStates> in_subset{};
   for (const int a : to_fixed) in_subset[a] = true;

@@ -1,4 +1,5 @@
-// The filter's state layout (navigation digest sec. 5.1: 13 + 13 + 24 + 24 = 74) and its units.
+// The filter's state layout (navigation digest sec. 5.1: 13 + 13 + 24 + 24 = 74, plus the 24 SD
+// multipath states of nav/sd_multipath.hpp: 98) and its units.
 #include <gtest/gtest.h>
 
 #include "nav/navigation_state.hpp"
@@ -6,11 +7,15 @@
 namespace visors::nav {
 namespace {
 
-TEST(NavigationState, HasTheDigestsSeventyFourStates) { EXPECT_EQ(kNavStates, 74); }
+TEST(NavigationState, HasTheDigestsSeventyFourStatesPlusTheMultipathBank) { EXPECT_EQ(kNavStates, 74 + 24); }
 
 TEST(NavigationState, OscBlockFollowsTheDscBlock) { EXPECT_EQ(state::position(Craft::kOsc), 13); }
 
-TEST(NavigationState, SdcpBankIsLast) { EXPECT_EQ(state::kSdcpAmbiguities + kGpsSlots, kNavStates); }
+TEST(NavigationState, MultipathBankFollowsTheSdcpBank) { EXPECT_EQ(state::kSdcpAmbiguities + kGpsSlots, state::kSdMultipath); }
+
+TEST(NavigationState, MultipathBankIsLast) { EXPECT_EQ(state::kSdMultipath + kGpsSlots, kNavStates); }
+
+TEST(NavigationState, MultipathInMillimetres) { EXPECT_EQ(unit(state::kSdMultipath + 5), 1e-3); }
 
 TEST(NavigationState, VelocityInMillimetresPerSecond) { EXPECT_EQ(unit(state::velocity(Craft::kOsc) + 2), 1e-3); }
 
@@ -21,7 +26,7 @@ TEST(NavigationState, EmpiricalAccelerationInMicrometresPerSecondSquared) {
 TEST(NavigationState, PhaseCentreInMillimetres) { EXPECT_EQ(unit(state::phase_center(Craft::kOsc) + 1), 1e-3); }
 
 TEST(NavigationState, ClockAndAmbiguitiesUnscaled) {
-  EXPECT_EQ(unit(state::clock(Craft::kOsc)) + unit(state::kGraphicAmbiguities) + unit(kNavStates - 1), 3.0);
+  EXPECT_EQ(unit(state::clock(Craft::kOsc)) + unit(state::kGraphicAmbiguities) + unit(state::kSdMultipath - 1), 3.0);
 }
 
 }  // namespace
