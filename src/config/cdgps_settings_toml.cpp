@@ -22,10 +22,11 @@ struct FlagKey {
   bool nav::CdgpsSettings::*field;
 };
 
-constexpr std::array<NumberKey, 29> kNumbers = {{
+constexpr std::array<NumberKey, 30> kNumbers = {{
     {"max_step_s", &nav::CdgpsSettings::max_step_s},
     {"empirical_tau_s", &nav::CdgpsSettings::empirical_tau_s},
     {"empirical_sigma_mps2", &nav::CdgpsSettings::empirical_sigma_mps2},
+    {"empirical_along_track_sigma_mps2", &nav::CdgpsSettings::empirical_along_track_sigma_mps2},
     {"empirical_common_sigma_mps2", &nav::CdgpsSettings::empirical_common_sigma_mps2},
     {"clock_random_walk_m", &nav::CdgpsSettings::clock_random_walk_m},
     {"impulse_magnitude_sigma", &nav::CdgpsSettings::impulse_magnitude_sigma},

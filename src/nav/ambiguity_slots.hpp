@@ -1,5 +1,5 @@
 #pragma once
-// A bank of ambiguity slots in the navigation filter's fixed 74-state layout (navigation digest
+// A bank of ambiguity slots in the navigation filter's fixed 98-state layout (navigation digest
 // sec. 5.4): kGpsSlots consecutive states (the GRAPHIC bank B or the SDCP bank N,
 // navigation_state.hpp) lent to GPS satellites while they are tracked. Fixed storage, a PRN ->
 // slot map and an active mask: the matrix sizes never change and nothing is allocated, where a

@@ -44,6 +44,12 @@ struct Scalar {
   MeasurementPrediction p;
 };
 
+// The own part of the empirical accelerations' steady-state sigma on RTN axis `axis`
+// (cdgps_settings.hpp) [m/s^2].
+double own_sigma(const CdgpsSettings& s, int axis) {
+  return axis == 1 && s.empirical_along_track_sigma_mps2 >= 0.0 ? s.empirical_along_track_sigma_mps2 : s.empirical_sigma_mps2;
+}
+
 }  // namespace
 
 struct CdgpsFilter::Impl {
@@ -190,7 +196,7 @@ void CdgpsFilter::initialise(core::GpsTime t, const core::StateVector& dsc_gcrf,
     for (int i = 0; i < 3; ++i) {
       variance(state::position(c) + i, s.position_sigma_m);
       variance(state::velocity(c) + i, s.velocity_sigma_mps);
-      variance(state::empirical_acceleration(c) + i, std::hypot(s.empirical_common_sigma_mps2, s.empirical_sigma_mps2));
+      variance(state::empirical_acceleration(c) + i, std::hypot(s.empirical_common_sigma_mps2, own_sigma(s, i)));
       variance(state::phase_center(c) + i, s.phase_center_sigma_m);
     }
     variance(state::clock(c), s.clock_sigma_m);
@@ -231,6 +237,11 @@ static void transition_dynamic_block(NavMatrix& P, Craft c, const core::StateVec
 static void add_empirical_noise(NavMatrix& P, const std::array<core::StateVector, 2>& x0, double dt, const CdgpsSettings& s) {
   const Eigen::Matrix3d q_common = gauss_markov_chain(dt, s.empirical_tau_s, s.empirical_common_sigma_mps2).noise;
   const Eigen::Matrix3d q_own = gauss_markov_chain(dt, s.empirical_tau_s, s.empirical_sigma_mps2).noise;
+  // An along-track own sigma of its own adds (q_T - q_own) along each spacecraft's T axis.
+  const bool along_track = s.empirical_along_track_sigma_mps2 >= 0.0;
+  const Eigen::Matrix3d q_along =
+      along_track ? Eigen::Matrix3d(gauss_markov_chain(dt, s.empirical_tau_s, own_sigma(s, 1)).noise - q_own)
+                  : Eigen::Matrix3d::Zero();
   std::array<std::array<Eigen::Matrix3d, 3>, 2> frames;
   for (int k = 0; k < 2; ++k) {
     const Eigen::Matrix3d R = core::gcrf_to_rtn_matrix(x0[static_cast<std::size_t>(k)]).transpose();
@@ -240,11 +251,17 @@ static void add_empirical_noise(NavMatrix& P, const std::array<core::StateVector
     for (int b = 0; b < 2; ++b) {
       const Eigen::Matrix3d q = a == b ? Eigen::Matrix3d(q_common + q_own) : q_common;
       const int row = state::position(kCrafts[a]), col = state::position(kCrafts[b]);
+      const auto& Fa = frames[static_cast<std::size_t>(a)];
+      const auto& Fb = frames[static_cast<std::size_t>(b)];
       for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
-          P.block<3, 3>(row + 3 * i, col + 3 * j) += q(i, j) / (unit(row + 3 * i) * unit(col + 3 * j)) *
-                                                      frames[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)] *
-                                                      frames[static_cast<std::size_t>(b)][static_cast<std::size_t>(j)].transpose();
+          const double units = unit(row + 3 * i) * unit(col + 3 * j);
+          P.block<3, 3>(row + 3 * i, col + 3 * j) +=
+              q(i, j) / units * Fa[static_cast<std::size_t>(i)] * Fb[static_cast<std::size_t>(j)].transpose();
+          if (along_track && a == b) {
+            const Eigen::Vector3d ti = Fa[static_cast<std::size_t>(i)].col(1), tj = Fb[static_cast<std::size_t>(j)].col(1);
+            P.block<3, 3>(row + 3 * i, col + 3 * j) += q_along(i, j) / units * ti * tj.transpose();
+          }
         }
       }
     }

@@ -1,7 +1,7 @@
 #pragma once
 // The carrier-phase differential GPS navigation filter each spacecraft runs on board (mission
 // paper sec. 4.2; navigation digest sec. 5-6): one extended Kalman filter estimating both
-// spacecraft (nav/navigation_state.hpp: 74 states), from the local receiver's GRAPHIC and the
+// spacecraft (nav/navigation_state.hpp: 98 states), from the local receiver's GRAPHIC and the
 // SDCP of the satellites both receivers track (the remote receiver's phase comes over the
 // crosslink), with integer ambiguity resolution on the double differences of the SDCP
 // ambiguities.

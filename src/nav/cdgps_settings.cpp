@@ -18,6 +18,11 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_common_sigma_mps2)) {
     return core::Error{"empirical_common_sigma_mps2", e->message};
   }
+  if (s.empirical_along_track_sigma_mps2 >= 0.0 || std::isnan(s.empirical_along_track_sigma_mps2)) {
+    if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_along_track_sigma_mps2)) {
+      return core::Error{"empirical_along_track_sigma_mps2", e->message};
+    }
+  }
   const struct {
     const char* field;
     double value;

@@ -30,6 +30,9 @@ struct CdgpsSettings {
   // epochs, 0.63 -> 0.68 mm (scripts/nav_seeds.sh).
   double empirical_common_sigma_mps2 = 5e-7;
   double empirical_sigma_mps2 = 1e-7;
+  // The own part's along-track axis [m/s^2], when it differs from the others (the differential
+  // drag is along-track: docs/navigation-multipath.md); negative: empirical_sigma_mps2.
+  double empirical_along_track_sigma_mps2 = -1.0;
   double clock_random_walk_m = 10.0;       // receiver clock random walk, per sqrt(s) [m/sqrt(s)]
   // Random walk of each GRAPHIC bias [m/sqrt(s)]: the broadcast orbit and clock errors along a
   // line of sight change over a pass (the line of sight turns by ~0.3 rad in 30 min), which a

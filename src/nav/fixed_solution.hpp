@@ -13,7 +13,7 @@
 // since K = P C' L^-T L^-1. P - W' W is the symmetric form of P - K C P (one triangular solve, the
 // subtracted term symmetric positive semidefinite by construction), computed on the lower
 // triangle and mirrored: P+ is exactly symmetric. Only the columns of C with a non-zero entry
-// enter C P and C x (a fix touches the ambiguity states only: 24 of the filter's 74). This is the "simple" form the digest's conditional update uses, not the
+// enter C P and C x (a fix touches the ambiguity states only: 24 of the filter's 98). This is the "simple" form the digest's conditional update uses, not the
 // Joseph form: with s = 0 the Joseph form (I - K C) P (I - K C)' equals it only when K is the
 // optimal gain, and it costs two n_x^3 products per update; the symmetric downdate keeps P+
 // symmetric, and its positive semidefiniteness is tested (tests/nav/test_fixed_solution.cpp).

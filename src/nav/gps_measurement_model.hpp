@@ -1,5 +1,5 @@
 #pragma once
-// The filter's two GPS measurements as functions of its 74 states (navigation digest sec. 4.3,
+// The filter's two GPS measurements as functions of its 98 states (navigation digest sec. 4.3,
 // 5.3), built from the range predictions of nav/gps_range_model.hpp:
 //
 //   GRAPHIC of the local receiver k, satellite j (half the sum of code and phase: ionosphere-free

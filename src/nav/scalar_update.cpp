@@ -20,7 +20,7 @@ void joseph_rank_one_lower(NavMatrix& P, const NavRow& h, const NavVector& k, do
   }
 }
 
-// u = P h' over the non-zero entries of h only: a GPS scalar touches ~20 of the 74 states
+// u = P h' over the non-zero entries of h only: a GPS scalar touches ~20 of the 98 states
 // (positions, clocks, phase centres, one or two ambiguities), so the product is a sum of ~20
 // columns of P instead of the whole matrix-vector product. Reads the lower triangle only: column
 // i of the symmetric P is P(i:, i) below the diagonal and row P(i, :i) above it.

@@ -17,7 +17,7 @@
 //   w  = M h'               = u - (h u) k
 //   P+ = M (I - k h)' + r k k' = M - (w - r k) k'
 // as one symmetric rank-two change over the lower triangle, mirrored (exactly symmetric): about
-// n^2 multiply-adds, and u over the non-zero entries of h only (~20 of 74 for a GPS scalar).
+// n^2 multiply-adds, and u over the non-zero entries of h only (~20 of 98 for a GPS scalar).
 //
 // Gate: the update is applied only when |nu| <= gate_sigmas sqrt(s) (digest sec. 5.3: k ~ 4-5,
 // the SDCP cycle-slip detector); otherwise x and P are untouched and the normalised innovation is
@@ -48,7 +48,7 @@ struct ScalarUpdateResult {
   double normalised_innovation_squared = 0.0;  // nu^2 / s: the NIS, chi-square(1) when consistent
 };
 
-/// Work vectors of scalar_update, preallocated by the caller (fixed size, 2 x 74 doubles).
+/// Work vectors of scalar_update, preallocated by the caller (fixed size, 2 x 98 doubles).
 struct ScalarUpdateWorkspace {
   NavVector ph;    // P h', then (I - k h) P h' - r k
   NavVector gain;  // k = P h' / s

@@ -59,7 +59,7 @@ NLOHMANN_JSON_SERIALIZE_ENUM(AcceptanceRule, {{AcceptanceRule::kSuccessRate, "su
                                               {AcceptanceRule::kSuccessRateAndRatio, "success_rate_and_ratio"}})
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AcceptanceSettings, rule, min_success_rate, min_ratio, partial, min_partial)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CdgpsSettings, local, max_step_s, empirical_tau_s, empirical_common_sigma_mps2,
-                                   empirical_sigma_mps2, clock_random_walk_m, graphic_bias_random_walk_m,
+                                   empirical_sigma_mps2, empirical_along_track_sigma_mps2, clock_random_walk_m, graphic_bias_random_walk_m,
                                    ephemeris_switch_sigma_m, impulse_magnitude_sigma, impulse_direction_sigma_deg,
                                    position_sigma_m, velocity_sigma_mps, clock_sigma_m, phase_center_sigma_m,
                                    phase_center_consider_between_turns, phase_center_turn_rate_deg_s, phase_center_free_after_turn_s,

@@ -459,6 +459,31 @@ CdgpsFilter initialised_filter(const Simulation& sim) {
   return filter;
 }
 
+// The DSC's empirical acceleration variances (RTN states, [um/s^2]^2) 60 s after initialisation,
+// with the own part's along-track sigma at `along_track` (negative: the other axes').
+Eigen::Vector3d empirical_variances_after_a_minute(double along_track) {
+  const Simulation sim;
+  CdgpsSettings settings;
+  settings.empirical_along_track_sigma_mps2 = along_track;
+  auto filter = CdgpsFilter::create(settings, model(), model()).value();
+  filter.initialise(epoch(), sim.rx[0].x, sim.rx[1].x, sim.rx[0].clock_m, sim.rx[1].clock_m);
+  filter.predict(epoch() + 60.0);
+  const int a = state::empirical_acceleration(Craft::kDsc);
+  return filter.P().block<3, 3>(a, a).diagonal();
+}
+
+// An along-track sigma of its own (the differential drag's axis) widens the along-track
+// empirical acceleration only. A first-order Gauss-Markov process started at its steady state
+// stays there: hypot(5e-7, 1e-6)^2 = 1.25 um^2/s^4 along-track, the default's hypot(5e-7,
+// 1e-7)^2 = 0.26 on the other axes.
+TEST(CdgpsFilterEmpirical, AnAlongTrackSigmaWidensTheAlongTrackAcceleration) {
+  EXPECT_NEAR(empirical_variances_after_a_minute(1e-6)(1), 1.25, 1e-9);
+}
+
+TEST(CdgpsFilterEmpirical, AnAlongTrackSigmaLeavesTheRadialAcceleration) {
+  EXPECT_NEAR(empirical_variances_after_a_minute(1e-6)(0), 0.26, 1e-9);
+}
+
 // Refusals name their reason and change nothing.
 TEST(CdgpsFilterInput, RefusesAnEpochBeforeInitialisation) {
   auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
@@ -520,6 +545,12 @@ TEST(CdgpsSettings, NameTheGraphicBiasRandomWalk) {
   CdgpsSettings s;
   s.graphic_bias_random_walk_m = -1e-3;
   EXPECT_EQ(check(s)->field, "graphic_bias_random_walk_m");
+}
+
+TEST(CdgpsSettings, NameTheAlongTrackEmpiricalSigma) {
+  CdgpsSettings s;
+  s.empirical_along_track_sigma_mps2 = std::nan("");
+  EXPECT_EQ(check(s)->field, "empirical_along_track_sigma_mps2");
 }
 
 TEST(CdgpsSettings, NameTheMultipathSigma) {

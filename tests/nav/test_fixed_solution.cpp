@@ -128,7 +128,7 @@ TEST(FixedSolution, ExactUpdateLeavesNoVarianceAlongTheConstraints) {
 }
 
 // Constraints on a middle block of states only, like an ambiguity fix (the filter's C has
-// entries in its 24 SDCP ambiguity columns of 74): the update restricted to C's non-zero columns
+// entries in its 24 SDCP ambiguity columns of 98): the update restricted to C's non-zero columns
 // must still give the whole conditional, including the states C does not touch.
 Problem block_problem(std::uint64_t seed) {
   Problem p = random_problem(12, 3, seed);

@@ -1,6 +1,6 @@
 // GRAPHIC and SDCP rows of the filter (nav/gps_measurement_model.hpp) against central differences
 // of the whole prediction chain (state -> SI receiver estimate -> range model -> measurement) in
-// every one of the 74 scaled states (navigation digest sec. 5.7-2), and their values against the
+// every one of the 98 scaled states (navigation digest sec. 5.7-2), and their values against the
 // observation equations of digest sec. 4.3 written out here.
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // acceptance, on 24-ambiguity dual-frequency problems and on the capacity-sized 64; and around the
 // SD -> DD transformation, the fixed constraints and the fixed-solution update of a filter of
 // 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2); around the Gauss-Markov
-// chain (transition and process noise of the empirical accelerations); and around the 74-state
+// chain (transition and process noise of the empirical accelerations); and around the 98-state
 // navigation filter's ambiguity slots (acquire, reinitialise, release, checks), its scalar
 // Joseph update (accepted, gated, refused) and its whole epoch (CdgpsFilter predict + update).
 #include <gtest/gtest.h>
@@ -205,7 +205,7 @@ TEST(NavAllocation, GaussMarkovChainAllocatesNothing) {
             0);
 }
 
-// The 74-state filter, built (heap) before counting.
+// The 98-state filter, built (heap) before counting.
 struct NavFilter {
   NavVector x = NavVector::Zero();
   NavMatrix P = NavMatrix::Identity();
@@ -261,7 +261,7 @@ TEST(NavAllocation, ScalarUpdateAllocatesNothing) {
 // The navigation filter's epoch (time update, slot management, GRAPHIC, SD code and SDCP updates, integer
 // resolution, fixed solution, hold) on the synthetic constellation (support/synthetic_gps.hpp),
 // after a warm-up that fixes the integers: nothing allocated.
-TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) {
+void expect_cdgps_epoch_allocates_nothing(const CdgpsSettings& settings) {
   const core::GpsTime t0 = core::GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kGps).value();
   const auto records = test::synthetic_constellation(t0);
   const auto ephemerides = gnss::EphemerisSet::screen(records);
@@ -271,7 +271,7 @@ TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) {
     data.gravity_field = dynamics::embedded_gravity_field();
     return dynamics::ForceModel::create(dynamics::ForceModelConfig::gravity_only(8, 8), {}, std::move(data)).value();
   };
-  auto filter = CdgpsFilter::create(CdgpsSettings{}, model(), model()).value();
+  auto filter = CdgpsFilter::create(settings, model(), model()).value();
   const double r = 6878137.0, v = std::sqrt(3.986004415e14 / r);
   const core::StateVector dsc{Eigen::Vector3d(r, 0, 0), Eigen::Vector3d(0, v * 0.13, v * 0.99)};
   const core::StateVector osc{dsc.r + Eigen::Vector3d(0, 0, 40), dsc.v};
@@ -307,6 +307,16 @@ TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) {
             }),
             0);
   EXPECT_NE(ahead, filter.x());
+}
+
+TEST(NavAllocation, CdgpsFilterEpochAllocatesNothing) { expect_cdgps_epoch_allocates_nothing(CdgpsSettings{}); }
+
+// With the SD multipath states and an along-track empirical sigma of its own.
+TEST(NavAllocation, CdgpsFilterEpochWithMultipathStatesAllocatesNothing) {
+  CdgpsSettings settings;
+  settings.sdcp_multipath_sigma_m = 0.00283;
+  settings.empirical_along_track_sigma_mps2 = 1e-6;
+  expect_cdgps_epoch_allocates_nothing(settings);
 }
 
 }  // namespace
