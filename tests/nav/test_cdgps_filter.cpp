@@ -175,7 +175,9 @@ RunOutcome simulate(int epochs, int slip_epoch = -1, const Impulse& impulse = {}
   CdgpsSettings settings;
   settings.elevation_weighting = false;  // this simulation's noise does not depend on the elevation
   settings.min_fix_elevation_deg = 0.0;   // ... nor has multipath
+  settings.sdcp_multipath_sigma_m = 0.0;      // (unless `multipath` below adds it)
   settings.sdcp_correlation_inflation = 1.0;  // white: each epoch independent
+  settings.empirical_along_track_sigma_mps2 = -1.0;  // no drag here: the own part the same on every axis
   settings.position_sigma_m = std::max(settings.position_sigma_m, 1.5 * start.scale * 6.0);
   settings.sd_code = remote.sd_code;
   settings.graphic_sigma_m = 0.1;  // no broadcast error here: (0.2 m code + 2 mm phase) / 2
@@ -620,6 +622,7 @@ VelocityVariances after_ten_minutes(double common_sigma) {
   Simulation sim;
   CdgpsSettings settings;
   settings.empirical_common_sigma_mps2 = common_sigma;
+  settings.empirical_along_track_sigma_mps2 = -1.0;  // the own part the same on every axis
   settings.position_sigma_m = 1e-4;  // the priors below the process noise's ten minutes
   settings.velocity_sigma_mps = 1e-7;
   auto filter = CdgpsFilter::create(settings, model(), model()).value();

@@ -229,6 +229,7 @@ class ScienceLegWithGps : public ::testing::Test {
     text.replace(text.find("mode = \"ideal\""), 14, "mode = \"cdgps\"");
     auto scenario = campaign_from_toml(text).value();
     visors::test::use_white_receiver(scenario.gnss.receiver);  // the plumbing's figures: white noise
+    visors::test::tell_the_filter_white(scenario);
     auto result = run_campaign(scenario, dir_);
     ASSERT_TRUE(result.ok()) << result.error().describe();
     summary_ = result->summary;

@@ -37,6 +37,7 @@ FaultRun run(const std::string& name) {
   auto scenario = parsed.value();
   // The FDIR's figures under white receiver noise: the real sky's navigation is measured apart.
   visors::test::use_white_receiver(scenario.gnss.receiver);
+  visors::test::tell_the_filter_white(scenario);
   const auto dir = std::filesystem::temp_directory_path() / ("visors_fault_" + std::to_string(::getpid()) + "_" + name);
   const auto result = run_campaign(scenario, dir);
   EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().describe());

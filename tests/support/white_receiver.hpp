@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sim/campaign_scenario.hpp"
 #include "sim/gps_receiver.hpp"
 
 namespace visors::test {
@@ -17,6 +18,14 @@ inline void use_white_receiver(sim::GpsReceiverSettings& receiver) {
   receiver.elevation_dependent_noise = false;
   receiver.code_multipath_m = 0.0;
   receiver.phase_multipath_m = 0.0;
+}
+
+/// What a flight team that knows its receiver white tells its filter (a scenario without a [nav]
+/// table): no multipath states, which the flight defaults give for the real sky's multipath
+/// (nav/cdgps_settings.hpp).
+inline void tell_the_filter_white(sim::CampaignScenario& scenario) {
+  EXPECT_TRUE(scenario.nav_toml.empty()) << scenario.nav_toml;
+  scenario.nav_toml = "[nav]\nsdcp_multipath_sigma_m = 0.0\n";
 }
 
 /// The same as a [gnss.receiver] table (for scenario texts without one).
