@@ -27,7 +27,8 @@
 //    missed: its slot is reinitialised and the measurement processed again (it then only sets the
 //    new ambiguity); a rejected GRAPHIC is a code outlier and is dropped. An SDCP is weighed by
 //    its per-epoch variance times sdcp_correlation_inflation (correlated multipath) and gated on
-//    the per-epoch variance alone. The phase-centre states have a gain only along the body axes
+//    the per-epoch variance alone; its row has +1 on its slot's SD multipath state (started with
+//    the ambiguity, parked with the slot: nav/sd_multipath.hpp). The phase-centre states have a gain only along the body axes
 //    an attitude turn has just exposed; otherwise they are consider states
 //    (docs/phase-centre-estimation.md).
 // 3. Integer ambiguity resolution: the SDCP slots updated this epoch (of the satellites above
@@ -45,7 +46,8 @@
 // Time update: the mean of each spacecraft by RK4 under its on-board force model plus the
 // empirical acceleration (nav/orbit_time_update.hpp); the covariance with the short-step
 // transition and the Gauss-Markov noise of the empirical acceleration (nav/gauss_markov.hpp), a
-// random-walk receiver clock; phase-centre errors and ambiguities constant.
+// random-walk receiver clock; phase-centre errors and ambiguities constant; the SD multipath
+// states first-order Gauss-Markov.
 //
 // Allocation-free after create(); no exception; inputs checked (nav/gps_observations.hpp) and a
 // bad epoch refused with its reason in the report.
