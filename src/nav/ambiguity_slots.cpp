@@ -42,12 +42,15 @@ int AmbiguitySlotBank::prn_of(int slot) const { return active(slot) ? prn_of_slo
 
 // x(s) = value, P(s, s) = variance, the rest of row and column s zero: the state is independent
 // of all others (digest sec. 5.4, "zero the cross-covariances"), or parked when released.
+void AmbiguitySlotBank::set_independent(int state, double value, double variance, NavVector& x, NavMatrix& P) {
+  P.row(state).setZero();
+  P.col(state).setZero();
+  P(state, state) = variance;
+  x(state) = value;
+}
+
 void AmbiguitySlotBank::set_state(int slot, double value, double variance, NavVector& x, NavMatrix& P) const {
-  const int s = first_state_ + slot;
-  P.row(s).setZero();
-  P.col(s).setZero();
-  P(s, s) = variance;
-  x(s) = value;
+  set_independent(first_state_ + slot, value, variance, x, P);
 }
 
 int AmbiguitySlotBank::acquire(int prn, double value, double variance, NavVector& x, NavMatrix& P) {

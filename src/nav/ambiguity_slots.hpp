@@ -104,6 +104,11 @@ class AmbiguitySlotBank {
   /// bank: inactive slots must not be measured (they would stop being independent of the rest).
   [[nodiscard]] bool row_on_active_only(const NavRow& h) const;
 
+  /// x(state) = value, P(state, state) = variance, the rest of its row and column zero: a state
+  /// independent of all others (a slot's start, or parked). Shared with the banks that follow
+  /// these slots (nav/sd_multipath.hpp).
+  static void set_independent(int state, double value, double variance, NavVector& x, NavMatrix& P);
+
   /// The bank's invariants on (x, P): every inactive slot has x = 0, P(s, s) = kParkedVariance
   /// and a zero row and column otherwise; every active slot has a finite x and a finite positive
   /// diagonal; the PRN map and the mask agree both ways.

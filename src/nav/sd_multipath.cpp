@@ -15,19 +15,11 @@ double SdMultipathStates::steady_variance_units(int slot) const {
 
 void SdMultipathStates::start(int slot, NavVector& x, NavMatrix& P) const {
   if (!enabled()) return;
-  const int s = state_of(slot);
-  P.row(s).setZero();
-  P.col(s).setZero();
-  P(s, s) = steady_variance_units(slot);
-  x(s) = 0.0;
+  AmbiguitySlotBank::set_independent(state_of(slot), 0.0, steady_variance_units(slot), x, P);
 }
 
 void SdMultipathStates::park(int slot, NavVector& x, NavMatrix& P) {
-  const int s = state_of(slot);
-  P.row(s).setZero();
-  P.col(s).setZero();
-  P(s, s) = AmbiguitySlotBank::kParkedVariance;
-  x(s) = 0.0;
+  AmbiguitySlotBank::set_independent(state_of(slot), 0.0, AmbiguitySlotBank::kParkedVariance, x, P);
 }
 
 void SdMultipathStates::propagate(const AmbiguitySlotBank& sdcp, double dt, NavVector& x, NavMatrix& P) const {
