@@ -89,6 +89,12 @@ GaussMarkovChain gauss_markov_chain(double dt, double tau, double sigma) {
   return chain;
 }
 
+double white_equivalent_factor(double interval_s, double tau_s) {
+  assert(interval_s > 0.0 && tau_s > 0.0);
+  const double one_minus_phi = -std::expm1(-interval_s / tau_s);  // accurate for tau >> interval
+  return (2.0 - one_minus_phi) / one_minus_phi;
+}
+
 std::optional<core::Error> check_gauss_markov(double tau, double sigma) {
   // Written so that NaN fails the comparisons.
   if (!(tau > 0.0) || !std::isfinite(tau)) {

@@ -58,6 +58,14 @@ struct GaussMarkovChain {      // per axis: position, velocity, Gauss-Markov acc
 /// Relative accuracy ~1e-15 per element for every dt / tau in [1e-8, 100] (header comment).
 GaussMarkovChain gauss_markov_chain(double dt, double tau, double sigma);
 
+/// Variance factor of a first-order Gauss-Markov error sampled every interval_s (> 0) with
+/// correlation time tau_s (> 0), phi = exp(-interval / tau): (1 + phi) / (1 - phi). The mean of
+/// N >> tau / interval samples has the variance of N / factor independent ones (Bartlett's
+/// formula for an AR(1) sequence: 1 + 2 sum_k phi^k), so weighing each sample with its variance
+/// times this factor makes a long run of them worth what it is. 1 as tau -> 0; 2 tau / interval
+/// for tau >> interval.
+double white_equivalent_factor(double interval_s, double tau_s);
+
 /// Validation at the configuration boundary: tau finite and > 0, sigma finite and >= 0; the error
 /// names the field ("empirical_tau_s", "empirical_sigma_mps2"). std::nullopt when both are valid.
 std::optional<core::Error> check_gauss_markov(double tau, double sigma);
