@@ -22,7 +22,7 @@ struct FlagKey {
   bool nav::CdgpsSettings::*field;
 };
 
-constexpr std::array<NumberKey, 30> kNumbers = {{
+constexpr std::array<NumberKey, 32> kNumbers = {{
     {"max_step_s", &nav::CdgpsSettings::max_step_s},
     {"empirical_tau_s", &nav::CdgpsSettings::empirical_tau_s},
     {"empirical_sigma_mps2", &nav::CdgpsSettings::empirical_sigma_mps2},
@@ -50,6 +50,8 @@ constexpr std::array<NumberKey, 30> kNumbers = {{
     {"phase_center_free_after_turn_s", &nav::CdgpsSettings::phase_center_free_after_turn_s},
     {"gate_sigmas", &nav::CdgpsSettings::gate_sigmas},
     {"sd_code_sigma_m", &nav::CdgpsSettings::sd_code_sigma_m},
+    {"code_multipath_sigma_m", &nav::CdgpsSettings::code_multipath_sigma_m},
+    {"code_multipath_tau_s", &nav::CdgpsSettings::code_multipath_tau_s},
     {"min_weighting_elevation_deg", &nav::CdgpsSettings::min_weighting_elevation_deg},
     {"min_fix_elevation_deg", &nav::CdgpsSettings::min_fix_elevation_deg},
     {"hold_variance_cycles2", &nav::CdgpsSettings::hold_variance_cycles2},

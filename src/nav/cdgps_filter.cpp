@@ -125,7 +125,7 @@ struct CdgpsFilter::Impl {
   double innovation(const Scalar& m) const { return m.z - (m.p.value_m + m.p.h.dot(x - x_prior)); }
   double innovations(const std::array<Scalar, kGpsSlots>& scalars, int count, std::array<double, kGpsSlots>& values) const;
   void order_by_consensus(std::array<Scalar, kGpsSlots>& scalars, int count);
-  bool absorb_clock_jump(const std::array<Scalar, kGpsSlots>& scalars, int count, int clock_state, double sigma_m,
+  bool absorb_clock_jump(const std::array<Scalar, kGpsSlots>& scalars, int count, int clock_state, double variance_m2,
                          const CdgpsSettings& s);
   void process(const CdgpsSettings& s, CdgpsEpochReport& report);
   Eigen::Vector3d phase_centre_gain_mask(const CdgpsEpochInput& in, const CdgpsSettings& s);
@@ -549,7 +549,7 @@ double CdgpsFilter::Impl::innovations(const std::array<Scalar, kGpsSlots>& scala
 // more (a median of fewer is one satellite). The local receiver's from its GRAPHIC, the remote
 // one's from the SD codes (remote minus local clock), after the local's.
 bool CdgpsFilter::Impl::absorb_clock_jump(const std::array<Scalar, kGpsSlots>& scalars, int count, int clock_state,
-                                          double sigma_m, const CdgpsSettings& s) {
+                                          double variance_m2, const CdgpsSettings& s) {
   if (count < 3) return false;
   std::array<double, kGpsSlots> values{};
   const double median = innovations(scalars, count, values);
@@ -558,7 +558,7 @@ bool CdgpsFilter::Impl::absorb_clock_jump(const std::array<Scalar, kGpsSlots>& s
     if (values[static_cast<std::size_t>(i)] == median) at_median = &scalars[static_cast<std::size_t>(i)];
   }
   const NavRow& h = at_median->p.h;
-  const double spread = std::sqrt((h * P * h.transpose()).value() + at_median->variance_scale * sigma_m * sigma_m);
+  const double spread = std::sqrt((h * P * h.transpose()).value() + at_median->variance_scale * variance_m2);
   const double partial = h(clock_state);
   if (std::abs(median) <= s.gate_sigmas * spread || std::abs(partial) < 0.5) return false;
   x(clock_state) += median / partial;
@@ -585,35 +585,39 @@ void CdgpsFilter::Impl::order_by_consensus(std::array<Scalar, kGpsSlots>& scalar
 
 // The epoch's SD codes as one scalar: the mean of those whose innovation lies within the gate of
 // the median's (a code blunder or strong multipath left out: the gate uses each one's predicted
-// innovation variance, h P h' + sigma^2, over the spacecraft blocks its row spans), with the mean
-// row and variance sigma^2 / m. One update instead of m: the position information of 0.3 m codes
-// is nothing next to the phase; the clock difference is what it is for.
+// innovation variance, h P h' + its per-epoch variance, over the spacecraft blocks its row spans),
+// with the mean row and the mean of their variances / m (sd_code_variance: the weight's, gated on
+// the per-epoch one's). One update instead of m: the position information of 0.3 m codes is
+// nothing next to the phase; the clock difference is what it is for.
 void CdgpsFilter::Impl::update_sd_code(const CdgpsSettings& s, CdgpsEpochReport& report) {
   if (!s.sd_code || code_count == 0) return;
   constexpr int n = 2 * kSpacecraftStates;  // the rows' span: both spacecraft blocks
   std::array<double, kGpsSlots> values{};
   const double median = innovations(code_scalars, code_count, values);
   NavRow h = NavRow::Zero();
-  double innovation_sum = 0.0, variance_sum = 0.0;
+  const CodeVariance zenith = sd_code_variance(s);
+  double innovation_sum = 0.0, variance_sum = 0.0, gate_sum = 0.0;
   int used = 0;
   for (int i = 0; i < code_count; ++i) {
     const Scalar& m = code_scalars[static_cast<std::size_t>(i)];
     const auto row = m.p.h.head<n>();
-    const double variance = m.variance_scale * s.sd_code_sigma_m * s.sd_code_sigma_m;
-    const double spread =
-        std::sqrt(row * P.topLeftCorner<n, n>().selfadjointView<Eigen::Lower>() * row.transpose() + variance);
+    const double spread = std::sqrt(row * P.topLeftCorner<n, n>().selfadjointView<Eigen::Lower>() * row.transpose() +
+                                    m.variance_scale * zenith.gate);
     if (std::abs(values[static_cast<std::size_t>(i)] - median) > s.gate_sigmas * spread) {
       ++report.sd_code_rejected;
       continue;
     }
     h += m.p.h;
     innovation_sum += values[static_cast<std::size_t>(i)];
-    variance_sum += variance;
+    variance_sum += m.variance_scale * zenith.weight;
+    gate_sum += m.variance_scale * zenith.gate;
     ++used;
   }
   if (used == 0) return;
   const double count = used;
-  const auto r = scalar_update_lower(x, P, h / count, innovation_sum / count, variance_sum / (count * count), s.gate_sigmas, workspace);
+  const double squared = count * count;
+  const auto r = scalar_update_lower(x, P, h / count, innovation_sum / count, variance_sum / squared, gate_sum / squared,
+                                     s.gate_sigmas, workspace);
   if (r.status != ScalarUpdateStatus::kAccepted) {
     report.sd_code_rejected += used;
     return;
@@ -667,10 +671,11 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
     report.nis_sum += r.normalised_innovation_squared;
     ++report.nis_count;
   };
+  const CodeVariance graphic_zenith = graphic_variance(s);
   for (int i = 0; i < graphic_count; ++i) {
     const Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
-    const auto r = scalar_update_lower(x, P, m.p.h, innovation(m), m.variance_scale * s.graphic_sigma_m * s.graphic_sigma_m,
-                                 s.gate_sigmas, workspace);
+    const auto r = scalar_update_lower(x, P, m.p.h, innovation(m), m.variance_scale * graphic_zenith.weight,
+                                       m.variance_scale * graphic_zenith.gate, s.gate_sigmas, workspace);
     if (r.status == ScalarUpdateStatus::kAccepted) {
       ++report.graphic_used;
       report.graphic_nis_sum += r.normalised_innovation_squared;
@@ -818,10 +823,10 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.follow_ephemeris_switches(settings_.local, std::pow(settings_.ephemeris_switch_sigma_m, 2), report);
   const Craft remote = settings_.local == Craft::kDsc ? Craft::kOsc : Craft::kDsc;
   report.clock_jumps += m.absorb_clock_jump(m.graphic_scalars, m.graphic_count, state::clock(settings_.local),
-                                            settings_.graphic_sigma_m, settings_) ? 1 : 0;
+                                            graphic_variance(settings_).gate, settings_) ? 1 : 0;
   if (settings_.sd_code) {
-    report.clock_jumps += m.absorb_clock_jump(m.code_scalars, m.code_count, state::clock(remote), settings_.sd_code_sigma_m,
-                                              settings_) ? 1 : 0;
+    report.clock_jumps += m.absorb_clock_jump(m.code_scalars, m.code_count, state::clock(remote),
+                                              sd_code_variance(settings_).gate, settings_) ? 1 : 0;
   }
   const Eigen::Vector3d free = m.phase_centre_gain_mask(in, settings_);
   for (const Craft c : kCrafts) m.workspace.gain_mask.segment<3>(state::phase_center(c)) = free;

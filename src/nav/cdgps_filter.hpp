@@ -25,7 +25,9 @@
 //    innovation is the epoch's median first, so that a slipped or blundered one cannot capture
 //    the nearly free receiver clock (optionally weighted by the elevation, CdgpsSettings). A rejected SDCP is a cycle slip the indicator
 //    missed: its slot is reinitialised and the measurement processed again (it then only sets the
-//    new ambiguity); a rejected GRAPHIC is a code outlier and is dropped. An SDCP is weighed by
+//    new ambiguity); a rejected GRAPHIC is a code outlier and is dropped. The codes (GRAPHIC, SD
+//    code) are weighed by their white-equivalent variance and gated on their per-epoch one
+//    (CdgpsSettings::code_multipath_sigma_m, graphic_variance, sd_code_variance). An SDCP is weighed by
 //    its per-epoch variance times sdcp_correlation_inflation (correlated multipath) and gated on
 //    the per-epoch variance alone; its row has +1 on its slot's SD multipath state (started with
 //    the ambiguity, parked with the slot: nav/sd_multipath.hpp). The phase-centre states have a gain only along the body axes

@@ -61,6 +61,12 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   if (!(std::isfinite(s.sdcp_multipath_tau_s) && s.sdcp_multipath_tau_s > 0.0)) {
     return core::Error{"sdcp_multipath_tau_s", "must be a finite number > 0 [s]"};
   }
+  if (!(std::isfinite(s.code_multipath_sigma_m) && s.code_multipath_sigma_m >= 0.0)) {
+    return core::Error{"code_multipath_sigma_m", "must be a finite number >= 0 [m]"};
+  }
+  if (!(std::isfinite(s.code_multipath_tau_s) && s.code_multipath_tau_s > 0.0)) {
+    return core::Error{"code_multipath_tau_s", "must be a finite number > 0 [s]"};
+  }
   if (!(s.min_float_s_before_fix >= 0.0 && s.min_float_s_before_fix <= 3600.0)) {
     return core::Error{"min_float_s_before_fix", "must be in [0, 3600] s"};
   }
@@ -72,6 +78,28 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
   }
   if (auto a = validate(s.acceptance); !a) return core::Error{"acceptance." + a.error().field, a.error().message};
   return std::nullopt;
+}
+
+namespace {
+
+// The filter's epochs: 1 Hz, the receivers' rate. At a lower rate the factor overstates the
+// correlation between epochs, which weighs the code less than it could: the safe side.
+constexpr double kEpochIntervalS = 1.0;
+
+CodeVariance code_variance(double white_m2, double multipath_m2, const CdgpsSettings& s) {
+  const double factor = white_equivalent_factor(kEpochIntervalS, s.code_multipath_tau_s);
+  return {white_m2 + multipath_m2, white_m2 + factor * multipath_m2};
+}
+
+}  // namespace
+
+CodeVariance graphic_variance(const CdgpsSettings& s) {
+  const double half = 0.5 * s.code_multipath_sigma_m;
+  return code_variance(s.graphic_sigma_m * s.graphic_sigma_m, half * half, s);
+}
+
+CodeVariance sd_code_variance(const CdgpsSettings& s) {
+  return code_variance(s.sd_code_sigma_m * s.sd_code_sigma_m, 2.0 * s.code_multipath_sigma_m * s.code_multipath_sigma_m, s);
 }
 
 }  // namespace visors::nav

@@ -119,10 +119,8 @@ struct CdgpsSettings {
   // the white sdcp_sigma_m, weighed with sdcp_correlation_inflation). With the states,
   // sdcp_sigma_m is the white part alone and the inflation should be 1. Defaults: sqrt(2) x 2 mm
   // and 60 s, the flight team's characterisation of its patch antenna, equal to the nominal of
-  // the truth's receiver (which draws no other: a mismatch's cost is measured in
-  // docs/navigation-multipath.md). With them, seeds 1-10 under the paper's truth: NEES 3.6 and
-  // 39 of 100 observations, against NEES 13 and 34 of 100 with the inflation alone; seeds 11-15:
-  // 28 of 50 against 19 (docs/navigation-multipath.md).
+  // the truth's receiver (which draws no other). What the states and a mismatch of these
+  // settings are worth: docs/navigation-multipath.md.
   double sdcp_multipath_sigma_m = 0.00283;
   double sdcp_multipath_tau_s = 60.0;
   double gate_sigmas = 5.0;                // scalar innovation gate [innovation sigmas]
@@ -136,6 +134,19 @@ struct CdgpsSettings {
   // noise, per satellite.
   bool sd_code = true;
   double sd_code_sigma_m = 0.3;
+  // The code's multipath, each receiver: its first-order Gauss-Markov steady-state sigma at the
+  // zenith [m] (grown as 1 / sin(elevation) with the elevation weighting) and its correlation
+  // time [s]. The code has no states for it (24 more would cost what the SDCP's 12 did, for
+  // measurements whose position information the phase dwarfs once fixed); it is weighed instead
+  // as what N correlated epochs are worth, by code_variance below: the GRAPHIC and SD code
+  // updates with the white-equivalent variance, their gates and the clock-jump test with the
+  // per-epoch one. Weighed as white (0: the noise sigmas above alone), a minute of correlated
+  // code errors counts as sixty independent ones: the float solution follows them and believes
+  // them, and the phase innovations then fail their gates against it as false slips
+  // (docs/navigation-multipath.md "Code multipath"). Defaults: the flight team's
+  // characterisation of its patch antenna, equal to the nominal of the truth's receiver.
+  double code_multipath_sigma_m = 0.3;
+  double code_multipath_tau_s = 60.0;
   // Elevation weighting: each receiver's code and phase sigma divided by the sine of the
   // satellite's elevation above the antenna plane, floored at min_weighting_elevation_deg. On: a
   // patch antenna's noise and multipath grow towards the horizon, which the flight team knows of
@@ -171,5 +182,18 @@ struct CdgpsSettings {
 
 /// Each value checked; the error names the field.
 std::optional<core::Error> check(const CdgpsSettings& settings);
+
+/// The variance at the zenith [m^2] of one code scalar, white noise plus multipath
+/// (code_multipath_sigma_m): per epoch (`gate`: innovation gates, clock-jump test) and as the
+/// update weighs it (`weight`: the multipath's variance times white_equivalent_factor at the
+/// filter's 1 Hz, i.e. what a stream of correlated epochs is worth as white ones).
+struct CodeVariance {
+  double gate = 0.0;    // [m^2]
+  double weight = 0.0;  // [m^2]
+};
+/// GRAPHIC = (code + phase) / 2 of one receiver: graphic_sigma_m^2 + (multipath / 2)^2.
+CodeVariance graphic_variance(const CdgpsSettings& settings);
+/// SD code of one satellite, two receivers: sd_code_sigma_m^2 + 2 multipath^2.
+CodeVariance sd_code_variance(const CdgpsSettings& settings);
 
 }  // namespace visors::nav

@@ -67,6 +67,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CdgpsSettings, local, max_step_s, empirical_t
                                    graphic_ambiguity_sigma_m, sdcp_ambiguity_sigma_cycles, slot_timeout_s,
                                    graphic_sigma_m, sdcp_sigma_m, sdcp_correlation_inflation,
                                    sdcp_multipath_sigma_m, sdcp_multipath_tau_s, gate_sigmas, sd_code, sd_code_sigma_m,
+                                   code_multipath_sigma_m, code_multipath_tau_s,
                                    elevation_weighting, min_weighting_elevation_deg, min_fix_elevation_deg, ambiguity_resolution,
                                    min_float_s_before_fix, acceptance, hold, hold_variance_cycles2)
 }  // namespace visors::nav

@@ -82,11 +82,13 @@ class RecordScoreReplay : public ::testing::Test {
     if (!have_gps_constellation()) return;
     scenario_ = default_campaign();
     // On the half-cycle sky (make_craft) the filter of the former defaults (no multipath states,
-    // inflation 12): its wrong fixes there are what the comparison needs. (The defaults never
-    // become valid in the 480 s on that sky's 5 mm phase; told the 5 mm, they make no wrong fix.)
+    // inflation 12, code as white): its wrong fixes there are what the comparison needs. (The
+    // defaults never become valid in the 480 s on that sky's 5 mm phase; told the 5 mm, they make
+    // no wrong fix.)
     if (kSky == Sky::kHalfCycles) {
       scenario_.nav_toml =
-          "[nav]\nsdcp_multipath_sigma_m = 0.0\nsdcp_correlation_inflation = 12.0\nempirical_along_track_sigma_mps2 = -1.0\n";
+          "[nav]\nsdcp_multipath_sigma_m = 0.0\nsdcp_correlation_inflation = 12.0\nempirical_along_track_sigma_mps2 = -1.0\n"
+          "code_multipath_sigma_m = 0.0\n";
     }
     auto world = load_gps_world(scenario_, kSteps + 60.0);
     ASSERT_TRUE(world.ok()) << world.error().describe();

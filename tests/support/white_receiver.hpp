@@ -21,11 +21,11 @@ inline void use_white_receiver(sim::GpsReceiverSettings& receiver) {
 }
 
 /// What a flight team that knows its receiver white tells its filter (a scenario without a [nav]
-/// table): no multipath states, which the flight defaults give for the real sky's multipath
-/// (nav/cdgps_settings.hpp).
+/// table): no multipath states and no code multipath, which the flight defaults give for the real
+/// sky's (nav/cdgps_settings.hpp).
 inline void tell_the_filter_white(sim::CampaignScenario& scenario) {
   EXPECT_TRUE(scenario.nav_toml.empty()) << scenario.nav_toml;
-  scenario.nav_toml = "[nav]\nsdcp_multipath_sigma_m = 0.0\n";
+  scenario.nav_toml = "[nav]\nsdcp_multipath_sigma_m = 0.0\ncode_multipath_sigma_m = 0.0\n";
 }
 
 /// The same as a [gnss.receiver] table (for scenario texts without one).
