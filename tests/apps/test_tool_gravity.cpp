@@ -11,28 +11,22 @@
 #include <string>
 
 #include "apps/run_tool.hpp"
+#include "core/files/data_path.hpp"
 #include "dynamics/files/icgem_file.hpp"
 #include "dynamics/gravity_field.hpp"
 #include "support/geographiclib_gravity.hpp"
 
 namespace {
 
-// Absolute path of a shared data file found through VISORS_DATA_PATH, or empty (test skips).
+// Absolute path of a data file found through the data search path (VISORS_DATA_PATH, then the
+// repository's data/, which ships every file these tests read); a missing one fails the test.
 std::string shared_file(const std::string& relative) {
-  const char* env = std::getenv("VISORS_DATA_PATH");
-  if (env == nullptr) return {};
-  std::stringstream entries(env);
-  std::string entry;
-  while (std::getline(entries, entry, ':')) {
-    const std::filesystem::path candidate = std::filesystem::path(entry) / relative;
-    if (!entry.empty() && std::filesystem::is_regular_file(candidate)) return candidate.string();
-  }
-  return {};
+  const auto found = visors::core::files::find_data_file(relative);
+  return found ? std::filesystem::absolute(*found).string() : std::string{};
 }
-#define REQUIRE_SHARED(var, relative)                                                                \
-  const std::string var = shared_file(relative);                                                     \
-  if (var.empty()) GTEST_SKIP() << relative << " not found: set VISORS_DATA_PATH to the shared data " \
-                                               "folder (e.g. /work/shared/data)"
+#define REQUIRE_SHARED(var, relative)    \
+  const std::string var = shared_file(relative); \
+  ASSERT_FALSE(var.empty()) << relative << " not found in the data search path (data/SOURCES.md)"
 
 // Body-fixed position of the Montenbruck & Gill test (digest §2.4-1) [m].
 const std::string kMgPosition = R"("r_itrf":[6525919.0,1710416.0,2508886.0])";

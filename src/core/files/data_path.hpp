@@ -1,9 +1,9 @@
 #pragma once
 // Data search path: reference data files (gravity fields, EOP, space weather, GPS ephemerides)
 // are found at run time through VISORS_DATA_PATH (':'-separated folders), then the repository's
-// own data/ folder, which ships only what the default runs need and is small (its provenance in
-// data/SOURCES.md: the NRLMSISE-00 coefficient tables). Ground side (visors_core_files): flight
-// code gets the data, never a path.
+// own data/ folder, which ships what the default scenarios and the tests read (3 MB; provenance
+// and checksums in data/SOURCES.md). Ground side (visors_core_files): flight code gets the data,
+// never a path.
 
 #include <filesystem>
 #include <optional>
