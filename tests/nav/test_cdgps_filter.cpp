@@ -360,39 +360,43 @@ TEST_F(CdgpsFilterRun, NoSlipWhereThereIsNone) { EXPECT_EQ(result->detected_slip
 // white noise of the same variance instead (the filter before its states), the filter follows the
 // multipath into its state and believes it: the NEES is tens of times too large. The filter's
 // dynamics are the simulation's here (no empirical acceleration, no phase-centre error).
-RunOutcome multipath_run(bool states) {
-  return simulate(1800, -1, {}, {}, {}, {}, Multipath{0.002, states});
+RunOutcome multipath_run(bool told) {
+  return simulate(1800, -1, {}, {}, {}, {}, Multipath{0.002, told});
 }
 
-class CdgpsFilterMultipath : public ::testing::Test {
+// One run with the filter told of the multipath (`told`) and one with it weighed as white, shared
+// by the tests of a suite.
+template <RunOutcome (*kRun)(bool told)>
+class ToldAndWhite : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    with_states = new RunOutcome(multipath_run(true));
-    as_white = new RunOutcome(multipath_run(false));
+    told = new RunOutcome(kRun(true));
+    as_white = new RunOutcome(kRun(false));
   }
   static void TearDownTestSuite() {
-    delete with_states;
+    delete told;
     delete as_white;
+    told = as_white = nullptr;
   }
-  static RunOutcome* with_states;
-  static RunOutcome* as_white;
+  static inline RunOutcome* told = nullptr;
+  static inline RunOutcome* as_white = nullptr;
 };
-RunOutcome* CdgpsFilterMultipath::with_states = nullptr;
-RunOutcome* CdgpsFilterMultipath::as_white = nullptr;
+
+using CdgpsFilterMultipath = ToldAndWhite<multipath_run>;
 
 // Measured (2026-11-27): 2.50 with the states, 97 taken as white; relative centre of mass 3.2 /
 // 3.4 mm RMS.
-TEST_F(CdgpsFilterMultipath, WithTheStatesTheCovarianceHoldsTheError) { EXPECT_LT(with_states->relative_nees_mean, 6.0); }
+TEST_F(CdgpsFilterMultipath, WithTheStatesTheCovarianceHoldsTheError) { EXPECT_LT(told->relative_nees_mean, 6.0); }
 
-TEST_F(CdgpsFilterMultipath, WithTheStatesTheCovarianceIsNotInflated) { EXPECT_GT(with_states->relative_nees_mean, 1.0); }
+TEST_F(CdgpsFilterMultipath, WithTheStatesTheCovarianceIsNotInflated) { EXPECT_GT(told->relative_nees_mean, 1.0); }
 
 TEST_F(CdgpsFilterMultipath, TakenAsWhiteTheCovarianceIsOptimistic) { EXPECT_GT(as_white->relative_nees_mean, 20.0); }
 
 TEST_F(CdgpsFilterMultipath, WithTheStatesTheErrorIsNoLarger) {
-  EXPECT_LE(with_states->relative_error_rms_m, as_white->relative_error_rms_m);
+  EXPECT_LE(told->relative_error_rms_m, as_white->relative_error_rms_m);
 }
 
-TEST_F(CdgpsFilterMultipath, WithTheStatesTheIntegersAreRight) { EXPECT_EQ(with_states->integers_wrong, 0); }
+TEST_F(CdgpsFilterMultipath, WithTheStatesTheIntegersAreRight) { EXPECT_EQ(told->integers_wrong, 0); }
 
 // Gauss-Markov code multipath (0.3 m per receiver, 60 s: the real sky's zenith value,
 // docs/truth-and-knowledge.md), no phase multipath, the float solution alone over 10 minutes
@@ -410,21 +414,7 @@ RunOutcome code_multipath_run(bool told) {
   return simulate(600, -1, {}, {}, {}, {}, m);
 }
 
-class CdgpsFilterCodeMultipath : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    told = new RunOutcome(code_multipath_run(true));
-    as_white = new RunOutcome(code_multipath_run(false));
-  }
-  static void TearDownTestSuite() {
-    delete told;
-    delete as_white;
-  }
-  static RunOutcome* told;
-  static RunOutcome* as_white;
-};
-RunOutcome* CdgpsFilterCodeMultipath::told = nullptr;
-RunOutcome* CdgpsFilterCodeMultipath::as_white = nullptr;
+using CdgpsFilterCodeMultipath = ToldAndWhite<code_multipath_run>;
 
 TEST_F(CdgpsFilterCodeMultipath, ToldNoPhaseIsTakenForASlip) { EXPECT_EQ(told->detected_slips, 0); }
 
