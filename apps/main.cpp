@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "baseline/baseline_command.hpp"
+#include "core/version.hpp"
 #include "mc/mc_command.hpp"
 #include "nav/nav_command.hpp"
 #include "preview/preview_command.hpp"
@@ -180,7 +181,8 @@ int main(int argc, char** argv) {
   mc_report->add_option("database", mc_report_database, "results.sqlite of the campaign")->required();
   mc_report->add_option("--out", mc_report_out, "output folder (default: the database's)");
 
-  app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors 0.1.0\n"); });
+  app.set_version_flag("--version", std::string("visors ") + std::string(visors::core::kVersion), "print the version and exit");
+  app.add_subcommand("version", "print the version")->callback([] { fmt::print("visors {}\n", visors::core::kVersion); });
 
   try {
     app.parse(argc, argv);
