@@ -8,15 +8,15 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
-#include "baseline/baseline_command.hpp"
+#include "apps/baseline/baseline_command.hpp"
 #include "core/version.hpp"
-#include "mc/mc_command.hpp"
-#include "nav/nav_command.hpp"
-#include "preview/preview_command.hpp"
-#include "propagate/propagate_command.hpp"
-#include "run/run_command.hpp"
-#include "report/report_command.hpp"
-#include "tools/tool.hpp"
+#include "apps/mc/mc_command.hpp"
+#include "apps/nav/nav_command.hpp"
+#include "apps/preview/preview_command.hpp"
+#include "apps/propagate/propagate_command.hpp"
+#include "apps/run/run_command.hpp"
+#include "apps/report/report_command.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "baseline/baseline_command.hpp"
+#include "apps/baseline/baseline_command.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -6,7 +6,7 @@
 
 #include <fmt/core.h>
 
-#include "baseline/baseline_outputs.hpp"
+#include "apps/baseline/baseline_outputs.hpp"
 #include "core/files/data_path.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
 #include "gnss/files/rinex_obs_file.hpp"

@@ -1,4 +1,4 @@
-#include "baseline/baseline_outputs.hpp"
+#include "apps/baseline/baseline_outputs.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "baseline/baseline_command.hpp"
+#include "apps/baseline/baseline_command.hpp"
 #include "baseline/baseline_processor.hpp"
 #include "core/status.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <fmt/core.h>
 
-#include "baseline/baseline_outputs.hpp"
+#include "apps/baseline/baseline_outputs.hpp"
 #include "report/html_text.hpp"
 #include "report/svg_plot.hpp"
 

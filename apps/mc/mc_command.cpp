@@ -1,4 +1,4 @@
-#include "mc/mc_command.hpp"
+#include "apps/mc/mc_command.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "nav/decoded_ephemerides.hpp"
+#include "apps/nav/decoded_ephemerides.hpp"
 
 #include <algorithm>
 #include <cmath>

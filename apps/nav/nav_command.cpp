@@ -1,4 +1,4 @@
-#include "nav/nav_command.hpp"
+#include "apps/nav/nav_command.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,9 +18,9 @@
 #include "core/files/text_file.hpp"
 #include "nav/cdgps_filter.hpp"
 #include "nav/cold_start.hpp"
-#include "nav/nav_inputs.hpp"
-#include "nav/nav_replay.hpp"
-#include "nav/nav_score.hpp"
+#include "apps/nav/nav_inputs.hpp"
+#include "apps/nav/nav_replay.hpp"
+#include "apps/nav/nav_score.hpp"
 #include "sim/navigation_setup.hpp"
 
 namespace visors::nav_app {

@@ -1,4 +1,4 @@
-#include "nav/nav_inputs.hpp"
+#include "apps/nav/nav_inputs.hpp"
 
 #include <array>
 #include <cmath>

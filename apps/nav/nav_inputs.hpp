@@ -30,7 +30,7 @@
 #include "core/state_vector.hpp"
 #include "core/status.hpp"
 #include "gnss/ephemeris_set.hpp"
-#include "nav/decoded_ephemerides.hpp"
+#include "apps/nav/decoded_ephemerides.hpp"
 #include "nav/gps_observations.hpp"
 #include "nav/gps_range_model.hpp"
 #include "nav/laser_range_model.hpp"

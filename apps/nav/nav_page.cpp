@@ -8,7 +8,7 @@
 
 #include <fmt/core.h>
 
-#include "nav/nav_replay.hpp"
+#include "apps/nav/nav_replay.hpp"
 #include "report/html_text.hpp"
 #include "report/svg_plot.hpp"
 

@@ -1,4 +1,4 @@
-#include "nav/nav_score.hpp"
+#include "apps/nav/nav_score.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "nav/cdgps_filter.hpp"
-#include "nav/nav_inputs.hpp"
-#include "nav/nav_replay.hpp"
+#include "apps/nav/nav_inputs.hpp"
+#include "apps/nav/nav_replay.hpp"
 
 namespace visors::nav_app {
 

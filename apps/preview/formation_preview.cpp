@@ -1,4 +1,4 @@
-#include "preview/formation_preview.hpp"
+#include "apps/preview/formation_preview.hpp"
 
 #include <algorithm>
 #include <cmath>

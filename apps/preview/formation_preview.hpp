@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/status.hpp"
-#include "preview/preview_scenario.hpp"
+#include "apps/preview/preview_scenario.hpp"
 
 namespace visors::preview {
 

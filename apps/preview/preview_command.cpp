@@ -1,4 +1,4 @@
-#include "preview/preview_command.hpp"
+#include "apps/preview/preview_command.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/files/data_path.hpp"
-#include "preview/formation_preview.hpp"
-#include "preview/preview_scenario.hpp"
+#include "apps/preview/formation_preview.hpp"
+#include "apps/preview/preview_scenario.hpp"
 
 namespace visors::preview {
 namespace {

@@ -1,4 +1,4 @@
-#include "preview/preview_scenario.hpp"
+#include "apps/preview/preview_scenario.hpp"
 
 #include <cctype>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "propagate/propagate_command.hpp"
+#include "apps/propagate/propagate_command.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include "dynamics/files/force_model_files.hpp"
 #include "dynamics/force_model.hpp"
 #include "dynamics/orbit_propagator.hpp"
-#include "propagate/propagate_scenario.hpp"
+#include "apps/propagate/propagate_scenario.hpp"
 
 namespace visors::propagate {
 namespace {

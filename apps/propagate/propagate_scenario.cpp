@@ -1,4 +1,4 @@
-#include "propagate/propagate_scenario.hpp"
+#include "apps/propagate/propagate_scenario.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "report/report_command.hpp"
+#include "apps/report/report_command.hpp"
 
 #include <filesystem>
 

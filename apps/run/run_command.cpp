@@ -1,4 +1,4 @@
-#include "run/run_command.hpp"
+#include "apps/run/run_command.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 #include <algorithm>
 #include <cmath>

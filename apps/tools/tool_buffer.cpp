@@ -8,7 +8,7 @@
 #include <string>
 
 #include "control/maneuver_buffer.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "optim/conic_problem.hpp"
 #include "optim/conic_solver.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -36,7 +36,7 @@
 #include "dynamics/files/nrlmsise00_file.hpp"
 #include "dynamics/harris_priester.hpp"
 #include "dynamics/nrlmsise00.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

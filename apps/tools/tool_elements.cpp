@@ -12,7 +12,7 @@
 #include "astro/keplerian_elements.hpp"
 #include "core/angles.hpp"
 #include "core/constants.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

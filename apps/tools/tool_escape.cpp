@@ -11,7 +11,7 @@
 #include "astro/keplerian_elements.hpp"
 #include "core/constants.hpp"
 #include "safety/escape_maneuver.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -19,7 +19,7 @@
 #include "core/files/data_path.hpp"
 #include "core/files/eop_file.hpp"
 #include "core/gps_time.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -11,7 +11,7 @@
 #include "gnss/broadcast_ephemeris.hpp"
 #include "gnss/ephemeris_set.hpp"
 #include "gnss/files/rinex_nav_file.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

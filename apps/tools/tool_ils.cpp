@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "nav/integer_least_squares.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gnss/klobuchar.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

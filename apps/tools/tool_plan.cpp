@@ -13,7 +13,7 @@
 #include "control/closed_form_planner.hpp"
 #include "control/least_squares_planner.hpp"
 #include "control/reachable_set_planner.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "astro/keplerian_elements.hpp"
 #include "astro/relative_orbital_elements.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -12,7 +12,7 @@
 #include "astro/keplerian_elements.hpp"
 #include "core/constants.hpp"
 #include "safety/passive_safety.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

@@ -9,7 +9,7 @@
 #include "astro/keplerian_elements.hpp"
 #include "astro/roe_stm.hpp"
 #include "core/constants.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {

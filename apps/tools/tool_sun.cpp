@@ -14,7 +14,7 @@
 #include "astro/apparent_sun.hpp"
 #include "core/constants.hpp"
 #include "core/gps_time.hpp"
-#include "tools/tool.hpp"
+#include "apps/tools/tool.hpp"
 
 namespace visors::tools {
 namespace {
