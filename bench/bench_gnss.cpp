@@ -1,6 +1,6 @@
 // GPS models: satellite state from a broadcast ephemeris (IS-GPS-200 with analytic velocity), and
 // one receiver epoch for both spacecraft (visibility of 31 satellites, light time, channels,
-// observables). Data: the 2024 NYA1 navigation file moved to 2024-10-01 (../shared/data via
+// observables). Data: the 2024 NYA1 navigation file moved to 2024-10-01 (data/ via
 // VISORS_DATA_PATH).
 #include <benchmark/benchmark.h>
 

@@ -4,7 +4,7 @@ namespace visors::dynamics {
 namespace {
 
 // GGM05S fully normalised coefficients, degrees 0..8, as published by ICGEM (model GGM05S,
-// Tapley et al. 2013; the values of shared/data/gravity/GGM05S_d90.gfc). {n, m, C̄, S̄}.
+// Tapley et al. 2013; the values of data/gravity/GGM05S_d90.gfc). {n, m, C̄, S̄}.
 struct EmbeddedCoefficient {
   int n;
   int m;

@@ -17,7 +17,7 @@ namespace {
 
 // Montenbruck & Gill (2000) Table 3.8, modified Harris-Priester densities for mean solar activity:
 // height [km], antapex rho_m and apex rho_M [kg/m^3] (the book's g/km^3 times 1e-12). Published
-// numbers; identical to shared/data/atmosphere/harris_priester_mg_table3-8.csv (tested).
+// numbers; identical to data/atmosphere/harris_priester_mg_table3-8.csv (tested).
 struct Node {
   double height_km;
   double rho_min;  // [kg/m^3]

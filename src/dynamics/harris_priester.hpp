@@ -1,6 +1,5 @@
 #pragma once
-// Modified Harris-Priester atmosphere, Montenbruck & Gill, Satellite Orbits (2000), sec. 3.5.2
-// (equations as in shared/docs/navigation-and-dynamics.md sec. 3.1).
+// Modified Harris-Priester atmosphere, Montenbruck & Gill, Satellite Orbits (2000), sec. 3.5.2.
 //
 // Tabulated antapex (minimum) and apex (maximum) densities rho_m(h_i), rho_M(h_i) of the diurnal
 // bulge, 100..1000 km; between nodes each is interpolated exponentially,

@@ -1,7 +1,7 @@
 #pragma once
 // Daily space weather (F10.7, Ap, 3-hourly ap), as read on the ground from a CelesTrak CSV file
 // (dynamics/files/space_weather_file.hpp), e.g.
-// shared/data/space_weather/SW-Observed_2024-07-01_2025-01-31.csv.
+// data/space_weather/SW-Observed_2024-07-01_2025-01-31.csv.
 //
 // at(t) follows the NRLMSISE-00 input convention (Picone et al. 2002; SOURCES.md sec. 2):
 //   f107  = observed F10.7 of the PREVIOUS UTC day (the flux lags the thermosphere by ~1 day),

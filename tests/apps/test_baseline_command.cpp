@@ -1,4 +1,4 @@
-// `visors baseline` end to end: the outputs of a run on the GSI pair (../shared/data, found
+// `visors baseline` end to end: the outputs of a run on the GSI pair (data/, found
 // through the data search path; the processing itself is checked in tests/baseline), and bad
 // input that must exit 2 with a message naming the option or the file and line.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The baseline processor on real receiver data nobody on this project produced: GSI GEONET
 // stations 0759 (rover) and 3040 (base), 2005-04-02 00:00-00:59:30 GPST, 30 s, L1/L2, about
-// 3.3 km apart (../shared/data/gnss/gsi-2005-04-02, SOURCES.md; the RTKLIB test data). No rover
+// 3.3 km apart (data/gnss/gsi-2005-04-02, SOURCES.md; the RTKLIB test data). No rover
 // truth exists: the checks are the issue's consistency criteria between independent processings
 // (L1 only vs L1+L2, kinematic vs static) and RTKLIB 2.4.3's fix counts on the same data for
 // orientation (104 of 120 epochs fixed in continuous mode, 114 in fix-and-hold: issue 14).

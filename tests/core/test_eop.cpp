@@ -76,7 +76,7 @@ class EopFile : public ::testing::Test {
 TEST_F(EopFile, LoadsTheWholeFile) {
   const auto table = read_eop_file(*visors::core::files::find_data_file(kFinals));
   ASSERT_TRUE(table.ok()) << table.error().describe();
-  EXPECT_EQ(table->size(), 215u);  // shared/data/SOURCES.md: 215 daily rows, MJD 60492..60706
+  EXPECT_EQ(table->size(), 215u);  // data/SOURCES.md: 215 daily rows, MJD 60492..60706
   EXPECT_EQ(table->first_mjd(), 60492.0);
   EXPECT_EQ(table->last_mjd(), 60706.0);
 }

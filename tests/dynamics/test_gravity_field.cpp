@@ -17,14 +17,13 @@ using visors::dynamics::GravityField;
 using visors::dynamics::TideSystem;
 using visors::dynamics::files::read_icgem;
 
-// Path of a shared data file, or empty (the test then skips: VISORS_DATA_PATH=/work/shared/data).
+// Path of a data file through the data search path (data/ ships it), or empty (the test fails).
 std::filesystem::path data_file(const std::string& relative) {
   return visors::core::files::find_data_file(relative).value_or(std::filesystem::path{});
 }
 #define REQUIRE_DATA(path_var, relative)                                                       \
   const std::filesystem::path path_var = data_file(relative);                                 \
-  if (path_var.empty()) GTEST_SKIP() << relative << " not found: set VISORS_DATA_PATH to the " \
-                                                    "shared data folder (e.g. /work/shared/data)"
+  if (path_var.empty()) FAIL() << relative << " not found in the data search path (data/SOURCES.md)"
 
 // Writes `text` to a fresh file in the test temp dir.
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {

@@ -36,8 +36,7 @@ std::optional<GravityField> load_field(const std::string& relative, int degree =
 }
 #define REQUIRE_FIELD(var, relative, degree)                                                 \
   const std::optional<GravityField> var = load_field(relative, degree);                     \
-  if (!var) GTEST_SKIP() << relative << " not found: set VISORS_DATA_PATH to the shared data " \
-                                        "folder (e.g. /work/shared/data)"
+  if (!var) FAIL() << relative << " not found in the data search path (data/SOURCES.md)"
 
 SphericalHarmonicGravity make(const GravityField& field, int degree, int order) {
   auto g = SphericalHarmonicGravity::create(field, degree, order);

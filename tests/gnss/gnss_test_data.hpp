@@ -1,5 +1,5 @@
 #pragma once
-// Paths of the GNSS reference data (../shared/data/gnss, found through the data search path) and
+// Paths of the GNSS reference data (data/gnss, found through the data search path) and
 // the first usable record of a PRN, for the gnss tests.
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // RINEX 2.10/2.11 observation files through read_rinex_observations: two real GEONET files (GSI
-// stations 0759 and 3040, 2005-04-02, teqc output; ../shared/data/SOURCES.md), hand-written files
+// stations 0759 and 3040, 2005-04-02, teqc output; data/SOURCES.md), hand-written files
 // laid out after RINEX 2.11 (IGS/RTCM, 2012 update) Table A1 (header) and Table A2 (data records),
 // malformed input (every error names "<path>:<line>" with the exact line), and the RINEX 2 to
 // RINEX 3 GPS code mapping.

@@ -1,4 +1,4 @@
-// RINEX 2.11 and 3.x navigation files: the real files of ../shared/data/gnss and malformed copies.
+// RINEX 2.11 and 3.x navigation files: the real files of data/gnss and malformed copies.
 #include <fstream>
 #include <set>
 #include <sstream>

@@ -9,7 +9,7 @@
 
 namespace visors::dynamics::files {
 
-/// Reads the CSV of shared/data/atmosphere/harris_priester_mg_table3-8.csv: a header naming the
+/// Reads the CSV of data/atmosphere/harris_priester_mg_table3-8.csv: a header naming the
 /// columns altitude_km, rho_min_kg_per_m3, rho_max_kg_per_m3 (found by name; other columns are
 /// ignored), then one row per node. Errors name the line (field "line N") and the column, for
 /// malformed numbers, missing columns, non-increasing heights, non-positive densities,

@@ -1,7 +1,7 @@
 #pragma once
 // Reading daily space weather from a CelesTrak CSV file (the SW-All.csv layout,
 // https://celestrak.org/SpaceData/SpaceWx-format.php), e.g.
-// shared/data/space_weather/SW-Observed_2024-07-01_2025-01-31.csv, into the flight layer's
+// data/space_weather/SW-Observed_2024-07-01_2025-01-31.csv, into the flight layer's
 // dynamics::SpaceWeatherTable. Ground side (visors_dynamics_files).
 //
 // Columns are found by their header names (DATE, F10.7_OBS, F10.7_OBS_CENTER81, AP_AVG,
