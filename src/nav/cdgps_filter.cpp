@@ -67,6 +67,9 @@ struct CdgpsFilter::Impl {
   AmbiguitySlotBank graphic;
   AmbiguitySlotBank sdcp;
   SdMultipathStates multipath;  // bank M, in step with sdcp's slots
+  // The codes' zenith variances (settings only: formed once at create()).
+  CodeVariance graphic_zenith{};
+  CodeVariance sd_code_zenith{};
   DoubleDifferenceAmbiguities dd;
   IntegerLeastSquares ils;
   FixedSolutionUpdate fixer;
@@ -148,6 +151,8 @@ core::Result<CdgpsFilter> CdgpsFilter::create(const CdgpsSettings& settings, dyn
                                      std::move(sdcp).value(),
                                      SdMultipathStates(settings.sdcp_multipath_sigma_m, settings.sdcp_multipath_tau_s),
                                      std::move(dd).value(), std::move(ils).value(), std::move(fixer).value());
+  impl->graphic_zenith = graphic_variance(settings);
+  impl->sd_code_zenith = sd_code_variance(settings);
   return CdgpsFilter(settings, std::move(impl));
 }
 
@@ -595,7 +600,7 @@ void CdgpsFilter::Impl::update_sd_code(const CdgpsSettings& s, CdgpsEpochReport&
   std::array<double, kGpsSlots> values{};
   const double median = innovations(code_scalars, code_count, values);
   NavRow h = NavRow::Zero();
-  const CodeVariance zenith = sd_code_variance(s);
+  const CodeVariance& zenith = sd_code_zenith;
   double innovation_sum = 0.0, variance_sum = 0.0, gate_sum = 0.0;
   int used = 0;
   for (int i = 0; i < code_count; ++i) {
@@ -671,7 +676,6 @@ void CdgpsFilter::Impl::process(const CdgpsSettings& s, CdgpsEpochReport& report
     report.nis_sum += r.normalised_innovation_squared;
     ++report.nis_count;
   };
-  const CodeVariance graphic_zenith = graphic_variance(s);
   for (int i = 0; i < graphic_count; ++i) {
     const Scalar& m = graphic_scalars[static_cast<std::size_t>(i)];
     const auto r = scalar_update_lower(x, P, m.p.h, innovation(m), m.variance_scale * graphic_zenith.weight,
@@ -823,10 +827,10 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   m.follow_ephemeris_switches(settings_.local, std::pow(settings_.ephemeris_switch_sigma_m, 2), report);
   const Craft remote = settings_.local == Craft::kDsc ? Craft::kOsc : Craft::kDsc;
   report.clock_jumps += m.absorb_clock_jump(m.graphic_scalars, m.graphic_count, state::clock(settings_.local),
-                                            graphic_variance(settings_).gate, settings_) ? 1 : 0;
+                                            m.graphic_zenith.gate, settings_) ? 1 : 0;
   if (settings_.sd_code) {
     report.clock_jumps += m.absorb_clock_jump(m.code_scalars, m.code_count, state::clock(remote),
-                                              sd_code_variance(settings_).gate, settings_) ? 1 : 0;
+                                              m.sd_code_zenith.gate, settings_) ? 1 : 0;
   }
   const Eigen::Vector3d free = m.phase_centre_gain_mask(in, settings_);
   for (const Craft c : kCrafts) m.workspace.gain_mask.segment<3>(state::phase_center(c)) = free;
