@@ -9,7 +9,7 @@
 #include <fmt/core.h>
 
 #include "apps/baseline/baseline_command.hpp"
-#include "core/version.hpp"
+#include "visors/core/version.hpp"
 #include "apps/mc/mc_command.hpp"
 #include "apps/nav/nav_command.hpp"
 #include "apps/preview/preview_command.hpp"

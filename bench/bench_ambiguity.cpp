@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "ambiguity_instances.hpp"
-#include "nav/integer_least_squares.hpp"
+#include "visors/nav/integer_least_squares.hpp"
 
 namespace {
 

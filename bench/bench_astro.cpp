@@ -1,12 +1,12 @@
 // Cost of the astro building blocks used in the GNC loop (ns per call).
 #include <benchmark/benchmark.h>
 
-#include "astro/control_input_matrix.hpp"
-#include "astro/keplerian_elements.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/roe_rtn_map.hpp"
-#include "astro/roe_stm.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/control_input_matrix.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/roe_rtn_map.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/core/constants.hpp"
 
 namespace {
 using namespace visors::astro;

@@ -23,8 +23,8 @@
 #include <unistd.h>
 #include <vector>
 
-#include "optim/conic_solver.hpp"
-#include "optim/minimum_fuel_problem.hpp"
+#include "visors/optim/conic_solver.hpp"
+#include "visors/optim/minimum_fuel_problem.hpp"
 
 namespace {
 

@@ -1,9 +1,9 @@
 // Cost of the time and frame conversions used at every filter / propagator step.
 #include <benchmark/benchmark.h>
 
-#include "core/constants.hpp"
-#include "core/earth_frames.hpp"
-#include "core/gps_time.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/gps_time.hpp"
 
 namespace {
 

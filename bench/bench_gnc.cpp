@@ -17,9 +17,9 @@
 #include <chrono>
 #include <vector>
 
-#include "gnc/channel_record.hpp"
-#include "gnc/flight_component.hpp"
-#include "gnc/formation_harness.hpp"
+#include "visors/gnc/channel_record.hpp"
+#include "visors/gnc/flight_component.hpp"
+#include "visors/gnc/formation_harness.hpp"
 
 namespace {
 

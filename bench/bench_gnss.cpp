@@ -4,9 +4,9 @@
 // VISORS_DATA_PATH).
 #include <benchmark/benchmark.h>
 
-#include "gnss/broadcast_ephemeris.hpp"
-#include "gnss/klobuchar.hpp"
-#include "sim/gps_test_world.hpp"
+#include "visors/gnss/broadcast_ephemeris.hpp"
+#include "visors/gnss/klobuchar.hpp"
+#include "visors/sim/gps_test_world.hpp"
 
 namespace {
 

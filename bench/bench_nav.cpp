@@ -18,9 +18,9 @@
 #include <random>
 #include <vector>
 
-#include "gnss/ephemeris_set.hpp"
-#include "nav/cdgps_filter.hpp"
-#include "nav/orbit_time_update.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/nav/cdgps_filter.hpp"
+#include "visors/nav/orbit_time_update.hpp"
 #include "support/synthetic_gps.hpp"
 
 namespace {

@@ -11,13 +11,13 @@
 #include <optional>
 #include <vector>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/earth_frames.hpp"
-#include "core/eop.hpp"
-#include "core/files/data_path.hpp"
-#include "dynamics/files/nrlmsise00_file.hpp"
-#include "dynamics/harris_priester.hpp"
-#include "dynamics/nrlmsise00.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/eop.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/dynamics/files/nrlmsise00_file.hpp"
+#include "visors/dynamics/harris_priester.hpp"
+#include "visors/dynamics/nrlmsise00.hpp"
 
 namespace {
 using namespace visors;

@@ -15,12 +15,12 @@
 #include <numbers>
 #include <vector>
 
-#include "control/closed_form_planner.hpp"
-#include "control/least_squares_planner.hpp"
-#include "control/maneuver_buffer.hpp"
-#include "control/reachable_set_planner.hpp"
-#include "safety/escape_maneuver.hpp"
-#include "safety/passive_safety.hpp"
+#include "visors/control/closed_form_planner.hpp"
+#include "visors/control/least_squares_planner.hpp"
+#include "visors/control/maneuver_buffer.hpp"
+#include "visors/control/reachable_set_planner.hpp"
+#include "visors/safety/escape_maneuver.hpp"
+#include "visors/safety/passive_safety.hpp"
 
 namespace {
 

@@ -5,10 +5,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "astro/keplerian_elements.hpp"
-#include "dynamics/files/force_model_files.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/orbit_propagator.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/dynamics/files/force_model_files.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
 
 namespace {
 using namespace visors;

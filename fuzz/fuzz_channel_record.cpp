@@ -11,8 +11,8 @@
 #include <cstdlib>
 #include <span>
 
-#include "gnc/channel_record.hpp"
-#include "gnc/crc32c.hpp"
+#include "visors/gnc/channel_record.hpp"
+#include "visors/gnc/crc32c.hpp"
 
 namespace {
 

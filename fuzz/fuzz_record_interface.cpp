@@ -11,8 +11,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "gnc/crc32c.hpp"
-#include "gnc/record_interface.hpp"
+#include "visors/gnc/crc32c.hpp"
+#include "visors/gnc/record_interface.hpp"
 
 namespace {
 

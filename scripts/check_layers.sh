@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Include layering of the flight code, checked mechanically: each flight layer under src/ may
-# include only itself and the layers it links (its PUBLIC dependencies in src/*/CMakeLists.txt and
-# theirs, repeated in the table below), never a ground layer (sim, mc, report, config, baseline, apps)
-# nor a ground sub-folder (*/files/: file readers and the data search path). Run by CTest
+# Include layering of the flight code, checked mechanically: every project include is spelled
+# "visors/<layer>/..." (the installed include root), and each flight layer under src/visors/ may
+# include only itself and the layers it links (its PUBLIC dependencies in
+# src/visors/*/CMakeLists.txt and theirs, repeated in the table below), never a ground layer (sim,
+# mc, report, config, baseline, apps) nor a ground sub-folder (*/files/: file readers and the data
+# search path). Run by CTest
 # (FlightCode.IncludesOnlyItsOwnLayers); prints each offending line and exits 1.
 # Usage: scripts/check_layers.sh [SOURCE_DIR (the repository)]
 set -euo pipefail
@@ -27,6 +29,12 @@ for layer in "${!allowed[@]}"; do
       target=${line#*#include \"}
       target=${target%%\"*}
       [[ $target == */* ]] || continue            # a same-folder include
+      if [[ $target != visors/* ]]; then
+        echo "${file#"$root"/}: include \"$target\" is not under visors/ (the installed include root)" >&2
+        status=1
+        continue
+      fi
+      target=${target#visors/}
       top=${target%%/*}
       rest=${target#*/}
       ok=0
@@ -37,7 +45,7 @@ for layer in "${!allowed[@]}"; do
         status=1
       fi
     done < <(grep -E '^[[:space:]]*#[[:space:]]*include[[:space:]]*"' "$file" || true)
-  done < <(find "$root/src/$layer" -path "$root/src/$layer/files" -prune -o -type f \( -name '*.hpp' -o -name '*.cpp' -o -name '*.hpp.in' \) -print)
+  done < <(find "$root/src/visors/$layer" -path "$root/src/visors/$layer/files" -prune -o -type f \( -name '*.hpp' -o -name '*.cpp' -o -name '*.hpp.in' \) -print)
 done
 [[ $status -eq 0 ]] && echo "flight layers: ${files} files, every include within its layer's dependencies"
 exit $status

@@ -7,9 +7,9 @@
 #include <fmt/core.h>
 
 #include "apps/baseline/baseline_outputs.hpp"
-#include "core/files/data_path.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/files/rinex_obs_file.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/files/rinex_obs_file.hpp"
 
 namespace visors::baseline_app {
 namespace {

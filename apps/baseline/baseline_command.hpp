@@ -2,7 +2,7 @@
 // `visors baseline ROVER.obs BASE.obs --nav NAV [--nav NAV2] --base-ecef X Y Z [--mode
 // static|kinematic] [--freq L1|L1L2] [--elevation-mask DEG] [--ar off|continuous|hold]
 // [--out DIR]`: post-processed differential GPS between two ground receivers
-// (src/baseline/baseline_processor.hpp). Writes DIR/baseline.csv (one row per paired epoch),
+// (src/visors/baseline/baseline_processor.hpp). Writes DIR/baseline.csv (one row per paired epoch),
 // DIR/summary.json and DIR/baseline.html.
 
 #include <array>

@@ -6,7 +6,7 @@
 
 #include <fmt/core.h>
 
-#include "core/files/output_file.hpp"
+#include "visors/core/files/output_file.hpp"
 
 namespace visors::baseline_app {
 namespace {

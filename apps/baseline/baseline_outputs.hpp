@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/baseline/baseline_command.hpp"
-#include "baseline/baseline_processor.hpp"
-#include "core/status.hpp"
+#include "visors/baseline/baseline_processor.hpp"
+#include "visors/core/status.hpp"
 
 namespace visors::baseline_app {
 

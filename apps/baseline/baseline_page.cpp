@@ -5,8 +5,8 @@
 #include <fmt/core.h>
 
 #include "apps/baseline/baseline_outputs.hpp"
-#include "report/html_text.hpp"
-#include "report/svg_plot.hpp"
+#include "visors/report/html_text.hpp"
+#include "visors/report/svg_plot.hpp"
 
 namespace visors::baseline_app {
 namespace {

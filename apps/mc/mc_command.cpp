@@ -11,14 +11,14 @@
 
 #include <fmt/core.h>
 
-#include "mc/campaign_file.hpp"
-#include "mc/campaign_report.hpp"
-#include "mc/campaign_runner.hpp"
-#include "mc/mpi_campaign.hpp"
-#include "mc/results_store.hpp"
-#include "mc/run_plan.hpp"
-#include "report/report.hpp"
-#include "sim/campaign_simulation.hpp"
+#include "visors/mc/campaign_file.hpp"
+#include "visors/mc/campaign_report.hpp"
+#include "visors/mc/campaign_runner.hpp"
+#include "visors/mc/mpi_campaign.hpp"
+#include "visors/mc/results_store.hpp"
+#include "visors/mc/run_plan.hpp"
+#include "visors/report/report.hpp"
+#include "visors/sim/campaign_simulation.hpp"
 
 namespace visors::mc_app {
 namespace {

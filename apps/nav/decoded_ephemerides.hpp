@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "core/gps_time.hpp"
-#include "core/status.hpp"
-#include "gnss/ephemeris_set.hpp"
-#include "gnss/ephemeris_source.hpp"
-#include "gnss/gps_constants.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/status.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/gnss/ephemeris_source.hpp"
+#include "visors/gnss/gps_constants.hpp"
 
 namespace visors::nav_app {
 

@@ -12,16 +12,16 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "config/cdgps_settings_toml.hpp"
-#include "config/toml_fields.hpp"
-#include "core/files/output_file.hpp"
-#include "core/files/text_file.hpp"
-#include "nav/cdgps_filter.hpp"
-#include "nav/cold_start.hpp"
+#include "visors/config/cdgps_settings_toml.hpp"
+#include "visors/config/toml_fields.hpp"
+#include "visors/core/files/output_file.hpp"
+#include "visors/core/files/text_file.hpp"
+#include "visors/nav/cdgps_filter.hpp"
+#include "visors/nav/cold_start.hpp"
 #include "apps/nav/nav_inputs.hpp"
 #include "apps/nav/nav_replay.hpp"
 #include "apps/nav/nav_score.hpp"
-#include "sim/navigation_setup.hpp"
+#include "visors/sim/navigation_setup.hpp"
 
 namespace visors::nav_app {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // `visors nav RUN_DIR [--out DIR] [--duration S] [--crosslink-drop P] [--outage START DURATION]
 //  [--crosslink-delay S] [--elevation-weighting] [--float] [--no-laser] [--settings FILE]`: replays a `visors gnss-sim` run directory
-// through the on-board carrier-phase differential GPS filter (src/nav/cdgps_filter.hpp) of each
+// through the on-board carrier-phase differential GPS filter (src/visors/nav/cdgps_filter.hpp) of each
 // spacecraft at 1 Hz, with the run's commanded impulses and laser ranges (nav_inputs.hpp: what the
 // filter reads), and scores it against the run's truth (nav_score.hpp): relative position and
 // velocity (OSC minus DSC, RTN of the DSC), absolute position and velocity, fix rate, time to

@@ -9,14 +9,14 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "baseline/receiver_observables.hpp"
-#include "core/files/csv_file.hpp"
-#include "core/files/text_file.hpp"
-#include "gnc/onboard_navigation.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/files/rinex_obs_file.hpp"
-#include "sim/random_stream.hpp"
-#include "sim/spacecraft_geometry.hpp"
+#include "visors/baseline/receiver_observables.hpp"
+#include "visors/core/files/csv_file.hpp"
+#include "visors/core/files/text_file.hpp"
+#include "visors/gnc/onboard_navigation.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/files/rinex_obs_file.hpp"
+#include "visors/sim/random_stream.hpp"
+#include "visors/sim/spacecraft_geometry.hpp"
 
 namespace visors::nav_app {
 namespace {

@@ -27,14 +27,14 @@
 
 #include <Eigen/Geometry>
 
-#include "core/state_vector.hpp"
-#include "core/status.hpp"
-#include "gnss/ephemeris_set.hpp"
+#include "visors/core/state_vector.hpp"
+#include "visors/core/status.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
 #include "apps/nav/decoded_ephemerides.hpp"
-#include "nav/gps_observations.hpp"
-#include "nav/gps_range_model.hpp"
-#include "nav/laser_range_model.hpp"
-#include "sim/campaign_scenario.hpp"
+#include "visors/nav/gps_observations.hpp"
+#include "visors/nav/gps_range_model.hpp"
+#include "visors/nav/laser_range_model.hpp"
+#include "visors/sim/campaign_scenario.hpp"
 
 namespace visors::nav_app {
 

@@ -9,8 +9,8 @@
 #include <fmt/core.h>
 
 #include "apps/nav/nav_replay.hpp"
-#include "report/html_text.hpp"
-#include "report/svg_plot.hpp"
+#include "visors/report/html_text.hpp"
+#include "visors/report/svg_plot.hpp"
 
 namespace visors::nav_app {
 namespace {

@@ -11,8 +11,8 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "core/state_vector.hpp"
-#include "nav/navigation_state.hpp"
+#include "visors/core/state_vector.hpp"
+#include "visors/nav/navigation_state.hpp"
 
 namespace visors::nav_app {
 

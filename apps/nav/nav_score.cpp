@@ -5,10 +5,10 @@
 #include <string_view>
 #include <vector>
 
-#include "core/rtn_frame.hpp"
-#include "nav/fix_truth.hpp"
-#include "nav/gps_measurement_model.hpp"
-#include "nav/gps_range_model.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/nav/fix_truth.hpp"
+#include "visors/nav/gps_measurement_model.hpp"
+#include "visors/nav/gps_range_model.hpp"
 
 namespace visors::nav_app {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "nav/cdgps_filter.hpp"
+#include "visors/nav/cdgps_filter.hpp"
 #include "apps/nav/nav_inputs.hpp"
 #include "apps/nav/nav_replay.hpp"
 

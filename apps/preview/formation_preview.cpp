@@ -9,19 +9,19 @@
 #include <Eigen/Geometry>
 #include <fmt/os.h>
 
-#include "astro/j2_secular.hpp"
-#include "astro/keplerian_elements.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "astro/roe_rtn_map.hpp"
-#include "astro/roe_stm.hpp"
-#include "astro/sun_moon.hpp"
-#include "core/constants.hpp"
-#include "core/earth_frames.hpp"
-#include "core/eop.hpp"
-#include "core/files/data_path.hpp"
-#include "core/files/eop_file.hpp"
-#include "core/rtn_frame.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/astro/roe_rtn_map.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/astro/sun_moon.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/eop.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/eop_file.hpp"
+#include "visors/core/rtn_frame.hpp"
 
 namespace visors::preview {
 namespace {

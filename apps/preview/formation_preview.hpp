@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/status.hpp"
+#include "visors/core/status.hpp"
 #include "apps/preview/preview_scenario.hpp"
 
 namespace visors::preview {

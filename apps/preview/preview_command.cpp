@@ -6,7 +6,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "core/files/data_path.hpp"
+#include "visors/core/files/data_path.hpp"
 #include "apps/preview/formation_preview.hpp"
 #include "apps/preview/preview_scenario.hpp"
 

@@ -3,9 +3,9 @@
 #include <cctype>
 #include <cmath>
 
-#include "config/toml_fields.hpp"
-#include "core/angles.hpp"
-#include "core/files/text_file.hpp"
+#include "visors/config/toml_fields.hpp"
+#include "visors/core/angles.hpp"
+#include "visors/core/files/text_file.hpp"
 
 namespace visors::preview {
 namespace {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/constants.hpp"
-#include "core/gps_time.hpp"
-#include "core/status.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/status.hpp"
 
 namespace visors::preview {
 

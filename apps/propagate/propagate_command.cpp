@@ -11,13 +11,13 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/constants.hpp"
-#include "core/files/data_path.hpp"
-#include "dynamics/files/ephemeris_file.hpp"
-#include "dynamics/files/force_model_files.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/orbit_propagator.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/dynamics/files/ephemeris_file.hpp"
+#include "visors/dynamics/files/force_model_files.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
 #include "apps/propagate/propagate_scenario.hpp"
 
 namespace visors::propagate {

@@ -4,12 +4,12 @@
 #include <cctype>
 #include <cmath>
 
-#include "astro/keplerian_elements.hpp"
-#include "config/force_model_toml.hpp"
-#include "config/toml_fields.hpp"
-#include "core/angles.hpp"
-#include "core/constants.hpp"
-#include "core/files/text_file.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/config/force_model_toml.hpp"
+#include "visors/config/toml_fields.hpp"
+#include "visors/core/angles.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/files/text_file.hpp"
 
 namespace visors::propagate {
 namespace {

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "core/gps_time.hpp"
-#include "core/state_vector.hpp"
-#include "core/status.hpp"
-#include "dynamics/force_model_config.hpp"
-#include "dynamics/orbit_propagator.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/state_vector.hpp"
+#include "visors/core/status.hpp"
+#include "visors/dynamics/force_model_config.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
 
 namespace visors::propagate {
 

@@ -4,7 +4,7 @@
 
 #include <fmt/core.h>
 
-#include "report/report.hpp"
+#include "visors/report/report.hpp"
 
 namespace visors::report {
 namespace {

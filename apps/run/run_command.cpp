@@ -10,11 +10,11 @@
 
 #include <fmt/core.h>
 
-#include "core/files/data_path.hpp"
-#include "core/files/text_file.hpp"
-#include "report/report.hpp"
-#include "sim/campaign_simulation.hpp"
-#include "sim/gnss_simulation.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/text_file.hpp"
+#include "visors/report/report.hpp"
+#include "visors/sim/campaign_simulation.hpp"
+#include "visors/sim/gnss_simulation.hpp"
 
 namespace visors::run {
 namespace {

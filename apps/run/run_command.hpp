@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "sim/campaign_scenario.hpp"
+#include "visors/sim/campaign_scenario.hpp"
 
 namespace visors::run {
 

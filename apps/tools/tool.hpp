@@ -14,9 +14,9 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "astro/keplerian_elements.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "core/status.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/core/status.hpp"
 
 namespace visors::tools {
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "control/maneuver_buffer.hpp"
+#include "visors/control/maneuver_buffer.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -1,4 +1,4 @@
-// `visors tool conic`: the embedded interior-point conic solver of src/optim on one problem.
+// `visors tool conic`: the embedded interior-point conic solver of src/visors/optim on one problem.
 //   {"c":[n], "G":[[m x n]], "h":[m], "dims":{"l":k, "q":[q1,...]}, "A"?:[[p x n]], "b"?:[p],
 //    "P"?:[[n x n]]}
 //     -> {"status", "x", "y", "z", "s", "primal_objective", "dual_objective", "iterations",
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "optim/conic_problem.hpp"
-#include "optim/conic_solver.hpp"
+#include "visors/optim/conic_problem.hpp"
+#include "visors/optim/conic_solver.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

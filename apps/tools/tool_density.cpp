@@ -28,14 +28,14 @@
 #include <string>
 #include <vector>
 
-#include "core/earth_frames.hpp"
-#include "core/eop.hpp"
-#include "core/geodetic.hpp"
-#include "core/gps_time.hpp"
-#include "core/files/data_path.hpp"
-#include "dynamics/files/nrlmsise00_file.hpp"
-#include "dynamics/harris_priester.hpp"
-#include "dynamics/nrlmsise00.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/eop.hpp"
+#include "visors/core/geodetic.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/dynamics/files/nrlmsise00_file.hpp"
+#include "visors/dynamics/harris_priester.hpp"
+#include "visors/dynamics/nrlmsise00.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -9,9 +9,9 @@
 #include <string_view>
 #include <vector>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/angles.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/angles.hpp"
+#include "visors/core/constants.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

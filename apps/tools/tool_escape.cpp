@@ -8,9 +8,9 @@
 #include <cmath>
 #include <string>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/constants.hpp"
-#include "safety/escape_maneuver.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/safety/escape_maneuver.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -13,12 +13,12 @@
 
 #include <fmt/core.h>
 
-#include "core/constants.hpp"
-#include "core/earth_frames.hpp"
-#include "core/eop.hpp"
-#include "core/files/data_path.hpp"
-#include "core/files/eop_file.hpp"
-#include "core/gps_time.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/eop.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/eop_file.hpp"
+#include "visors/core/gps_time.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -7,10 +7,10 @@
 
 #include <string>
 
-#include "core/files/data_path.hpp"
-#include "gnss/broadcast_ephemeris.hpp"
-#include "gnss/ephemeris_set.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/gnss/broadcast_ephemeris.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

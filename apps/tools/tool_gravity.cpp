@@ -9,10 +9,10 @@
 #include <cmath>
 #include <string>
 
-#include "core/constants.hpp"
-#include "dynamics/files/icgem_file.hpp"
-#include "dynamics/gravity_field.hpp"
-#include "dynamics/spherical_harmonic_gravity.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/dynamics/files/icgem_file.hpp"
+#include "visors/dynamics/gravity_field.hpp"
+#include "visors/dynamics/spherical_harmonic_gravity.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

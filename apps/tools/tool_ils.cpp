@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "nav/integer_least_squares.hpp"
+#include "visors/nav/integer_least_squares.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

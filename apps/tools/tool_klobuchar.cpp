@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "gnss/klobuchar.hpp"
+#include "visors/gnss/klobuchar.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "control/closed_form_planner.hpp"
-#include "control/least_squares_planner.hpp"
-#include "control/reachable_set_planner.hpp"
+#include "visors/control/closed_form_planner.hpp"
+#include "visors/control/least_squares_planner.hpp"
+#include "visors/control/reachable_set_planner.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "astro/keplerian_elements.hpp"
-#include "astro/relative_orbital_elements.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <string>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/constants.hpp"
-#include "safety/passive_safety.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/safety/passive_safety.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "astro/keplerian_elements.hpp"
-#include "astro/roe_stm.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/core/constants.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -11,9 +11,9 @@
 
 #include <string>
 
-#include "astro/apparent_sun.hpp"
-#include "core/constants.hpp"
-#include "core/gps_time.hpp"
+#include "visors/astro/apparent_sun.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/gps_time.hpp"
 #include "apps/tools/tool.hpp"
 
 namespace visors::tools {

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "nav/integer_least_squares.hpp"
+#include "visors/nav/integer_least_squares.hpp"
 
 int main() {
   auto created = visors::nav::IntegerLeastSquares::create();

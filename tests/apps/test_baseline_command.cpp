@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/files/data_path.hpp"
-#include "gnss/gnss_test_data.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
 #include "support/temp_file.hpp"
 

@@ -3,8 +3,8 @@
 // "nav.<key>".
 #include <gtest/gtest.h>
 
-#include "config/cdgps_settings_toml.hpp"
-#include "config/toml_fields.hpp"
+#include "visors/config/cdgps_settings_toml.hpp"
+#include "visors/config/toml_fields.hpp"
 
 namespace visors::config {
 namespace {

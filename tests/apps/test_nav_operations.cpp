@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/files/data_path.hpp"
-#include "gnss/gnss_test_data.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
 #include "support/csv_table.hpp"
 #include "support/temp_file.hpp"

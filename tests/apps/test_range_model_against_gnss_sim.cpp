@@ -20,13 +20,13 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
-#include "core/files/csv_file.hpp"
-#include "core/files/data_path.hpp"
-#include "core/files/eop_file.hpp"
-#include "gnss/ephemeris_set.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/gnss_test_data.hpp"
-#include "nav/gps_range_model.hpp"
+#include "visors/core/files/csv_file.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/eop_file.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/gnss_test_data.hpp"
+#include "visors/nav/gps_range_model.hpp"
 #include "run_tool.hpp"
 #include "support/temp_file.hpp"
 

@@ -7,9 +7,9 @@
 #include <utility>
 
 #include "apps/run_tool.hpp"
-#include "core/gps_time.hpp"
-#include "dynamics/files/nrlmsise00_file.hpp"
-#include "dynamics/nrlmsise00.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/dynamics/files/nrlmsise00_file.hpp"
+#include "visors/dynamics/nrlmsise00.hpp"
 
 namespace {
 

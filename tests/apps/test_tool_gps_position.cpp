@@ -5,7 +5,7 @@
 #include <string>
 
 #include "apps/run_tool.hpp"
-#include "core/files/data_path.hpp"
+#include "visors/core/files/data_path.hpp"
 
 namespace {
 

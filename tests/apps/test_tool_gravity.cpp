@@ -11,9 +11,9 @@
 #include <string>
 
 #include "apps/run_tool.hpp"
-#include "core/files/data_path.hpp"
-#include "dynamics/files/icgem_file.hpp"
-#include "dynamics/gravity_field.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/dynamics/files/icgem_file.hpp"
+#include "visors/dynamics/gravity_field.hpp"
 #include "support/geographiclib_gravity.hpp"
 
 namespace {

@@ -8,8 +8,8 @@
 #include <Eigen/Geometry>
 
 #include "apps/run_tool.hpp"
-#include "astro/apparent_sun.hpp"
-#include "core/gps_time.hpp"
+#include "visors/astro/apparent_sun.hpp"
+#include "visors/core/gps_time.hpp"
 
 namespace {
 

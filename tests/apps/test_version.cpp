@@ -5,7 +5,7 @@
 #include <string>
 
 #include "apps/run_tool.hpp"
-#include "core/version.hpp"
+#include "visors/core/version.hpp"
 
 namespace {
 

@@ -7,9 +7,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/constants.hpp"
-#include "core/rtn_frame.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/rtn_frame.hpp"
 
 namespace visors::astro::test {
 

@@ -10,9 +10,9 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/apparent_sun.hpp"
-#include "astro/sun_moon.hpp"
-#include "core/gps_time.hpp"
+#include "visors/astro/apparent_sun.hpp"
+#include "visors/astro/sun_moon.hpp"
+#include "visors/core/gps_time.hpp"
 
 namespace {
 

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "astro/control_input_matrix.hpp"
-#include "astro/relative_orbital_elements.hpp"
+#include "visors/astro/control_input_matrix.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
 #include "astro_test_support.hpp"
-#include "core/rtn_frame.hpp"
+#include "visors/core/rtn_frame.hpp"
 
 namespace {
 using namespace visors::astro;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "astro/j2_secular.hpp"
+#include "visors/astro/j2_secular.hpp"
 #include "astro_test_support.hpp"
 
 namespace {

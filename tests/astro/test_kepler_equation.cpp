@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include "astro/kepler_equation.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/kepler_equation.hpp"
+#include "visors/core/constants.hpp"
 
 namespace {
 using namespace visors::astro;

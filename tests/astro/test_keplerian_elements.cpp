@@ -6,11 +6,11 @@
 #include <limits>
 #include <vector>
 
-#include "astro/kepler_equation.hpp"
-#include "astro/keplerian_elements.hpp"
-#include "astro/quasi_nonsingular_elements.hpp"
-#include "core/angles.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/kepler_equation.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/quasi_nonsingular_elements.hpp"
+#include "visors/core/angles.hpp"
+#include "visors/core/constants.hpp"
 
 namespace {
 using namespace visors::astro;

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <vector>
 
-#include "astro/j2_secular.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/quasi_nonsingular_elements.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/quasi_nonsingular_elements.hpp"
 #include "astro_test_support.hpp"
-#include "core/angles.hpp"
+#include "visors/core/angles.hpp"
 
 namespace {
 using namespace visors::astro;

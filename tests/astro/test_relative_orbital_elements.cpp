@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "astro/relative_orbital_elements.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
 #include "astro_test_support.hpp"
-#include "core/constants.hpp"
+#include "visors/core/constants.hpp"
 
 namespace {
 using namespace visors::astro;

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "astro/j2_secular.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "astro/roe_rtn_map.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/astro/roe_rtn_map.hpp"
 #include "astro_test_support.hpp"
 
 namespace {

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <vector>
 
-#include "astro/j2_secular.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "astro/roe_stm.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/astro/roe_stm.hpp"
 #include "astro_test_support.hpp"
-#include "core/angles.hpp"
+#include "visors/core/angles.hpp"
 
 namespace {
 using namespace visors::astro;

@@ -12,8 +12,8 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/sun_moon.hpp"
-#include "core/gps_time.hpp"
+#include "visors/astro/sun_moon.hpp"
+#include "visors/core/gps_time.hpp"
 
 namespace {
 

@@ -8,10 +8,10 @@
 
 #include <cmath>
 
-#include "baseline/baseline_processor.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/files/rinex_obs_file.hpp"
-#include "gnss/gnss_test_data.hpp"
+#include "visors/baseline/baseline_processor.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/files/rinex_obs_file.hpp"
+#include "visors/gnss/gnss_test_data.hpp"
 
 namespace visors::baseline {
 namespace {

@@ -10,12 +10,12 @@
 #include <cmath>
 #include <vector>
 
-#include "baseline/receiver_observables.hpp"
-#include "baseline/signal_model.hpp"
-#include "core/constants.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/files/rinex_obs_file.hpp"
-#include "gnss/gnss_test_data.hpp"
+#include "visors/baseline/receiver_observables.hpp"
+#include "visors/baseline/signal_model.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/files/rinex_obs_file.hpp"
+#include "visors/gnss/gnss_test_data.hpp"
 
 namespace visors::baseline {
 namespace {

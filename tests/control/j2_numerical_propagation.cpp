@@ -1,13 +1,13 @@
-#include "control/j2_numerical_propagation.hpp"
+#include "visors/control/j2_numerical_propagation.hpp"
 
 #include <gtest/gtest.h>
 
-#include "astro/mean_osculating.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "core/constants.hpp"
-#include "dynamics/files/force_model_files.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/orbit_propagator.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/dynamics/files/force_model_files.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
 
 namespace visors::control::test {
 

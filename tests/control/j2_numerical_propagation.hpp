@@ -3,9 +3,9 @@
 
 #include <vector>
 
-#include "astro/keplerian_elements.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "control/impulse.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/control/impulse.hpp"
 
 namespace visors::control::test {
 

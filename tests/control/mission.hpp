@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "astro/keplerian_elements.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/core/constants.hpp"
 
 namespace visors::control::test {
 

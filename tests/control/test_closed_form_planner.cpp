@@ -8,15 +8,15 @@
 #include <string>
 #include <vector>
 
-#include "astro/j2_secular.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "astro/roe_stm.hpp"
-#include "control/closed_form_planner.hpp"
-#include "control/j2_numerical_propagation.hpp"
-#include "control/mission.hpp"
-#include "control/delta_v_lower_bound.hpp"
-#include "core/gps_time.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/control/closed_form_planner.hpp"
+#include "visors/control/j2_numerical_propagation.hpp"
+#include "visors/control/mission.hpp"
+#include "visors/control/delta_v_lower_bound.hpp"
+#include "visors/core/gps_time.hpp"
 
 namespace visors::control {
 namespace {

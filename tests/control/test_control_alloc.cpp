@@ -5,14 +5,14 @@
 
 #include <gtest/gtest.h>
 
-#include "astro/j2_secular.hpp"
-#include "control/closed_form_planner.hpp"
-#include "control/impulse_effect.hpp"
-#include "control/least_squares_planner.hpp"
-#include "control/maneuver_buffer.hpp"
-#include "control/mission.hpp"
-#include "control/reachable_set_planner.hpp"
-#include "control/stochastic_mpc.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/control/closed_form_planner.hpp"
+#include "visors/control/impulse_effect.hpp"
+#include "visors/control/least_squares_planner.hpp"
+#include "visors/control/maneuver_buffer.hpp"
+#include "visors/control/mission.hpp"
+#include "visors/control/reachable_set_planner.hpp"
+#include "visors/control/stochastic_mpc.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace visors::control {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "astro/j2_secular.hpp"
-#include "control/closed_form_planner.hpp"
-#include "control/delta_v_lower_bound.hpp"
-#include "core/constants.hpp"
-#include "optim/conic_solver.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/control/closed_form_planner.hpp"
+#include "visors/control/delta_v_lower_bound.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/optim/conic_solver.hpp"
 
 namespace visors::control {
 namespace {

@@ -7,15 +7,15 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "astro/keplerian_elements.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "astro/roe_rtn_map.hpp"
-#include "astro/roe_stm.hpp"
-#include "astro/apparent_sun.hpp"
-#include "astro/j2_secular.hpp"
-#include "control/guidance.hpp"
-#include "core/constants.hpp"
-#include "core/rtn_frame.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/astro/roe_rtn_map.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/astro/apparent_sun.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/control/guidance.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/rtn_frame.hpp"
 
 namespace visors::control {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "control/impulse.hpp"
-#include "control/impulse_effect.hpp"
+#include "visors/control/impulse.hpp"
+#include "visors/control/impulse_effect.hpp"
 
 namespace visors::control {
 namespace {

@@ -8,12 +8,12 @@
 #include <iostream>
 #include <vector>
 
-#include "astro/j2_secular.hpp"
-#include "astro/roe_stm.hpp"
-#include "control/closed_form_planner.hpp"
-#include "control/j2_numerical_propagation.hpp"
-#include "control/mission.hpp"
-#include "control/least_squares_planner.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/control/closed_form_planner.hpp"
+#include "visors/control/j2_numerical_propagation.hpp"
+#include "visors/control/mission.hpp"
+#include "visors/control/least_squares_planner.hpp"
 
 namespace visors::control {
 namespace {

@@ -6,12 +6,12 @@
 
 #include <gtest/gtest.h>
 
-#include "astro/keplerian_elements.hpp"
-#include "control/impulse_effect.hpp"
-#include "control/j2_numerical_propagation.hpp"
-#include "control/maneuver_buffer.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/control/impulse_effect.hpp"
+#include "visors/control/j2_numerical_propagation.hpp"
+#include "visors/control/maneuver_buffer.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/core/constants.hpp"
 
 namespace visors::control {
 namespace {

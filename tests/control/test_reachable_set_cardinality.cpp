@@ -12,10 +12,10 @@
 
 #include <Eigen/Dense>
 
-#include "astro/roe_stm.hpp"
-#include "control/impulse_effect.hpp"
-#include "control/mission.hpp"
-#include "control/reachable_set_planner.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/control/impulse_effect.hpp"
+#include "visors/control/mission.hpp"
+#include "visors/control/reachable_set_planner.hpp"
 
 namespace visors::control {
 namespace {

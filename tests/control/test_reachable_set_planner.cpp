@@ -17,12 +17,12 @@
 
 #include <Eigen/Dense>
 
-#include "astro/j2_secular.hpp"
-#include "astro/roe_stm.hpp"
-#include "control/mission.hpp"
-#include "control/impulse_effect.hpp"
-#include "control/reachable_set_planner.hpp"
-#include "optim/conic_solver.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/control/mission.hpp"
+#include "visors/control/impulse_effect.hpp"
+#include "visors/control/reachable_set_planner.hpp"
+#include "visors/optim/conic_solver.hpp"
 #include "support/temp_file.hpp"
 
 namespace visors::control {

@@ -9,17 +9,17 @@
 
 #include <Eigen/Dense>
 
-#include "astro/j2_secular.hpp"
-#include "astro/keplerian_elements.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/roe_stm.hpp"
-#include "control/impulse_effect.hpp"
-#include "control/mission.hpp"
-#include "control/stochastic_mpc.hpp"
-#include "core/gps_time.hpp"
-#include "dynamics/files/force_model_files.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/orbit_propagator.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/control/impulse_effect.hpp"
+#include "visors/control/mission.hpp"
+#include "visors/control/stochastic_mpc.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/dynamics/files/force_model_files.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
 
 namespace visors::control {
 namespace {

@@ -9,13 +9,13 @@
 
 #include <gtest/gtest.h>
 
-#include "astro/j2_secular.hpp"
-#include "astro/keplerian_elements.hpp"
-#include "astro/roe_rtn_map.hpp"
-#include "control/closed_form_planner.hpp"
-#include "control/guidance.hpp"
-#include "control/impulse_effect.hpp"
-#include "core/constants.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/roe_rtn_map.hpp"
+#include "visors/control/closed_form_planner.hpp"
+#include "visors/control/guidance.hpp"
+#include "visors/control/impulse_effect.hpp"
+#include "visors/core/constants.hpp"
 
 namespace visors::control {
 namespace {

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "core/angles.hpp"
-#include "core/constants.hpp"
+#include "visors/core/angles.hpp"
+#include "visors/core/constants.hpp"
 
 namespace {
 using visors::core::kPi;

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/files/csv_file.hpp"
+#include "visors/core/files/csv_file.hpp"
 #include "support/temp_file.hpp"
 
 namespace visors::core::files {

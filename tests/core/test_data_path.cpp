@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "core/files/data_path.hpp"
+#include "visors/core/files/data_path.hpp"
 
 namespace {
 
@@ -48,10 +48,17 @@ TEST_F(DataPath, MissingFileIsNullopt) {
   EXPECT_FALSE(visors::core::files::find_data_file("eop/none.txt").has_value());
 }
 
-TEST_F(DataPath, RepositoryDataFolderIsLast) {
+// The environment's two entries, then the repository's data/ and the installed share/visors/data.
+TEST_F(DataPath, RepositoryDataFolderAfterTheEnvironment) {
   const auto folders = visors::core::files::data_search_path();
-  ASSERT_EQ(folders.size(), 3u);
-  EXPECT_EQ(folders.back().filename(), "data");
+  ASSERT_EQ(folders.size(), 4u);
+  EXPECT_EQ(folders[2].filename(), "data");
+}
+
+TEST_F(DataPath, InstalledDataFolderIsLast) {
+  const auto folders = visors::core::files::data_search_path();
+  ASSERT_EQ(folders.size(), 4u);
+  EXPECT_EQ(folders.back().parent_path().filename(), "visors");
 }
 
 }  // namespace

@@ -10,8 +10,8 @@
 
 #include <Eigen/Geometry>
 
-#include "core/constants.hpp"
-#include "core/earth_frames.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/earth_frames.hpp"
 
 namespace {
 

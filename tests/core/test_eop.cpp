@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "core/constants.hpp"
-#include "core/eop.hpp"
-#include "core/files/data_path.hpp"
-#include "core/files/eop_file.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/eop.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/eop_file.hpp"
 #include "support/temp_file.hpp"
 
 namespace {

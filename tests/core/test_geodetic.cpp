@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/constants.hpp"
-#include "core/geodetic.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/geodetic.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <string>
 
-#include "core/gps_time.hpp"
+#include "visors/core/gps_time.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/rtn_frame.hpp"
+#include "visors/core/rtn_frame.hpp"
 
 namespace {
 

@@ -11,9 +11,9 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/constants.hpp"
-#include "dynamics/dormand_prince87.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/dynamics/dormand_prince87.hpp"
 
 namespace {
 using namespace visors::dynamics;

@@ -5,9 +5,9 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/constants.hpp"
-#include "dynamics/drag.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/dynamics/drag.hpp"
 
 namespace {
 

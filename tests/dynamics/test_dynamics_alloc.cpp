@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "astro/keplerian_elements.hpp"
-#include "dynamics/files/force_model_files.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/orbit_propagator.hpp"
-#include "dynamics/spherical_harmonic_gravity.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/dynamics/files/force_model_files.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
+#include "visors/dynamics/spherical_harmonic_gravity.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace visors::dynamics {

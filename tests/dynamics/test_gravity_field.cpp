@@ -8,9 +8,9 @@
 #include <fstream>
 #include <string>
 
-#include "core/files/data_path.hpp"
-#include "dynamics/files/icgem_file.hpp"
-#include "dynamics/gravity_field.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/dynamics/files/icgem_file.hpp"
+#include "visors/dynamics/gravity_field.hpp"
 
 namespace {
 using visors::dynamics::GravityField;

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "core/constants.hpp"
-#include "core/files/data_path.hpp"
-#include "dynamics/files/harris_priester_file.hpp"
-#include "dynamics/harris_priester.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/dynamics/files/harris_priester_file.hpp"
+#include "visors/dynamics/harris_priester.hpp"
 #include "support/temp_file.hpp"
 
 namespace {

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "core/constants.hpp"
-#include "core/geodetic.hpp"
-#include "core/gps_time.hpp"
-#include "dynamics/files/nrlmsise00_file.hpp"
-#include "dynamics/nrlmsise00.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/geodetic.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/dynamics/files/nrlmsise00_file.hpp"
+#include "visors/dynamics/nrlmsise00.hpp"
 
 namespace {
 

@@ -7,17 +7,17 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "astro/j2_secular.hpp"
-#include "astro/keplerian_elements.hpp"
-#include "astro/mean_osculating.hpp"
-#include "core/constants.hpp"
-#include "core/earth_frames.hpp"
-#include "core/rtn_frame.hpp"
-#include "dynamics/files/force_model_files.hpp"
-#include "dynamics/files/icgem_file.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/gravity_field.hpp"
-#include "dynamics/orbit_propagator.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/dynamics/files/force_model_files.hpp"
+#include "visors/dynamics/files/icgem_file.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/gravity_field.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
 
 namespace visors::dynamics {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dynamics/solar_radiation_pressure.hpp"
+#include "visors/dynamics/solar_radiation_pressure.hpp"
 
 namespace visors::dynamics {
 namespace {

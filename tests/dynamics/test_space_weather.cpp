@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "core/files/data_path.hpp"
-#include "core/gps_time.hpp"
-#include "dynamics/files/space_weather_file.hpp"
-#include "dynamics/space_weather.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/dynamics/files/space_weather_file.hpp"
+#include "visors/dynamics/space_weather.hpp"
 #include "support/temp_file.hpp"
 
 namespace {

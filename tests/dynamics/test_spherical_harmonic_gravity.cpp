@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "core/files/data_path.hpp"
-#include "dynamics/files/icgem_file.hpp"
-#include "dynamics/gravity_field.hpp"
-#include "dynamics/spherical_harmonic_gravity.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/dynamics/files/icgem_file.hpp"
+#include "visors/dynamics/gravity_field.hpp"
+#include "visors/dynamics/spherical_harmonic_gravity.hpp"
 #include "support/geographiclib_gravity.hpp"
 
 namespace {

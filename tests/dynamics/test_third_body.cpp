@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dynamics/third_body.hpp"
+#include "visors/dynamics/third_body.hpp"
 
 namespace visors::dynamics {
 namespace {

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "astro/j2_secular.hpp"
-#include "astro/keplerian_elements.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "gnc/messages.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/gnc/messages.hpp"
 
 namespace visors::gnc::test {
 

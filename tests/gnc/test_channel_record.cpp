@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "gnc/channel_record.hpp"
-#include "gnc/crc32c.hpp"
+#include "visors/gnc/channel_record.hpp"
+#include "visors/gnc/crc32c.hpp"
 
 namespace visors::gnc {
 namespace {

@@ -7,9 +7,9 @@
 #include <optional>
 
 #include "formation_harness.hpp"
-#include "gnc/channel_record.hpp"
-#include "gnc/flight_component.hpp"
-#include "gnc/record_interface.hpp"
+#include "visors/gnc/channel_record.hpp"
+#include "visors/gnc/flight_component.hpp"
+#include "visors/gnc/record_interface.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "gnc/gnc_mode.hpp"
+#include "visors/gnc/gnc_mode.hpp"
 
 namespace {
 

@@ -4,15 +4,15 @@
 
 #include <cmath>
 
-#include "astro/j2_secular.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/apparent_sun.hpp"
-#include "core/rtn_frame.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/apparent_sun.hpp"
+#include "visors/core/rtn_frame.hpp"
 #include "formation_harness.hpp"
-#include "gnc/differential_drag_estimator.hpp"
-#include "gnc/gnc_config.hpp"
-#include "gnc/maneuver_queue.hpp"
-#include "gnc/observation_schedule.hpp"
+#include "visors/gnc/differential_drag_estimator.hpp"
+#include "visors/gnc/gnc_config.hpp"
+#include "visors/gnc/maneuver_queue.hpp"
+#include "visors/gnc/observation_schedule.hpp"
 
 namespace {
 

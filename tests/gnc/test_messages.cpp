@@ -3,7 +3,7 @@
 
 #include <limits>
 
-#include "gnc/messages.hpp"
+#include "visors/gnc/messages.hpp"
 #include "formation_harness.hpp"
 
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "formation_harness.hpp"
-#include "gnc/record_interface.hpp"
+#include "visors/gnc/record_interface.hpp"
 
 namespace visors::gnc {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/files/data_path.hpp"
+#include "visors/core/files/data_path.hpp"
 
 namespace visors::test {
 

@@ -5,9 +5,9 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "gnss/almanac.hpp"
-#include "gnss/files/almanac_file.hpp"
-#include "gnss/gps_constants.hpp"
+#include "visors/gnss/almanac.hpp"
+#include "visors/gnss/files/almanac_file.hpp"
+#include "visors/gnss/gps_constants.hpp"
 #include "support/temp_file.hpp"
 
 namespace visors::gnss {

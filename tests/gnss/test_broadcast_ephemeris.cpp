@@ -1,10 +1,10 @@
 // The IS-GPS-200 user algorithm on real records of brdc1820.10n (IGS, 2010-07-01).
 #include <gtest/gtest.h>
 
-#include "gnss/broadcast_ephemeris.hpp"
-#include "gnss/ephemeris_set.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/gps_constants.hpp"
+#include "visors/gnss/broadcast_ephemeris.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/gps_constants.hpp"
 #include "gnss_test_data.hpp"
 
 namespace visors::gnss {

@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "gnss/ephemeris_set.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/files/sp3_file.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/files/sp3_file.hpp"
 #include "gnss_test_data.hpp"
 
 namespace visors::gnss {

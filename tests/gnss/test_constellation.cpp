@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gnss/constellation.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/constellation.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
 #include "gnss_test_data.hpp"
 
 namespace visors::gnss {

@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "gnss/ephemeris_set.hpp"
-#include "gnss/ephemeris_store.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/gnss/ephemeris_store.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
 #include "gnss_test_data.hpp"
 
 namespace visors::gnss {

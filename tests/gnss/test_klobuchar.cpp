@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "gnss/klobuchar.hpp"
+#include "visors/gnss/klobuchar.hpp"
 
 namespace {
 

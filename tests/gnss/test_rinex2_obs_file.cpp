@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gnss/files/rinex_obs_codes.hpp"
-#include "gnss/files/rinex_obs_file.hpp"
+#include "visors/gnss/files/rinex_obs_codes.hpp"
+#include "visors/gnss/files/rinex_obs_file.hpp"
 #include "gnss_test_data.hpp"
 #include "support/temp_file.hpp"
 

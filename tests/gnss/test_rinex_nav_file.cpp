@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
 #include "gnss_test_data.hpp"
 #include "support/temp_file.hpp"
 

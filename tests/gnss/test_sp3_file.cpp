@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gnss/files/sp3_file.hpp"
+#include "visors/gnss/files/sp3_file.hpp"
 #include "gnss_test_data.hpp"
 #include "support/temp_file.hpp"
 

@@ -15,7 +15,7 @@
 #include <limits>
 #include <numbers>
 
-#include "gnss/troposphere.hpp"
+#include "visors/gnss/troposphere.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 #pragma once
-// A tiny campaign for the tests of src/mc: a base scenario of 300 s of standby with ideal
+// A tiny campaign for the tests of src/visors/mc: a base scenario of 300 s of standby with ideal
 // navigation (a fraction of a second per run), a swept key and a dispersion, written to a fresh
 // folder.
 
@@ -9,7 +9,7 @@
 
 #include <unistd.h>
 
-#include "mc/sqlite_database.hpp"
+#include "visors/mc/sqlite_database.hpp"
 
 namespace visors::mc::test {
 

@@ -1,6 +1,6 @@
 // mc/box_statistics against numpy: numpy.percentile([1..9, 100], (25, 50, 75)) = (3.25, 5.5, 7.75)
 // (linear interpolation, numpy's default); Tukey fences 3.25 - 6.75 and 7.75 + 6.75 = 14.5.
-#include "mc/box_statistics.hpp"
+#include "visors/mc/box_statistics.hpp"
 
 #include <gtest/gtest.h>
 

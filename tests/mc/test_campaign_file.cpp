@@ -1,6 +1,6 @@
 // mc/campaign_file: the campaign TOML, its checks against the base scenario, errors naming the
 // field.
-#include "mc/campaign_file.hpp"
+#include "visors/mc/campaign_file.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // mc/campaign_report from a store filled with made-up runs whose figures are known: the value
 // table counts each value's attempts and successes, failed runs are listed with their reason,
 // and each sweep gets its two figures.
-#include "mc/campaign_report.hpp"
+#include "visors/mc/campaign_report.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "mc/run_plan.hpp"
+#include "visors/mc/run_plan.hpp"
 #include "mc_test_campaign.hpp"
 
 namespace visors::mc {

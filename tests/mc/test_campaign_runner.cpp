@@ -1,6 +1,6 @@
 // mc/campaign_runner: a run that read other data than the campaign is stored failed with the
 // reason, and a campaign does not resume on other data.
-#include "mc/campaign_runner.hpp"
+#include "visors/mc/campaign_runner.hpp"
 
 #include <gtest/gtest.h>
 

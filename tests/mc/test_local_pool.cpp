@@ -1,7 +1,7 @@
 // The campaign runner on the local pool: the stored results are the same with 1 and 2 processes
 // and after a kill -9 and a resume; a run that throws, crashes or outlives its time limit is a
 // failed run with its reason, and the campaign goes on.
-#include "mc/campaign_runner.hpp"
+#include "visors/mc/campaign_runner.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
 // `mpirun -n 2 visors mc` (mc/mpi_campaign.hpp) on the tiny campaign stores what one local process
 // stores: the runs depend on their index alone, not on the rank that ran them.
-#include "mc/mpi_campaign.hpp"
+#include "visors/mc/mpi_campaign.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
-#include "mc/campaign_runner.hpp"
+#include "visors/mc/campaign_runner.hpp"
 #include "mc_test_campaign.hpp"
 
 namespace visors::mc {

@@ -1,6 +1,6 @@
 // mc/run_plan: run order, seeds (splitmix64 against its published reference), common random
 // numbers, dispersion draws and the scenario of a run.
-#include "mc/run_plan.hpp"
+#include "visors/mc/run_plan.hpp"
 
 #include <gtest/gtest.h>
 

@@ -17,8 +17,8 @@
 #include <random>
 #include <string>
 
-#include "nav/ambiguity_acceptance.hpp"
-#include "nav/integer_least_squares.hpp"
+#include "visors/nav/ambiguity_acceptance.hpp"
+#include "visors/nav/integer_least_squares.hpp"
 #include "support/dd_geometry.hpp"
 
 namespace visors::nav {

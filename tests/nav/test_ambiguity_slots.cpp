@@ -5,7 +5,7 @@
 // when it sets; dense textbook batch update), driven by the same scripted and random sequences.
 // After every step: the fixed filter's active subset equals the reference through the PRN maps,
 // the rest of its layout is parked (checked here and by consistent()), the counts agree.
-#include "nav/ambiguity_slots.hpp"
+#include "visors/nav/ambiguity_slots.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +23,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "nav/scalar_update.hpp"
+#include "visors/nav/scalar_update.hpp"
 #include "support/random_orthogonal.hpp"
 
 namespace visors::nav {

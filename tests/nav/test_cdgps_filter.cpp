@@ -15,12 +15,12 @@
 
 #include <Eigen/Geometry>
 
-#include "gnss/ephemeris_set.hpp"
-#include "core/rtn_frame.hpp"
-#include "gnss/constellation.hpp"
-#include "gnss/gps_constants.hpp"
-#include "nav/cdgps_filter.hpp"
-#include "nav/orbit_time_update.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/gnss/constellation.hpp"
+#include "visors/gnss/gps_constants.hpp"
+#include "visors/nav/cdgps_filter.hpp"
+#include "visors/nav/orbit_time_update.hpp"
 #include "support/synthetic_gps.hpp"
 
 namespace visors::nav {

@@ -1,6 +1,6 @@
 // Single- to double-difference ambiguities (navigation digest sec. 6.1) against dense products
 // G P G' built independently here, and the textbook DD cofactor of independent SDs.
-#include "nav/double_difference.hpp"
+#include "visors/nav/double_difference.hpp"
 
 #include <gtest/gtest.h>
 

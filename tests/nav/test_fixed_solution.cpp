@@ -2,7 +2,7 @@
 // solutions: the equality-constrained least squares (KKT system, dense LU) for the exact
 // conditioning, and the information form of the Kalman update for the hold; the fixed constraints
 // of an integer solution; and an end-to-end SD filter state -> DD -> ILS -> fixed baseline.
-#include "nav/fixed_solution.hpp"
+#include "visors/nav/fixed_solution.hpp"
 
 #include <gtest/gtest.h>
 

@@ -25,7 +25,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "nav/gauss_markov.hpp"
+#include "visors/nav/gauss_markov.hpp"
 
 namespace visors::nav {
 namespace {

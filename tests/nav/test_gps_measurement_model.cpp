@@ -7,8 +7,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "gnss/gps_constants.hpp"
-#include "nav/gps_measurement_model.hpp"
+#include "visors/gnss/gps_constants.hpp"
+#include "visors/nav/gps_measurement_model.hpp"
 
 namespace visors::nav {
 namespace {

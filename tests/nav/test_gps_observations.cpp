@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "nav/gps_observations.hpp"
+#include "visors/nav/gps_observations.hpp"
 
 namespace visors::nav {
 namespace {

@@ -7,8 +7,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "core/constants.hpp"
-#include "nav/gps_range_model.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/nav/gps_range_model.hpp"
 
 namespace visors::nav {
 namespace {

@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
-#include "nav/bootstrap.hpp"
-#include "nav/integer_least_squares.hpp"
-#include "nav/lambda_reduction.hpp"
-#include "nav/rtklib_lambda_cases.hpp"
+#include "visors/nav/bootstrap.hpp"
+#include "visors/nav/integer_least_squares.hpp"
+#include "visors/nav/lambda_reduction.hpp"
+#include "visors/nav/rtklib_lambda_cases.hpp"
 #include "support/random_orthogonal.hpp"
 
 namespace visors::nav {

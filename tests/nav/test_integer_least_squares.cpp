@@ -1,11 +1,11 @@
 // Integer least squares (LAMBDA reduction + MLAMBDA search) against published results and an
 // independent brute-force enumeration.
-#include "nav/integer_least_squares.hpp"
+#include "visors/nav/integer_least_squares.hpp"
 
 #include <gtest/gtest.h>
 
-#include "nav/bootstrap.hpp"
-#include "nav/rtklib_lambda_cases.hpp"
+#include "visors/nav/bootstrap.hpp"
+#include "visors/nav/rtklib_lambda_cases.hpp"
 
 namespace visors::nav {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "nav/laser_range_model.hpp"
+#include "visors/nav/laser_range_model.hpp"
 
 namespace visors::nav {
 namespace {

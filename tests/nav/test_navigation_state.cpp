@@ -2,7 +2,7 @@
 // multipath states of nav/sd_multipath.hpp: 98) and its units.
 #include <gtest/gtest.h>
 
-#include "nav/navigation_state.hpp"
+#include "visors/nav/navigation_state.hpp"
 
 namespace visors::nav {
 namespace {

@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "core/rtn_frame.hpp"
-#include "dynamics/orbit_propagator.hpp"
-#include "nav/orbit_time_update.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
+#include "visors/nav/orbit_time_update.hpp"
 
 namespace visors::nav {
 namespace {

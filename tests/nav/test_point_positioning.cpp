@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "gnss/ephemeris_set.hpp"
-#include "nav/point_positioning.hpp"
+#include "visors/gnss/ephemeris_set.hpp"
+#include "visors/nav/point_positioning.hpp"
 #include "support/synthetic_gps.hpp"
 
 namespace visors::nav {

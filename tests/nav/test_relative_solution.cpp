@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "nav/relative_solution.hpp"
+#include "visors/nav/relative_solution.hpp"
 
 namespace visors::nav {
 namespace {

@@ -2,7 +2,7 @@
 // formulas evaluated independently on dynamic Eigen matrices: the Joseph form
 // (I - K H) P (I - K H)' + K R K' formed with the explicit n x n I - K H, the short form
 // (I - K H) P, and the batch update K = P H' (H P H' + R)^-1; the gate; refused input.
-#include "nav/scalar_update.hpp"
+#include "visors/nav/scalar_update.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // process they model: stationary variance sigma^2, autocovariance sigma^2 exp(-|dt| / tau)
 // (Brown & Hwang, Introduction to Random Signals and Applied Kalman Filtering, the first-order
 // Gauss-Markov process), and their life with the SDCP slots.
-#include "nav/sd_multipath.hpp"
+#include "visors/nav/sd_multipath.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <Eigen/Dense>
 #include <random>
 
-#include "nav/lambda_reduction.hpp"
-#include "nav/unimodular_transform.hpp"
+#include "visors/nav/lambda_reduction.hpp"
+#include "visors/nav/unimodular_transform.hpp"
 #include "support/random_orthogonal.hpp"
 
 namespace visors::nav {

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent oracle for the conic solver (src/optim): generates seeded conic programs, solves
+"""Independent oracle for the conic solver (src/visors/optim): generates seeded conic programs, solves
 them with CVXOPT (Debian python3-cvxopt; conelp for LP/SOCP, coneqp for QP) at tight
 tolerances and writes instances and reference results as JSON.
 

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "optim/conic_problem.hpp"
+#include "visors/optim/conic_problem.hpp"
 
 namespace visors::optim::test {
 

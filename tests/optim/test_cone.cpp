@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "optim/cone.hpp"
+#include "visors/optim/cone.hpp"
 
 namespace {
 

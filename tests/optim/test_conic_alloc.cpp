@@ -6,8 +6,8 @@
 
 #include <random>
 
-#include "optim/conic_solver.hpp"
-#include "optim/minimum_fuel_problem.hpp"
+#include "visors/optim/conic_solver.hpp"
+#include "visors/optim/minimum_fuel_problem.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace {

@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "optim/conic_solver.hpp"
+#include "visors/optim/conic_solver.hpp"
 
 namespace {
 

@@ -8,8 +8,8 @@
 
 #include <Eigen/Dense>
 
-#include "optim/conic_solver.hpp"
-#include "optim/minimum_fuel_problem.hpp"
+#include "visors/optim/conic_solver.hpp"
+#include "visors/optim/minimum_fuel_problem.hpp"
 
 namespace {
 

@@ -7,8 +7,8 @@
 
 #include <Eigen/LU>
 
-#include "optim/cone.hpp"
-#include "optim/separable_kkt.hpp"
+#include "visors/optim/cone.hpp"
+#include "visors/optim/separable_kkt.hpp"
 
 namespace {
 

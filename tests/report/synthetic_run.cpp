@@ -9,7 +9,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "report/run_directory.hpp"
+#include "visors/report/run_directory.hpp"
 
 namespace visors::test {
 namespace {

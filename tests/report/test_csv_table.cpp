@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "report/csv_table.hpp"
-#include "report/run_data.hpp"
-#include "report/run_directory.hpp"
+#include "visors/report/csv_table.hpp"
+#include "visors/report/run_data.hpp"
+#include "visors/report/run_directory.hpp"
 #include "support/temp_file.hpp"
 #include "synthetic_run.hpp"
 

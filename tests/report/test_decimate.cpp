@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "report/decimate.hpp"
+#include "visors/report/decimate.hpp"
 
 namespace visors::report {
 namespace {

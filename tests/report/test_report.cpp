@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "report/report.hpp"
-#include "report/report_figures.hpp"
-#include "report/run_directory.hpp"
+#include "visors/report/report.hpp"
+#include "visors/report/report_figures.hpp"
+#include "visors/report/run_directory.hpp"
 #include "report_checks.hpp"
 #include "synthetic_run.hpp"
 

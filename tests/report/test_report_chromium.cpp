@@ -14,8 +14,8 @@
 
 #include <gtest/gtest.h>
 
-#include "report/report.hpp"
-#include "report/report_figures.hpp"
+#include "visors/report/report.hpp"
+#include "visors/report/report_figures.hpp"
 #include "report_checks.hpp"
 #include "synthetic_run.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "report/svg_plot.hpp"
+#include "visors/report/svg_plot.hpp"
 
 namespace visors::report {
 namespace {

@@ -11,21 +11,21 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/control_input_matrix.hpp"
-#include "astro/j2_secular.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "astro/roe_stm.hpp"
-#include "core/constants.hpp"
-#include "core/earth_frames.hpp"
-#include "core/gps_time.hpp"
-#include "core/rtn_frame.hpp"
-#include "dynamics/files/force_model_files.hpp"
-#include "dynamics/files/icgem_file.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/gravity_field.hpp"
-#include "dynamics/orbit_propagator.hpp"
-#include "safety/escape_maneuver.hpp"
+#include "visors/astro/control_input_matrix.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/dynamics/files/force_model_files.hpp"
+#include "visors/dynamics/files/icgem_file.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/gravity_field.hpp"
+#include "visors/dynamics/orbit_propagator.hpp"
+#include "visors/safety/escape_maneuver.hpp"
 
 namespace visors::safety {
 namespace {

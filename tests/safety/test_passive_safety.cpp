@@ -12,11 +12,11 @@
 
 #include <Eigen/Cholesky>
 
-#include "astro/j2_secular.hpp"
-#include "astro/roe_rtn_map.hpp"
-#include "astro/roe_stm.hpp"
-#include "core/constants.hpp"
-#include "safety/passive_safety.hpp"
+#include "visors/astro/j2_secular.hpp"
+#include "visors/astro/roe_rtn_map.hpp"
+#include "visors/astro/roe_stm.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/safety/passive_safety.hpp"
 
 namespace visors::safety {
 namespace {

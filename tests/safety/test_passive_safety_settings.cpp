@@ -1,7 +1,7 @@
 // Passive-safety configuration: mission defaults and validation.
 #include <gtest/gtest.h>
 
-#include "safety/passive_safety_settings.hpp"
+#include "visors/safety/passive_safety_settings.hpp"
 
 namespace visors::safety {
 namespace {

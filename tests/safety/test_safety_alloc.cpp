@@ -3,9 +3,9 @@
 // (support/allocation_counter.hpp, to be included in exactly one file of the executable).
 #include <gtest/gtest.h>
 
-#include "core/constants.hpp"
-#include "safety/passive_safety.hpp"
-#include "safety/escape_maneuver.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/safety/passive_safety.hpp"
+#include "visors/safety/escape_maneuver.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace visors::safety {

@@ -12,14 +12,14 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "core/constants.hpp"
-#include "core/files/data_path.hpp"
-#include "gnss/constellation.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/gps_constants.hpp"
-#include "sim/gps_receiver.hpp"
-#include "sim/gps_satellite_truth.hpp"
-#include "sim/random_stream.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/gnss/constellation.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/gps_constants.hpp"
+#include "visors/sim/gps_receiver.hpp"
+#include "visors/sim/gps_satellite_truth.hpp"
+#include "visors/sim/random_stream.hpp"
 
 namespace visors::test {
 

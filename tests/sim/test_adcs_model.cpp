@@ -6,9 +6,9 @@
 
 #include <Eigen/Geometry>
 
-#include "core/constants.hpp"
-#include "sim/adcs_model.hpp"
-#include "sim/campaign_scenario.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/sim/adcs_model.hpp"
+#include "visors/sim/campaign_scenario.hpp"
 
 namespace {
 

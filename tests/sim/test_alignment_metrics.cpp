@@ -1,7 +1,7 @@
 // Alignment metrics against hand-computed geometry (Sun along +x).
 #include <gtest/gtest.h>
 
-#include "sim/alignment_metrics.hpp"
+#include "visors/sim/alignment_metrics.hpp"
 
 namespace {
 

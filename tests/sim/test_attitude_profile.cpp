@@ -6,8 +6,8 @@
 
 #include <Eigen/Geometry>
 
-#include "core/constants.hpp"
-#include "sim/attitude_profile.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/sim/attitude_profile.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/constants.hpp"
-#include "sim/campaign_scenario.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/sim/campaign_scenario.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/crosslink.hpp"
+#include "visors/sim/crosslink.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // sim/data_provenance: the FNV-1a 64 checksum against the published test vectors (Fowler, Noll &
 // Vo, "FNV hash" test suite: "" -> cbf29ce484222325, "a" -> af63dc4c8601ec8c, "foobar" ->
 // 85944171f73967e8), sizes, and a scenario's files found or not.
-#include "sim/data_provenance.hpp"
+#include "visors/sim/data_provenance.hpp"
 
 #include <gtest/gtest.h>
 

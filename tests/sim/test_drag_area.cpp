@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/drag_area.hpp"
+#include "visors/sim/drag_area.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sim/error_budget.hpp"
+#include "visors/sim/error_budget.hpp"
 
 namespace {
 

@@ -10,10 +10,10 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "core/files/data_path.hpp"
-#include "core/files/text_file.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/text_file.hpp"
 #include "support/white_receiver.hpp"
-#include "sim/campaign_simulation.hpp"
+#include "visors/sim/campaign_simulation.hpp"
 
 namespace visors::sim {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "sim/campaign_scenario.hpp"
-#include "sim/flight_config.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/flight_config.hpp"
 
 namespace {
 

@@ -13,15 +13,15 @@
 #include <unistd.h>
 #include <vector>
 
-#include "astro/keplerian_elements.hpp"
-#include "astro/mean_osculating.hpp"
-#include "astro/relative_orbital_elements.hpp"
-#include "core/constants.hpp"
-#include "core/files/data_path.hpp"
-#include "sim/campaign_scenario.hpp"
-#include "sim/formation_keeping.hpp"
-#include "sim/gnss_settings.hpp"
-#include "sim/gnss_simulation.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/astro/mean_osculating.hpp"
+#include "visors/astro/relative_orbital_elements.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/formation_keeping.hpp"
+#include "visors/sim/gnss_settings.hpp"
+#include "visors/sim/gnss_simulation.hpp"
 
 namespace {
 

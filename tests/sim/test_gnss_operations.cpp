@@ -14,15 +14,15 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/apparent_sun.hpp"
-#include "core/files/data_path.hpp"
-#include "core/rtn_frame.hpp"
-#include "sim/attitude_profile.hpp"
-#include "sim/campaign_scenario.hpp"
-#include "sim/gnss_operations.hpp"
-#include "sim/gnss_simulation.hpp"
-#include "sim/random_stream.hpp"
-#include "sim/spacecraft_geometry.hpp"
+#include "visors/astro/apparent_sun.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/sim/attitude_profile.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/gnss_operations.hpp"
+#include "visors/sim/gnss_simulation.hpp"
+#include "visors/sim/random_stream.hpp"
+#include "visors/sim/spacecraft_geometry.hpp"
 
 namespace {
 

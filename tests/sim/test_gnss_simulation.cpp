@@ -14,20 +14,20 @@
 
 #include <Eigen/Geometry>
 
-#include "core/constants.hpp"
-#include "core/earth_frames.hpp"
-#include "core/eop.hpp"
-#include "core/files/data_path.hpp"
-#include "core/files/eop_file.hpp"
-#include "gnss/files/rinex_nav_file.hpp"
-#include "gnss/files/rinex_obs_file.hpp"
-#include "gnss/gps_constants.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/core/earth_frames.hpp"
+#include "visors/core/eop.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/eop_file.hpp"
+#include "visors/gnss/files/rinex_nav_file.hpp"
+#include "visors/gnss/files/rinex_obs_file.hpp"
+#include "visors/gnss/gps_constants.hpp"
 #include "support/white_receiver.hpp"
-#include "sim/adcs_model.hpp"
-#include "sim/campaign_scenario.hpp"
-#include "sim/gnss_simulation.hpp"
-#include "sim/navigation_message.hpp"
-#include "sim/random_stream.hpp"
+#include "visors/sim/adcs_model.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/gnss_simulation.hpp"
+#include "visors/sim/navigation_message.hpp"
+#include "visors/sim/random_stream.hpp"
 
 namespace {
 

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "astro/sun_moon.hpp"
+#include "visors/astro/sun_moon.hpp"
 #include "gps_test_world.hpp"
-#include "sim/attitude_profile.hpp"
+#include "visors/sim/attitude_profile.hpp"
 
 namespace visors::sim {
 namespace {

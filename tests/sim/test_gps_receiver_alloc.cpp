@@ -27,8 +27,8 @@ TEST(GpsReceiverAlloc, MeasureAllocatesNothing) {
 }  // namespace
 }  // namespace visors::sim
 
-#include "gnc/channel_record.hpp"
-#include "sim/navigation_setup.hpp"
+#include "visors/gnc/channel_record.hpp"
+#include "visors/sim/navigation_setup.hpp"
 
 namespace visors::sim {
 namespace {

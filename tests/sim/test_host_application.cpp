@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sim/host_application.hpp"
+#include "visors/sim/host_application.hpp"
 
 namespace {
 

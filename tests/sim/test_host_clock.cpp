@@ -3,8 +3,8 @@
 #include <cmath>
 #include <utility>
 
-#include "sim/campaign_scenario.hpp"
-#include "sim/host_clock.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/host_clock.hpp"
 
 namespace {
 

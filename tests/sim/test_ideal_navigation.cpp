@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "astro/keplerian_elements.hpp"
-#include "core/rtn_frame.hpp"
-#include "sim/ideal_navigation.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/sim/ideal_navigation.hpp"
 
 namespace {
 

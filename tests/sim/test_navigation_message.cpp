@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/navigation_message.hpp"
+#include "visors/sim/navigation_message.hpp"
 
 namespace {
 

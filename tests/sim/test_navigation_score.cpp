@@ -19,17 +19,17 @@
 
 #include <Eigen/Geometry>
 
-#include "core/files/data_path.hpp"
-#include "core/rtn_frame.hpp"
-#include "dynamics/force_model.hpp"
-#include "dynamics/gravity_field.hpp"
-#include "gnc/record_interface.hpp"
-#include "nav/orbit_time_update.hpp"
-#include "sim/campaign_scenario.hpp"
-#include "sim/flight_config.hpp"
-#include "sim/gps_world.hpp"
-#include "sim/navigation_score.hpp"
-#include "sim/navigation_setup.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/rtn_frame.hpp"
+#include "visors/dynamics/force_model.hpp"
+#include "visors/dynamics/gravity_field.hpp"
+#include "visors/gnc/record_interface.hpp"
+#include "visors/nav/orbit_time_update.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/flight_config.hpp"
+#include "visors/sim/gps_world.hpp"
+#include "visors/sim/navigation_score.hpp"
+#include "visors/sim/navigation_setup.hpp"
 
 namespace visors::sim {
 namespace {

@@ -3,8 +3,8 @@
 // and checks that the flight settings did not follow.
 #include <gtest/gtest.h>
 
-#include "sim/campaign_scenario.hpp"
-#include "sim/navigation_setup.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/navigation_setup.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // sim/paired_worker: both jobs run, the second on the worker thread when parallel, in order on the
 // calling thread otherwise; an exception of the second job reaches the caller; many hand-offs in
 // a row lose none.
-#include "sim/paired_worker.hpp"
+#include "visors/sim/paired_worker.hpp"
 
 #include <gtest/gtest.h>
 

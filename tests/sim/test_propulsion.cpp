@@ -6,8 +6,8 @@
 
 #include <Eigen/Geometry>
 
-#include "core/constants.hpp"
-#include "sim/propulsion.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/sim/propulsion.hpp"
 
 namespace {
 

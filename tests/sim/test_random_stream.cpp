@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "sim/random_stream.hpp"
+#include "visors/sim/random_stream.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "sim/campaign_simulation.hpp"
+#include "visors/sim/campaign_simulation.hpp"
 
 namespace {
 

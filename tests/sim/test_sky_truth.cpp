@@ -9,8 +9,8 @@
 
 #include <Eigen/Geometry>
 
-#include "astro/apparent_sun.hpp"
-#include "sim/sky_truth.hpp"
+#include "visors/astro/apparent_sun.hpp"
+#include "visors/sim/sky_truth.hpp"
 
 namespace {
 

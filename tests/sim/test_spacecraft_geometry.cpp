@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "core/constants.hpp"
-#include "sim/spacecraft_geometry.hpp"
+#include "visors/core/constants.hpp"
+#include "visors/sim/spacecraft_geometry.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "sim/random_stream.hpp"
-#include "sim/truth_dynamics.hpp"
+#include "visors/sim/random_stream.hpp"
+#include "visors/sim/truth_dynamics.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <GeographicLib/SphericalHarmonic.hpp>
 
-#include "dynamics/gravity_field.hpp"
+#include "visors/dynamics/gravity_field.hpp"
 
 namespace visors::test {
 

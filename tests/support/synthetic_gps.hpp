@@ -8,10 +8,10 @@
 #include <random>
 #include <vector>
 
-#include "gnss/broadcast_ephemeris.hpp"
-#include "gnss/gps_constants.hpp"
-#include "nav/gps_observations.hpp"
-#include "nav/gps_range_model.hpp"
+#include "visors/gnss/broadcast_ephemeris.hpp"
+#include "visors/gnss/gps_constants.hpp"
+#include "visors/nav/gps_observations.hpp"
+#include "visors/nav/gps_range_model.hpp"
 
 namespace visors::test {
 

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/campaign_scenario.hpp"
-#include "sim/gps_receiver.hpp"
+#include "visors/sim/campaign_scenario.hpp"
+#include "visors/sim/gps_receiver.hpp"
 
 namespace visors::test {
 

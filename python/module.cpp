@@ -1,0 +1,289 @@
+// The compiled part of the Python package `visors` (visors/__init__.py wraps it): the program's
+// entry points (a run, the GNSS simulation, the navigation replay, a Monte Carlo campaign, every
+// `visors tool`) and the integer least-squares search, each releasing the GIL while it computes.
+// Bad input raises ValueError with the field and the problem, as the CLI prints them.
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <toml++/toml.hpp>
+
+#include "apps/mc/mc_command.hpp"
+#include "apps/nav/nav_command.hpp"
+#include "apps/tools/tool.hpp"
+#include "visors/core/files/data_path.hpp"
+#include "visors/core/files/text_file.hpp"
+#include "visors/core/version.hpp"
+#include "visors/nav/integer_least_squares.hpp"
+#include "visors/report/report.hpp"
+#include "visors/sim/campaign_simulation.hpp"
+#include "visors/sim/gnss_simulation.hpp"
+
+namespace py = pybind11;
+using Json = nlohmann::json;
+
+namespace {
+
+// What a command prints on stderr while it runs, kept for the exception it may become (the
+// commands report bad input there, naming the option or the file and field).
+class CapturedStderr {
+ public:
+  CapturedStderr() : file_(std::tmpfile()) {
+    std::fflush(stderr);
+    saved_ = ::dup(STDERR_FILENO);
+    if (file_ != nullptr && saved_ >= 0) ::dup2(::fileno(file_), STDERR_FILENO);
+  }
+  CapturedStderr(const CapturedStderr&) = delete;
+  CapturedStderr& operator=(const CapturedStderr&) = delete;
+  ~CapturedStderr() { restore(); }
+  /// Restores stderr and returns what was written to it meanwhile.
+  std::string restore() {
+    if (saved_ < 0) return text_;
+    std::fflush(stderr);
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+    saved_ = -1;
+    if (file_ != nullptr) {
+      std::rewind(file_);
+      char buffer[4096];
+      for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file_)) > 0;) text_.append(buffer, n);
+      std::fclose(file_);
+      file_ = nullptr;
+    }
+    while (!text_.empty() && text_.back() == '\n') text_.pop_back();
+    return text_;
+  }
+
+ private:
+  std::FILE* file_;
+  int saved_ = -1;
+  std::string text_;
+};
+
+// A command's exit code as Python sees it: 2 (bad input) ValueError, 1 RuntimeError.
+void raise_on_exit_code(int code, const std::string& command, const std::string& stderr_text) {
+  if (code == 0) return;
+  const std::string message = stderr_text.empty() ? command + " failed (exit code " + std::to_string(code) + ")" : stderr_text;
+  if (code == 2) throw py::value_error(message);
+  throw std::runtime_error(message);
+}
+
+// JSON (the scenario given as a dict, serialised by the Python side) -> a TOML table.
+toml::table to_toml_table(const Json& object, const std::string& path);
+
+toml::array to_toml_array(const Json& array, const std::string& path) {
+  toml::array out;
+  for (std::size_t k = 0; k < array.size(); ++k) {
+    const Json& v = array[k];
+    const std::string field = path + "[" + std::to_string(k) + "]";
+    if (v.is_object()) out.push_back(to_toml_table(v, field));
+    else if (v.is_array()) out.push_back(to_toml_array(v, field));
+    else if (v.is_boolean()) out.push_back(v.get<bool>());
+    else if (v.is_number_integer()) out.push_back(v.get<std::int64_t>());
+    else if (v.is_number()) out.push_back(v.get<double>());
+    else if (v.is_string()) out.push_back(v.get<std::string>());
+    else throw py::value_error(field + ": must be a number, a string, a bool, a list or a dict");
+  }
+  return out;
+}
+
+toml::table to_toml_table(const Json& object, const std::string& path) {
+  toml::table out;
+  for (const auto& [key, v] : object.items()) {
+    const std::string field = path.empty() ? key : path + "." + key;
+    if (v.is_object()) out.insert(key, to_toml_table(v, field));
+    else if (v.is_array()) out.insert(key, to_toml_array(v, field));
+    else if (v.is_boolean()) out.insert(key, v.get<bool>());
+    else if (v.is_number_integer()) out.insert(key, v.get<std::int64_t>());
+    else if (v.is_number()) out.insert(key, v.get<double>());
+    else if (v.is_string()) out.insert(key, v.get<std::string>());
+    else throw py::value_error(field + ": must be a number, a string, a bool, a list or a dict");
+  }
+  return out;
+}
+
+// The scenario from its TOML text (a file found on the data search path, or the dict's TOML),
+// with the seed replaced when one is given.
+visors::sim::CampaignScenario scenario_from(const std::string& path, const std::string& dict_json,
+                                            std::optional<std::uint64_t> seed) {
+  std::string text;
+  std::string source = "scenario";
+  if (!dict_json.empty()) {
+    std::ostringstream toml_text;
+    toml_text << to_toml_table(Json::parse(dict_json), "");
+    text = toml_text.str();
+  } else {
+    const auto found = visors::core::files::find_data_file(path);
+    if (!found) throw py::value_error("scenario: '" + path + "' not found (nor in VISORS_DATA_PATH or data/)");
+    text = visors::core::files::read_text_file(*found).value_or("");
+    source = found->string();
+  }
+  auto scenario = visors::sim::campaign_from_toml(text);
+  if (!scenario.ok()) throw py::value_error(source + ": " + scenario.error().describe());
+  if (seed) scenario->seed = *seed;
+  return std::move(scenario).value();
+}
+
+// A closed-loop run: the run directory (and its report when asked), its summary as JSON text.
+std::pair<std::string, std::string> run_campaign(const std::string& path, const std::string& dict_json,
+                                                 const std::string& out, std::optional<std::uint64_t> seed,
+                                                 bool parallel, bool report) {
+  const auto scenario = scenario_from(path, dict_json, seed);
+  visors::core::Result<visors::sim::RunResult> result = visors::core::Error{"", ""};
+  {
+    py::gil_scoped_release release;
+    result = visors::sim::run_campaign(scenario, out, {}, visors::sim::RunOptions{.parallel_components = parallel});
+    if (result.ok() && report) {
+      if (auto written = visors::report::write_report(result->dir); !written.ok()) result = written.error();
+    }
+  }
+  if (!result.ok()) throw std::runtime_error("run: " + result.error().describe());
+  return {result->summary.dump(), result->dir.string()};
+}
+
+std::pair<std::string, std::string> gnss_sim(const std::string& path, const std::string& dict_json,
+                                             const std::string& out, std::optional<std::uint64_t> seed) {
+  const auto scenario = scenario_from(path, dict_json, seed);
+  visors::core::Result<visors::sim::GnssRunResult> result = visors::core::Error{"", ""};
+  {
+    py::gil_scoped_release release;
+    result = visors::sim::run_gnss_simulation(scenario, out);
+  }
+  if (!result.ok()) {
+    const auto& e = result.error();
+    if (e.field.rfind("gnss", 0) == 0) throw py::value_error("gnss_sim: " + e.describe());
+    throw std::runtime_error("gnss_sim: " + e.describe());
+  }
+  return {result->summary.dump(), result->dir.string()};
+}
+
+void nav_replay(const visors::nav_app::NavOptions& options) {
+  int code = 0;
+  std::string errors;
+  {
+    py::gil_scoped_release release;
+    CapturedStderr captured;
+    code = visors::nav_app::run_nav_command(options);
+    errors = captured.restore();
+  }
+  raise_on_exit_code(code, "nav_replay", errors);
+}
+
+void monte_carlo(const visors::mc_app::McOptions& options) {
+  int code = 0;
+  std::string errors;
+  {
+    py::gil_scoped_release release;
+    CapturedStderr captured;
+    code = visors::mc_app::run_mc_command(options);
+    errors = captured.restore();
+  }
+  raise_on_exit_code(code, "mc", errors);
+}
+
+// `visors tool NAME`: the request and the answer as JSON text (the Python side converts dicts).
+std::string tool(const std::string& name, const std::string& request_json) {
+  for (const auto& entry : visors::tools::tool_registry()) {
+    if (entry.name != name) continue;
+    Json request;
+    try {
+      request = Json::parse(request_json);
+    } catch (const Json::parse_error& e) {
+      throw py::value_error(std::string("request: not JSON: ") + e.what());
+    }
+    try {
+      return entry.run(request).dump();
+    } catch (const visors::tools::ToolInputError& e) {
+      throw py::value_error(e.what());
+    } catch (const Json::exception& e) {
+      throw py::value_error(std::string("request: ") + e.what());
+    }
+  }
+  throw py::value_error("name: no tool '" + name + "' (visors.tool_names() lists them)");
+}
+
+std::vector<std::string> tool_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : visors::tools::tool_registry()) names.emplace_back(entry.name);
+  return names;
+}
+
+// Integer least squares (LAMBDA reduction and MLAMBDA search): the m best integer vectors of the
+// float ambiguities a [cycles] with covariance Q [cycles^2].
+py::dict integer_least_squares(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, int candidates) {
+  visors::nav::IlsSettings settings;
+  settings.candidates = candidates;
+  auto created = visors::nav::IntegerLeastSquares::create(settings);
+  if (!created.ok()) throw py::value_error(created.error().describe());
+  visors::nav::IntegerLeastSquares ils = std::move(created).value();
+  using visors::nav::IlsStatus;
+  switch (ils.resolve(a, Q)) {
+    case IlsStatus::kOk: break;
+    case IlsStatus::kEmpty: throw py::value_error("a: is empty");
+    case IlsStatus::kTooManyAmbiguities:
+      throw py::value_error("a: more than " + std::to_string(visors::nav::kMaxAmbiguities) + " ambiguities");
+    case IlsStatus::kSizeMismatch: throw py::value_error("Q: its size differs from a's");
+    case IlsStatus::kNotFinite: throw py::value_error("a, Q: hold a NaN or an infinity");
+    case IlsStatus::kNotSymmetric: throw py::value_error("Q: is not symmetric");
+    case IlsStatus::kNotPositiveDefinite: throw py::value_error("Q: is not positive definite");
+    case IlsStatus::kSearchLimit: throw std::runtime_error("integer_least_squares: the search reached its step limit");
+  }
+  const auto& s = ils.solution();
+  py::dict out;
+  out["candidates"] = Eigen::MatrixXd(s.a.leftCols(s.found).transpose());
+  out["squared_norms"] = Eigen::VectorXd(s.sqnorm.head(s.found));
+  out["ratio"] = s.ratio;
+  out["success_rate"] = s.success_rate;
+  out["transformation"] = Eigen::MatrixXd(ils.transformation());
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_visors, m) {
+  m.doc() = "VISORS GNC: the compiled core of the visors package (use the package, not this module)";
+  m.attr("__version__") = std::string(visors::core::kVersion);
+
+  m.def("run_campaign", &run_campaign, py::arg("path"), py::arg("dict_json"), py::arg("out"), py::arg("seed"),
+        py::arg("parallel"), py::arg("report"));
+  m.def("gnss_sim", &gnss_sim, py::arg("path"), py::arg("dict_json"), py::arg("out"), py::arg("seed"));
+
+  py::class_<visors::nav_app::NavOptions>(m, "NavOptions")
+      .def(py::init<>())
+      .def_readwrite("run_dir", &visors::nav_app::NavOptions::run_dir)
+      .def_readwrite("out", &visors::nav_app::NavOptions::out)
+      .def_readwrite("duration_s", &visors::nav_app::NavOptions::duration_s)
+      .def_readwrite("elevation_weighting", &visors::nav_app::NavOptions::elevation_weighting)
+      .def_readwrite("float_only", &visors::nav_app::NavOptions::float_only)
+      .def_readwrite("no_laser", &visors::nav_app::NavOptions::no_laser)
+      .def_readwrite("settings_file", &visors::nav_app::NavOptions::settings_file)
+      .def_readwrite("crosslink_drop", &visors::nav_app::NavOptions::crosslink_drop)
+      .def_readwrite("crosslink_delay_s", &visors::nav_app::NavOptions::crosslink_delay_s)
+      .def_readwrite("outage_start_s", &visors::nav_app::NavOptions::outage_start_s)
+      .def_readwrite("outage_s", &visors::nav_app::NavOptions::outage_s);
+  m.def("nav_replay", &nav_replay, py::arg("options"));
+
+  py::class_<visors::mc_app::McOptions>(m, "McOptions")
+      .def(py::init<>())
+      .def_readwrite("campaign", &visors::mc_app::McOptions::campaign)
+      .def_readwrite("out", &visors::mc_app::McOptions::out)
+      .def_readwrite("threads", &visors::mc_app::McOptions::threads)
+      .def_readwrite("resume", &visors::mc_app::McOptions::resume)
+      .def_readwrite("keep_runs", &visors::mc_app::McOptions::keep_runs);
+  m.def("mc", &monte_carlo, py::arg("options"));
+
+  m.def("find_data_file", [](const std::string& relative) -> std::optional<std::string> {
+    const auto found = visors::core::files::find_data_file(relative);
+    return found ? std::optional<std::string>(found->string()) : std::nullopt;
+  }, py::arg("relative"));
+  m.def("tool", &tool, py::arg("name"), py::arg("request_json"));
+  m.def("tool_names", &tool_names);
+  m.def("integer_least_squares", &integer_least_squares, py::arg("a"), py::arg("Q"), py::arg("candidates"));
+}
