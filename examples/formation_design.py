@@ -3,7 +3,7 @@
 parallel relative eccentricity and inclination vectors of size d (a*dey = a*diy = d), the passive
 safety of the standby orbit (minimum separation normal to the flight direction over 2 days, 3-sigma
 of a 1 m navigation error) and the delta-v of the closed-form transfer to the paper's science orbit
-(1.5 orbits), as a table and, when matplotlib is installed, a figure.
+(2 orbits), as a table and, when matplotlib is installed, a figure.
 
     PYTHONPATH=build/python /usr/bin/python3 examples/formation_design.py [--no-plot] [--out FIG.svg]
 """
@@ -30,7 +30,7 @@ def study(sizes_m):
         safety = visors.tool("safety", {"chief": CHIEF, "roe": standby, "cov": cov_m2, "horizon": 2 * 86400.0,
                                         "plane": "rn", "q": 3.0})
         plan = visors.tool("plan", {"chief": CHIEF, "roe_start": standby, "roe_target": SCIENCE,
-                                    "tf": 1.5 * period_s, "algorithm": "closed-form"})
+                                    "tf": 2.0 * period_s, "algorithm": "closed-form"})
         rows.append((d, safety["min_separation"], safety["min_separation_margin"], plan["dv_total"],
                      plan["dv_lower_bound"]))
     return np.array(rows, dtype=[("d_m", float), ("min_rn_m", float), ("margin_m", float),

@@ -13,7 +13,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <toml++/toml.hpp>
+#include <toml++/toml.h>
 
 #include "apps/mc/mc_command.hpp"
 #include "apps/nav/nav_command.hpp"
@@ -127,8 +127,9 @@ visors::sim::CampaignScenario scenario_from(const std::string& path, const std::
   }
   auto scenario = visors::sim::campaign_from_toml(text);
   if (!scenario.ok()) throw py::value_error(source + ": " + scenario.error().describe());
-  if (seed) scenario->seed = *seed;
-  return std::move(scenario).value();
+  visors::sim::CampaignScenario resolved = std::move(scenario).value();
+  if (seed) resolved.seed = *seed;
+  return resolved;
 }
 
 // A closed-loop run: the run directory (and its report when asked), its summary as JSON text.

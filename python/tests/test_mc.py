@@ -33,7 +33,7 @@ def test_every_run_is_stored_once(store):
 
 def test_swept_values_are_the_campaigns(store):
     runs = store[0]["runs"]
-    assert sorted(runs["sweep_value_text"]) == ["0.5", "0.5", "1", "1"]
+    assert sorted(runs["sweep_value_text"]) == ["0.5", "0.5", "1.0", "1.0"]
 
 
 def test_tables_equal_sqlites_own_count(store):

@@ -208,8 +208,8 @@ def _number(value: Any, field: str, minimum: float | None = None, maximum: float
 
 def read_csv(path: str | os.PathLike) -> np.ndarray:
     """A CSV table of the run directory as a numpy structured array, one field per column: float64
-    where every cell is a number or empty (empty: NaN), int64 where every cell is an integer, text
-    otherwise (lines starting with '#' are comments)."""
+    where every cell is a number or empty (empty: NaN; counts and flags too, so that a column's type
+    never depends on its values), text otherwise (lines starting with '#' are comments)."""
     with open(path, newline="") as file:
         rows = list(csv.reader(line for line in file if not line.startswith("#")))
     if not rows:
@@ -229,8 +229,6 @@ def read_csv(path: str | os.PathLike) -> np.ndarray:
 
 def _column(cells: tuple[str, ...]) -> np.ndarray:
     try:
-        if cells and all(c and c.lstrip("-").isdigit() for c in cells):
-            return np.array([int(c) for c in cells], dtype=np.int64)
         return np.array([float(c) if c else math.nan for c in cells], dtype=np.float64)
     except ValueError:
         return np.array(cells, dtype=str)
