@@ -1,5 +1,5 @@
 #pragma once
-// The two families of integer least-squares problems of the IAR benchmark (issue 14), 50 seeded
+// The two families of integer least-squares problems of the IAR benchmark, 50 seeded
 // instances per size n, shared by bench_ambiguity.cpp and the exporter that hands the very same
 // problems to peer implementations (bench/peers, scripts/bench_rtklib_lambda.sh):
 // (1) single-epoch dual-frequency short-baseline DD geometry (tests/support/dd_geometry.hpp):

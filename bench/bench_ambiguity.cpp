@@ -1,7 +1,7 @@
-// Integer ambiguity resolution (issue 14 benchmarks): decorrelation + MLAMBDA search of the m = 2
-// best candidates, IntegerLeastSquares::resolve, on the two families of ambiguity_instances.hpp
-// (single-epoch L1/L2 DD geometry; random SPD of condition 1e6), 50 seeded instances each for
-// n = 8, 16, 24, timed as a sweep over the 50 (one iteration = 50 calls).
+// Integer ambiguity resolution (benchmarks of the flight step): decorrelation + MLAMBDA search of
+// the m = 2 best candidates, IntegerLeastSquares::resolve, on the two families of
+// ambiguity_instances.hpp (single-epoch L1/L2 DD geometry; random SPD of condition 1e6), 50 seeded
+// instances each for n = 8, 16, 24, timed as a sweep over the 50 (one iteration = 50 calls).
 // Counters: median_us and worst_us per call, failures (search limit or any non-ok status),
 // mean_steps (search steps per call) and mean_permutations (reduction).
 // Peer on the same instances: scripts/bench_rtklib_lambda.sh (RTKLIB lambda(), same machine).

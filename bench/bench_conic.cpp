@@ -1,5 +1,6 @@
 // Solve time of the embedded conic solver on the minimum-fuel planner shape, and CVXOPT on the
-// same instances for the ratio (issue 4 goal: median below 100 us for 30 impulses).
+// same instances for the ratio (the solver's performance goal: median below 100 us for 30
+// impulses).
 //   min sum_k t_k  s.t.  sum_k B_k dv_k = target (6 rows),  ||dv_k|| <= t_k,  k = 1..N
 // with B random normal (an STM-like 6 x 3N map) and a random target, N = 10, 30, 60, 40 seeded
 // instances each. BM_ConicSolve/N reports per-instance median and worst (counters median_us,
@@ -24,7 +25,7 @@
 #include <vector>
 
 #include "visors/optim/conic_solver.hpp"
-#include "visors/optim/minimum_fuel_problem.hpp"
+#include "optim/minimum_fuel_problem.hpp"
 
 namespace {
 

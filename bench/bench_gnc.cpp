@@ -1,5 +1,5 @@
-// Per-step cost of the flight component (issue 6: median and 99.9th percentile) and the wall time
-// of a shortened closed-loop campaign.
+// Per-step cost of the flight component (median and 99.9th percentile: the computing budget of
+// docs/requirements.md#computing-budget) and the wall time of a shortened closed-loop campaign.
 //   BM_FlightComponentStep/standby  one hour of 1 Hz steps in standby (estimate, safety check
 //                                   every 10 s, station-keeping checks and plans)
 //   BM_FlightComponentStep/science  from the science orbit guidance picks, in closed loop with the
@@ -19,7 +19,7 @@
 
 #include "visors/gnc/channel_record.hpp"
 #include "visors/gnc/flight_component.hpp"
-#include "visors/gnc/formation_harness.hpp"
+#include "gnc/formation_harness.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/klobuchar.hpp"
-#include "visors/sim/gps_test_world.hpp"
+#include "sim/gps_test_world.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Cost of one spherical-harmonic gravity evaluation (GGM05S_d90) at degree 20 (on board), 60
 // (truth) and 90, ours (normalised Cunningham V/W) against GeographicLib::SphericalHarmonic
 // (Clenshaw summation, value + gradient) in the same run. Goal: ours <= 0.5x GeographicLib.
-// Needs VISORS_DATA_PATH pointing at the shared data (gravity/GGM05S_d90.gfc).
+// Needs gravity/GGM05S_d90.gfc from the repository's data/ or VISORS_DATA_PATH.
 #include <benchmark/benchmark.h>
 
 #include <GeographicLib/SphericalHarmonic.hpp>

@@ -1,4 +1,4 @@
-// The navigation filter's epoch (issue 15 benchmark): CdgpsFilter::predict + update of one
+// The navigation filter's epoch (benchmark of the flight step): CdgpsFilter::predict + update of one
 // spacecraft's filter at 1 Hz on the synthetic constellation (tests/support/synthetic_gps.hpp:
 // ~8-9 satellites in view of each receiver, 40 m apart), after a warm-up that fixes the integers,
 // so each timed epoch does the time update of both spacecraft (RK4 under the on-board model,

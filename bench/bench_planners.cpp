@@ -1,9 +1,9 @@
-// Per-call time of the planners, the buffer and the safety checks (issue 5 benchmarks) on the
-// VISORS reconfigurations: standby -> science, science -> standby and a small science-orbit trim,
-// each at 8 chief phases (M0 = 0, 45, ..., 315 deg). Reachable set (default settings: 241 grid
-// times, 28-constraint restricted dual) for horizons of 0.5 and 1 orbit; closed form over 2
-// orbits; least squares at 3 fixed times over 0.6 orbit; one passive-safety check over 1.5 orbits
-// (RN plane, 3 sigma, 360 samples per orbit); the escape; the buffer of a 55 mm/s impulse.
+// Per-call time of the planners, the buffer and the safety checks on the VISORS reconfigurations:
+// standby -> science, science -> standby and a small science-orbit trim, each at 8 chief phases
+// (M0 = 0, 45, ..., 315 deg). Reachable set (default settings: 241 grid times, 28-constraint
+// restricted dual) for horizons of 0.5 and 1 orbit; closed form over 2 orbits; least squares at 3
+// fixed times over 0.6 orbit; one passive-safety check over 1.5 orbits (RN plane, 3 sigma, the
+// default 120 samples per orbit); the escape; the buffer of a 55 mm/s impulse.
 // Counters: median_us, worst_us (per call), failures.
 // Run: ninja -C build visors_bench_planners && build/bench/visors_bench_planners
 

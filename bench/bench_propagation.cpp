@@ -1,7 +1,9 @@
-// Orbit propagation cost (issue 3 benchmarks): one orbit of RK4 at 30 s with 80x80 gravity, Sun,
-// Moon, drag and SRP (goal < 15 ms); one day of the truth model at its step; the force model
-// per evaluation for the on-board and truth presets. Needs VISORS_DATA_PATH for the gravity
-// files (without them the embedded degree-8 field is used and the result says so).
+// Orbit propagation cost (the propagator's cost goal,
+// docs/algorithms/dynamics.md#propagator-acceptance): one orbit of
+// RK4 at 30 s with 80x80 gravity, Sun, Moon, drag and SRP (goal < 15 ms); one day of the truth
+// model at its step; the force model per evaluation for the on-board and truth presets. The
+// gravity files are found in the repository's data/ or VISORS_DATA_PATH (without them the
+// embedded degree-8 field is used and the result says so).
 
 #include <benchmark/benchmark.h>
 

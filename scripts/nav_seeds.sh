@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# NEES and NIS of the navigation filter over seeds (issue 15: within their two-sided 95 %
-# chi-square bounds averaged over >= 20 seeds). For seeds 1..N: `visors gnss-sim` of the default
+# NEES and NIS of the navigation filter over seeds (the consistency acceptance,
+# docs/requirements.md#navigation-acceptance-figures: within their two-sided 95 % chi-square
+# bounds averaged over >= 20 seeds). For seeds 1..N: `visors gnss-sim` of the default
 # scenario (one orbit, or DURATION_S) with that seed, then `visors nav`; then, per filter, the
 # fraction of epochs (from 300 s after the first fix) whose NEES of the antennas' relative
 # position averaged over the N runs, and whose pooled NIS (all scalars, then GRAPHIC and SDCP

@@ -1,5 +1,6 @@
 // The HTML page of `visors nav`: one self-contained file (inline SVG, no script) with, per filter,
-// the figures of the mission paper's navigation section: relative position and velocity errors in
+// the figures of the navigation results of Guffanti et al., AAS 23-149, 2023 (sec. 5, Figs. 13-14):
+// relative position and velocity errors in
 // RTN (the antennas'), the estimated empirical accelerations, the integer-resolution status and
 // double differences over time, outages marked; then the summary.
 #include <algorithm>

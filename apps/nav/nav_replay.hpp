@@ -89,7 +89,8 @@ struct Replay {
 
 /// The self-contained HTML page (inline SVG) of the replays: per filter, the relative position
 /// (antennas) and velocity errors in RTN, the estimated empirical accelerations and the
-/// ambiguity-resolution status over time (the mission paper's navigation figures), and the
+/// ambiguity-resolution status over time (the navigation figures of Guffanti et al., AAS 23-149,
+/// 2023, Figs. 13-14), and the
 /// summary.
 std::string nav_page(const std::string& run_dir, const std::vector<Replay>& replays, const nlohmann::json& summary);
 

@@ -269,7 +269,7 @@ std::size_t count_time_tags(const Replay& r, double from_s) {
 
 }  // namespace
 
-// The figures of the acceptance over the epochs after the first fix, and over those from
+// The replay's acceptance figures over the epochs after the first fix, and over those from
 // kConvergenceS later (the velocity takes minutes to converge after a cold start). A replay that
 // never fixes (--float, or no fix possible) is scored from its cold start instead.
 Json summarise(const Replay& r) {

@@ -1,6 +1,7 @@
 #pragma once
 // The scores of `visors nav` against the run's truth: per epoch (score) and over the replay
-// (summarise: the acceptance figures).
+// (summarise: the replay's acceptance figures: time to first fix, errors after it and once
+// converged, slips, wrong-fix runs, refix after an outage, NIS, step time).
 
 #include <nlohmann/json.hpp>
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "visors/core/files/data_path.hpp"
-#include "visors/gnss/gnss_test_data.hpp"
+#include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
 #include "support/temp_file.hpp"
 

@@ -1,5 +1,5 @@
 // The CLI's own contract: unknown tools and malformed JSON are rejected with exit code 2 and a
-// one-line message (issue 2, "Tools").
+// one-line message (the `visors tool` contract: README, "`visors tool NAME`").
 #include <gtest/gtest.h>
 
 #include "apps/run_tool.hpp"

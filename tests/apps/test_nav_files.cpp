@@ -22,7 +22,7 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
-#include "visors/gnss/gnss_test_data.hpp"
+#include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
 #include "support/csv_table.hpp"
 #include "support/temp_file.hpp"

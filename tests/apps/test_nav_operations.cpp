@@ -1,7 +1,7 @@
-// `visors nav` on a run with the campaign's operations (issue 15): a 10-minute `visors gnss-sim`
-// run of the default scenario with maneuvers of the OSC, an observation with its slews and the
-// laser rangefinder, replayed through both filters; and the same operations with the phase
-// degraded so that no fix is possible, where the laser ranges must carry the line of sight.
+// `visors nav` on a run with the campaign's operations: a 10-minute `visors gnss-sim` run of the
+// default scenario with maneuvers of the OSC, an observation with its slews and the laser
+// rangefinder, replayed through both filters; and the same operations with the phase degraded so
+// that no fix is possible, where the laser ranges must carry the line of sight.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "visors/core/files/data_path.hpp"
-#include "visors/gnss/gnss_test_data.hpp"
+#include "gnss/gnss_test_data.hpp"
 #include "run_tool.hpp"
 #include "support/csv_table.hpp"
 #include "support/temp_file.hpp"
@@ -103,7 +103,8 @@ TEST_F(NavOperations, AppliesEveryCommandedImpulse) {
   for (int k = 0; k < 2; ++k) EXPECT_EQ(nominal["filters"][k]["impulses_applied"].get<int>(), pieces) << k;
 }
 
-// Issue 15: fix rate >= 99.5 % after the first fix, through the maneuvers and the slews.
+// Fix rate >= 99.5 % after the first fix (docs/requirements.md#navigation-acceptance-figures),
+// through the maneuvers and the slews.
 TEST_F(NavOperations, StaysFixedThroughManeuversAndSlews) {
   for (int k = 0; k < 2; ++k) EXPECT_GE(nominal["filters"][k]["after_first_fix"]["fix_rate"].get<double>(), 0.995) << k;
 }
@@ -112,7 +113,8 @@ TEST_F(NavOperations, NoWrongFix) {
   for (int k = 0; k < 2; ++k) EXPECT_EQ(nominal["filters"][k]["after_first_fix"]["wrong_fix_epochs"].get<int>(), 0) << k;
 }
 
-// Issue 15: worst epoch <= 1 cm outside slews (the antennas: what GPS sees).
+// Worst epoch <= 1 cm outside slews (the antennas: what GPS sees;
+// docs/requirements.md#navigation-acceptance-figures).
 TEST_F(NavOperations, WorstEpochOutsideSlewsBelowACentimetre) {
   for (int k = 0; k < 2; ++k) {
     EXPECT_LT(nominal["filters"][k]["after_first_fix"]["relative_antenna_worst_outside_slews_m"].get<double>(), 0.01) << k;
@@ -127,8 +129,9 @@ TEST_F(NavOperations, UsesEveryLaserRange) {
   EXPECT_EQ(o["laser_ranges_rejected"].get<int>(), 0);
 }
 
-// Issue 15: with the DD phase degraded so that no fix is possible, the laser fusion visibly cuts
-// the line-of-sight error of the payload points during the observation (here: at least halves).
+// With the DD phase degraded so that no fix is possible, the laser fusion visibly cuts the
+// line-of-sight error of the payload points during the observation (here: at least halves;
+// docs/requirements.md#navigation-acceptance-figures).
 TEST_F(NavOperations, LaserCutsTheLineOfSightErrorWithoutAFix) {
   for (int k = 0; k < 2; ++k) {
     const double with = with_laser["filters"][k]["observations"]["payload_los_rms_m"].get<double>();
@@ -139,7 +142,7 @@ TEST_F(NavOperations, LaserCutsTheLineOfSightErrorWithoutAFix) {
 
 // A 2.5 s crosslink delay: each joint epoch's solution is in use 3 s later (whole epochs),
 // carried there by the forecast with the commanded impulses of those seconds; the antennas stay
-// millimetric (issue 15: relative position <= 3 mm).
+// millimetric (relative position <= 3 mm: docs/requirements.md#navigation-acceptance-figures).
 TEST_F(NavOperations, CrosslinkDelayKeepsTheSolutionMillimetricWhenInUse) {
   for (int k = 0; k < 2; ++k) {
     EXPECT_EQ(delayed["filters"][k]["latency_s"].get<double>(), 3.0) << k;

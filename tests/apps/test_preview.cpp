@@ -79,8 +79,10 @@ TEST_F(Preview, StandbyMinimumRnSeparationIs200m) {
 }
 
 // Keplerian drift of the mean argument of latitude: a*d(dlambda) = -1.5 n T a*da = -3 pi a*da per
-// orbit (+24.69 m for a*da = -2.62 m); secular J2 changes it by < 1% at 500 km (digest sec. 7.4:
-// +24.7 m/orbit).
+// orbit (+24.69 m for a*da = -2.62 m); secular J2 changes it by < 1% at 500 km (the J2 STM of
+// Koenig, Guffanti & D'Amico 2017 takes the science ROE of Guffanti et al., AAS 23-149, 2023,
+// Table 5, from a*dlambda 45.21 to 69.67 m in one orbit, +24.46 m:
+// docs/algorithms/relative-motion.md#worked-example-j2-stm-for-the-visors-chief).
 TEST_F(Preview, ScienceAlongTrackDriftMatchesKeplerTheory) {
   ASSERT_EQ(run(kScenario).exit_code, 0);
   EXPECT_NEAR(formation("science")["drift_along_track_m_per_orbit"].get<double>(),
@@ -88,7 +90,9 @@ TEST_F(Preview, ScienceAlongTrackDriftMatchesKeplerTheory) {
 }
 
 // The linear mean model differs from the osculating motion by the differential short-period J2
-// terms, of order 3 (J2/2)(R/a)^2 |a di| ~ 0.3 m at 200 m (digest sec. 1.4): bounded, not zero.
+// terms, of order 3 (J2/2)(R/a)^2 |a di| ~ 0.3 m at 200 m (the size of the first-order
+// short-period terms of Brouwer's theory, D. Brouwer, Astron. J. 64, 1959;
+// docs/algorithms/relative-motion.md#mean-and-osculating-elements): bounded, not zero.
 TEST_F(Preview, StandbyLinearModelErrorIsTheShortPeriodJ2Size) {
   ASSERT_EQ(run(kScenario).exit_code, 0);
   const double err = formation("standby")["max_model_error_m"].get<double>();

@@ -25,7 +25,7 @@
 #include "visors/core/files/eop_file.hpp"
 #include "visors/gnss/ephemeris_set.hpp"
 #include "visors/gnss/files/rinex_nav_file.hpp"
-#include "visors/gnss/gnss_test_data.hpp"
+#include "gnss/gnss_test_data.hpp"
 #include "visors/nav/gps_range_model.hpp"
 #include "run_tool.hpp"
 #include "support/temp_file.hpp"

@@ -94,8 +94,11 @@ TEST(ToolFrame, EopFileIsInterpolatedAtTheTime) {
   ASSERT_EQ(b.exit_code, 0) << b.err;
   // the same EOP values, round-off; loose: measured 0 (2026-11), bound 1e-6 m ~1000x above round-off (ulp 9.3e-10 m)
   EXPECT_LT(max_abs_diff(a.json()["r_itrf"], b.json()["r_itrf"].get<std::vector<double>>()), 1e-6);
-  // Digest §1.2 project-epoch check (no dX, dY): within a few cm of (6895679.284, -1203879.233,
-  // 16792.928) m, the pole offsets moving it by ~1.5 cm.
+  // Project-epoch check (no dX, dY): GCRS (7000 km, 0, 0) at 2024-10-01 00:00:00 UTC taken to
+  // ITRS by ERFA's IAU 2006/2000A eraC2t06a with x_p 0.226101", y_p 0.407871", UT1-UTC 0.0590197 s
+  // gives (6895679.284, -1203879.233, 16792.928) m (the worked example of
+  // docs/algorithms/dynamics.md#gcrf-to-itrf-with-erfa); within a few cm of it, the celestial
+  // pole offsets dX, dY moving it by ~1.5 cm.
   EXPECT_LT(max_abs_diff(a.json()["r_itrf"], {6895679.284, -1203879.233, 16792.928}), 0.05);
   // Outside the table: the error names utc and the table's range.
   from_file["utc"] = "2025-06-01T00:00:00";

@@ -15,7 +15,7 @@ std::string request(int prn, const char* time) {
   return std::string(R"({"nav":")") + kNav + R"(","prn":)" + std::to_string(prn) + R"(,"gps_time":")" + time + R"("})";
 }
 
-// Reference: navigation-and-dynamics.md 4.1, RTKLIB 2.4.2p13 eph2pos, G01 at its t_oe 12:00 (IODE
+// Reference: RTKLIB 2.4.2p13 eph2pos() (T. Takasu) evaluated on this file, G01 at its t_oe 12:00 (IODE
 // 65): r = (-18208896.603, -7526080.846, -18018897.654) m, clock -1.364644338389e-4 s. G01 is
 // flagged unhealthy (63) in this file, so the tool refuses it; G12 (healthy, IODE from line 1817)
 // is the positive case.
@@ -24,7 +24,7 @@ TEST(ToolGpsPosition, G12MatchesRtklib) {
   const auto run = visors::test::run_tool("gps-position", request(12, "2010-07-01T12:00:00"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = run.json();
-  // RTKLIB values printed to the mm (navigation-and-dynamics.md 4.1: own code within 1 mm of RTKLIB); measured 1.1e-4, 5.9e-5, 1.3e-5 m (2026-11); z: loose, bound 2e-3 m ~150x above (one bound for the three axes)
+  // RTKLIB values printed to the mm (the IS-GPS-200 user algorithm both implement agrees to < 1 mm); measured 1.1e-4, 5.9e-5, 1.3e-5 m (2026-11); z: loose, bound 2e-3 m ~150x above (one bound for the three axes)
   EXPECT_NEAR(out["r_ecef"][0].get<double>(), 22143029.437, 2e-3);
   EXPECT_NEAR(out["r_ecef"][1].get<double>(), -12058823.250, 2e-3);
   EXPECT_NEAR(out["r_ecef"][2].get<double>(), -8052782.080, 2e-3);

@@ -1,5 +1,6 @@
-// `visors tool gravity` through the real binary: the digest's reference vectors (§2.4) and bad
-// input (exit code 2, field named on stderr).
+// `visors tool gravity` through the real binary: reference accelerations at the test point of
+// Montenbruck & Gill's gravity-field exercise (O. Montenbruck, E. Gill, Satellite Orbits,
+// Springer, 2000, Exercise 3-1, JGM-3) and bad input (exit code 2, field named on stderr).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,7 +29,7 @@ std::string shared_file(const std::string& relative) {
   const std::string var = shared_file(relative); \
   ASSERT_FALSE(var.empty()) << relative << " not found in the data search path (data/SOURCES.md)"
 
-// Body-fixed position of the Montenbruck & Gill test (digest §2.4-1) [m].
+// Body-fixed position of the Montenbruck & Gill test (Satellite Orbits, 2000, Exercise 3-1) [m].
 const std::string kMgPosition = R"("r_itrf":[6525919.0,1710416.0,2508886.0])";
 
 std::string input(const std::string& model, int degree, int order, const std::string& position = kMgPosition) {
@@ -45,7 +46,8 @@ double max_abs_difference(const nlohmann::json& a, double x, double y, double z)
                    std::abs(a[2].get<double>() - z)});
 }
 
-// Digest §2.4-1: JGM-3 20x20 (Montenbruck & Gill test vector), 1e-7 m/s^2.
+// JGM-3 20x20, the Montenbruck & Gill test vector (Satellite Orbits, 2000, Exercise 3-1;
+// docs/algorithms/dynamics.md#gravity-worked-examples), 1e-7 m/s^2.
 TEST(ToolGravity, Jgm3MontenbruckGillVector) {
   REQUIRE_SHARED(model, "gravity/JGM3.gfc");
   const auto run = visors::test::run_tool("gravity", input(model, 20, 20));
@@ -53,17 +55,20 @@ TEST(ToolGravity, Jgm3MontenbruckGillVector) {
   EXPECT_LT(max_abs_difference(run.json()["a_itrf"], -6.979261862, -1.82928315091, -2.68999053339), 1e-7);
 }
 
-// Digest §2.4-2: GGM05S 60x60, 1e-7 m/s^2; the model named relative to the data path.
-TEST(ToolGravity, Ggm05s60DigestVectorDataRelative) {
+// GGM05S 60x60 at the same point, 1e-7 m/s^2; the model named relative to the data path. The
+// reference vector is not from a publication: the potential differentiated by central differences
+// with an independent Legendre recursion (docs/algorithms/dynamics.md#gravity-worked-examples);
+// the test below compares with GeographicLib to 1e-12 as well.
+TEST(ToolGravity, Ggm05s60WorkedVectorDataRelative) {
   REQUIRE_SHARED(model, "gravity/GGM05S_d90.gfc");
   const auto run = visors::test::run_tool("gravity", input("gravity/GGM05S_d90.gfc", 60, 60));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_LT(max_abs_difference(run.json()["a_itrf"], -6.9792607656, -1.8292848885, -2.6899854388), 1e-7);
 }
 
-// Issue 3 acceptance through the tool: GeographicLib's SphericalHarmonic with the same GGM05S
-// coefficients, 90x90, points from 300 to 40,000 km altitude: relative difference < 1e-12 (the
-// JSON numbers round-trip doubles exactly).
+// Acceptance through the tool against an independent implementation: GeographicLib's
+// SphericalHarmonic (C. F. F. Karney) with the same GGM05S coefficients, 90x90, points from 300 to
+// 40,000 km altitude: relative difference < 1e-12 (the JSON numbers round-trip doubles exactly).
 TEST(ToolGravity, MatchesGeographicLibAtDegree90) {
   REQUIRE_SHARED(model, "gravity/GGM05S_d90.gfc");
   const auto field = visors::dynamics::files::read_icgem(model, 90);

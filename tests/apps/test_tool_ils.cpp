@@ -9,7 +9,8 @@
 
 namespace {
 
-// RTKLIB test/utest/t_lambda.c utest1 (navigation digest sec. 6.7).
+// RTKLIB test/utest/t_lambda.c utest1 (T. Takasu, RTKLIB 2.4.2, github.com/tomojitakasu/RTKLIB):
+// its inputs a, Q and its expected two best candidates and squared norms, tolerance 1e-4.
 constexpr char kUtest1[] =
     R"("a":[1585184.171,-6716599.430,3915742.905,7627233.455,9565990.879,989457273.200],)"
     R"("Q":[[0.227134,0.112202,0.112202,0.112202,0.112202,0.103473],[0.112202,0.227134,0.112202,0.112202,0.112202,0.103473],)"
@@ -31,7 +32,7 @@ TEST(ToolIls, Utest1SquaredNormsAndRatio) {
   const auto out = run.json();
   EXPECT_NEAR(out["sqnorm"][0].get<double>(), 3.507984, 1e-4);  // t_lambda.c utest1 s, to 1e-4 there
   EXPECT_NEAR(out["sqnorm"][1].get<double>(), 3.708456, 1e-4);
-  EXPECT_NEAR(out["ratio"].get<double>(), 3.708456 / 3.507984, 1e-4);  // digest sec. 6.7: 1.0571
+  EXPECT_NEAR(out["ratio"].get<double>(), 3.708456 / 3.507984, 1e-4);  // the ratio of t_lambda.c's two squared norms, 1.0571
 }
 
 // Partial fixing at p = 0.5: the success rate of the fixed combinations reaches p, the indices

@@ -15,8 +15,9 @@ namespace visors::astro::test {
 
 inline constexpr double kDeg = core::kDegToRad;
 
-/// VISORS chief of the mission paper (docs/conventions.md) with the project's constants:
-/// a = R_E + 500 km, e = 0.004, i = 97.8 deg, RAAN 157.5 deg, argp 90 deg (digest tables).
+/// VISORS chief (Guffanti et al., AAS 23-149, 2023, Table 5; docs/conventions.md) with the
+/// project's constants: a = R_E + 500 km, e = 0.004, i = 97.8 deg, RAAN 157.5 deg, and argp 90 deg
+/// (the perigee of the worked examples in docs/algorithms/relative-motion.md).
 inline KeplerianElements visors_chief(double mean_anomaly_deg = 0.0) {
   const core::EarthGravityConstants g;
   return KeplerianElements{g.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg,

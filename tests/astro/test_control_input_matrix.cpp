@@ -62,8 +62,9 @@ TEST(ControlInputMatrix, SmallRelativeErrorAtOneMillimetrePerSecond) {
   EXPECT_LT(worst, 1e-6);
 }
 
-// Property (digest sec. 3.2 claim, verified): without Lambda_R, Lambda_T the dlambda row has a
-// FIRST-order error (it does not shrink relative to the jump as dv -> 0), of size O(e).
+// Property (docs/algorithms/relative-motion.md#control-input-matrix): without Lambda_R, Lambda_T
+// the dlambda row has a FIRST-order error (it does not shrink relative to the jump as dv -> 0),
+// of size O(e).
 TEST(ControlInputMatrix, LambdaTermsAreNeededForDlambda) {
   const KeplerianElements chief{7.2e6, 0.1, 60.0 * kDeg, 1.0, 2.0, 100.0 * kDeg};
   const Eigen::Vector3d dv(1e-4, 1e-4, 0.0);
@@ -83,14 +84,16 @@ TEST(ControlInputMatrix, ReducesToNearCircular) {
             1e-18);
 }
 
-// Regression (digest's own scripts) digest Test 3-a: VISORS chief argp 90 deg, M = 60 deg, deputy
-// on the science ROE receives dv_rtn = (1, 2, 3) mm/s; digest constants (mu 3.986004418e14,
-// R_E 6378137 m). a*Delta(roe) [m]: exact (3.62756, -1.79807, -2.69367, 2.57627, -2.35209,
-// 1.33628); Gamma with Lambda terms gives dlambda -1.79806, without -1.80345; near-circular
-// (3.61408, -1.80704, -2.67812, 2.58951, -2.34741, 1.35528).
-class DigestTest3a : public ::testing::Test {
+// Regression: the worked example in
+// docs/algorithms/relative-motion.md#worked-example-impulse-on-the-science-orbit (evaluated
+// independently): VISORS chief argp 90 deg, M = 60 deg, deputy on the science ROE receives
+// dv_rtn = (1, 2, 3) mm/s along the chief's RTN axes; constants mu 3.986004418e14, R_E 6378137 m.
+// a*Delta(roe) [m]: exact (3.62756, -1.79807, -2.69367, 2.57627, -2.35209, 1.33628); Gamma with
+// Lambda terms gives dlambda -1.79806, without -1.80345; near-circular (3.61408, -1.80704,
+// -2.67812, 2.58951, -2.34741, 1.35528).
+class ControlInputWorkedExample : public ::testing::Test {
  protected:
-  static constexpr double kMuDigest = 3.986004418e14;
+  static constexpr double kMuExample = 3.986004418e14;
   KeplerianElements chief{6378137.0 + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 60.0 * kDeg};
   Eigen::Vector3d dv{1e-3, 2e-3, 3e-3};
   RelativeOrbitalElements science() const {
@@ -99,27 +102,27 @@ class DigestTest3a : public ::testing::Test {
     return r / chief.a;
   }
 };
-TEST_F(DigestTest3a, ExactJump) {
+TEST_F(ControlInputWorkedExample, ExactJump) {
   const KeplerianElements deputy = deputy_from_roe(chief, science()).value();
-  const RelativeOrbitalElements jump = exact_jump(chief, deputy, dv, kMuDigest) * chief.a;
+  const RelativeOrbitalElements jump = exact_jump(chief, deputy, dv, kMuExample) * chief.a;
   RelativeOrbitalElements ref;
   ref << 3.62756, -1.79807, -2.69367, 2.57627, -2.35209, 1.33628;
-  // digest prints a*Delta(roe) to 1e-5 m; measured 5.0e-6 m (2026-11)
+  // the worked example prints a*Delta(roe) to 1e-5 m; measured 5.0e-6 m (2026-11)
   EXPECT_LT((jump - ref).cwiseAbs().maxCoeff(), 1e-5);
 }
-TEST_F(DigestTest3a, GammaWithLambdaDlambda) {
-  // digest prints 1e-5 m; measured 3.5e-8 m (2026-11)
-  EXPECT_NEAR((control_input_matrix(chief, kMuDigest) * dv)[roe::kDlambda] * chief.a, -1.79806, 1e-5);
+TEST_F(ControlInputWorkedExample, GammaWithLambdaDlambda) {
+  // the worked example prints 1e-5 m; measured 3.5e-8 m (2026-11)
+  EXPECT_NEAR((control_input_matrix(chief, kMuExample) * dv)[roe::kDlambda] * chief.a, -1.79806, 1e-5);
 }
-TEST_F(DigestTest3a, GammaWithoutLambdaDlambda) {
-  // digest prints 1e-5 m; measured 4.1e-6 m (2026-11)
-  EXPECT_NEAR((control_input_matrix_without_lambda_terms(chief, kMuDigest) * dv)[roe::kDlambda] * chief.a, -1.80345, 1e-5);
+TEST_F(ControlInputWorkedExample, GammaWithoutLambdaDlambda) {
+  // the worked example prints 1e-5 m; measured 4.1e-6 m (2026-11)
+  EXPECT_NEAR((control_input_matrix_without_lambda_terms(chief, kMuExample) * dv)[roe::kDlambda] * chief.a, -1.80345, 1e-5);
 }
-TEST_F(DigestTest3a, NearCircularGamma) {
+TEST_F(ControlInputWorkedExample, NearCircularGamma) {
   RelativeOrbitalElements ref;
   ref << 3.61408, -1.80704, -2.67812, 2.58951, -2.34741, 1.35528;
-  // digest prints 1e-5 m; measured 3.5e-6 m (2026-11)
-  EXPECT_LT(((control_input_matrix_near_circular(chief, kMuDigest) * dv) * chief.a - ref).cwiseAbs().maxCoeff(), 1e-5);
+  // the worked example prints 1e-5 m; measured 3.5e-6 m (2026-11)
+  EXPECT_LT(((control_input_matrix_near_circular(chief, kMuExample) * dv) * chief.a - ref).cwiseAbs().maxCoeff(), 1e-5);
 }
 
 }  // namespace

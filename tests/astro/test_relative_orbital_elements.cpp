@@ -13,7 +13,7 @@ using visors::astro::test::kDeg;
 
 RelativeOrbitalElements science_roe(double a) {
   RelativeOrbitalElements roe;
-  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;  // a*dROE [m], digest sec. 1.3 science ROE
+  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;  // a*dROE [m], science ROE (Guffanti et al. 2023, Table 5)
   return roe / a;
 }
 

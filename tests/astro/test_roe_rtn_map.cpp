@@ -15,7 +15,7 @@ const double kMu = visors::core::EarthGravityConstants{}.mu;
 
 RelativeOrbitalElements science_roe(double a) {
   RelativeOrbitalElements roe;
-  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;  // a*dROE [m], digest sec. 1.3
+  roe << -2.62, 45.21, -34.51, 4.78, -18.72, 2.72;  // a*dROE [m], science ROE (Guffanti et al. 2023, Table 5)
   return roe / a;
 }
 
@@ -60,17 +60,17 @@ TEST(RoeRtnMap, BelowOneMillimetreAt40m) {
   EXPECT_LT(worst, 1e-3);
 }
 
-// Reference: digest sec. 1.3 table (VISORS chief argp 90 deg, science ROE), exact r_RTN and the
-// per-component bounds of the eccentric map: M 0/60/120/180 deg -> exact r (m) as listed; our
-// measured eccentric-map errors are 1.2e-4, 1.9e-4, 3.5e-4, 5.7e-4 m (component max). NOTE: the
-// digest's "<= 1e-4" for M = 0 is slightly optimistic (1.2e-4 m measured), so the bounds below
-// are ours. Near-circular map: off by decimetres (0.36 m at M = 60 deg, T component).
+// Reference: the worked example in docs/algorithms/relative-motion.md#worked-example-the-science-orbit-in-rtn
+// (VISORS chief argp 90 deg, science ROE; exact two-body Cartesian differences evaluated
+// independently): M 0/60/120/180 deg -> exact r (m) as listed. Our measured eccentric-map errors
+// are 1.2e-4, 1.9e-4, 3.5e-4, 5.7e-4 m (component max), whence the bounds below. Near-circular
+// map: off by decimetres (0.36 m at M = 60 deg, T component).
 struct TableRow {
   double m_deg;
   Eigen::Vector3d exact;
   double eccentric_bound;
 };
-TEST(RoeRtnMap, DigestTableExactPositions) {
+TEST(RoeRtnMap, WorkedTableExactPositions) {
   for (const TableRow& row : {TableRow{0.0, {-7.390, -23.695, -18.645}, 1.5e-4},
                               TableRow{60.0, {-34.823, 19.338, -6.868}, 2.5e-4},
                               TableRow{120.0, {-29.817, 88.122, 11.842}, 4e-4},
@@ -80,7 +80,7 @@ TEST(RoeRtnMap, DigestTableExactPositions) {
     EXPECT_LT((exact.head<3>() - row.exact).cwiseAbs().maxCoeff(), 6e-4) << "M = " << row.m_deg;
   }
 }
-TEST(RoeRtnMap, DigestTableEccentricMapBounds) {
+TEST(RoeRtnMap, WorkedTableEccentricMapBounds) {
   for (const TableRow& row : {TableRow{0.0, {}, 1.5e-4}, TableRow{60.0, {}, 2.5e-4},
                               TableRow{120.0, {}, 4e-4}, TableRow{180.0, {}, 6e-4}}) {
     const KeplerianElements chief = test::visors_chief(row.m_deg);
@@ -89,7 +89,7 @@ TEST(RoeRtnMap, DigestTableEccentricMapBounds) {
     EXPECT_LT(err.head<3>().cwiseAbs().maxCoeff(), row.eccentric_bound) << "M = " << row.m_deg;
   }
 }
-TEST(RoeRtnMap, DigestTableEccentricVelocityBelowOneMicrometrePerSecond) {
+TEST(RoeRtnMap, WorkedTableEccentricVelocityBelowOneMicrometrePerSecond) {
   for (double m_deg : {0.0, 60.0, 120.0, 180.0}) {
     const KeplerianElements chief = test::visors_chief(m_deg);
     const RelativeOrbitalElements roe = science_roe(chief.a);
@@ -97,19 +97,20 @@ TEST(RoeRtnMap, DigestTableEccentricVelocityBelowOneMicrometrePerSecond) {
     EXPECT_LT((rtn_from_roe(chief, roe, kMu) - exact_state(chief, roe, 0.0)).tail<3>().norm(), 1e-6);
   }
 }
-// Reference: digest table, near-circular map error at M = 60 deg: (-0.073, -0.359, -0.136) m.
+// Reference: the same worked example, near-circular map error at M = 60 deg: (-0.073, -0.359,
+// -0.136) m.
 TEST(RoeRtnMap, NearCircularMapOffByDecimetres) {
   const KeplerianElements chief = test::visors_chief(60.0);
   const RelativeOrbitalElements roe = science_roe(chief.a);
   const RelativeRtnVector err = rtn_from_roe_near_circular(chief, roe, kMu) - exact_state(chief, roe, 0.0);
-  // digest prints 1e-3 m; measured 1.6e-4 m (2026-11)
+  // the worked example prints 1e-3 m; measured 1.6e-4 m (2026-11)
   EXPECT_LT((err.head<3>() - Eigen::Vector3d(-0.073, -0.359, -0.136)).cwiseAbs().maxCoeff(), 1e-3);
 }
 
 // Property: with da != 0 (aDa = 5 m, science ROE otherwise) the tau terms keep the eccentric map
 // at the tau = 0 level (0.6 mm, second order in the ~100 m separation) at tau = 1000 s and 3000 s,
-// chief M every 30 deg. Measured 0.50 mm. NOTE: the digest (sec. 1.3) claims 0.2 mm here; that
-// holds only for part of the orbit (it did not state the anomaly), not over all M.
+// chief M every 30 deg. Measured 0.50 mm. (A 0.2 mm figure holds only for part of the orbit, not
+// over all M.)
 TEST(RoeRtnMap, TauTermsWithNonzeroDa) {
   double worst = 0.0;
   for (double tau : {1000.0, 3000.0}) {
@@ -151,7 +152,8 @@ TEST(RoeRtnMap, InverseRecoversRoe) {
   EXPECT_LT((roe_from_rtn(chief, rtn_from_roe(chief, roe, kMu, 500.0), kMu, 500.0) - roe).norm(), 1e-17);
 }
 
-// Property: at e = 0 the eccentric map equals the near-circular map (digest sec. 1.3).
+// Property: at e = 0 the eccentric map equals the near-circular map
+// (docs/algorithms/relative-motion.md#eccentric-roe-to-rtn-map).
 TEST(RoeRtnMap, ReducesToNearCircularAtZeroEccentricity) {
   const KeplerianElements chief{7.0e6, 0.0, 1.2, 0.3, 0.0, 0.8};
   const RoeToRtnMatrix diff = roe_to_rtn_matrix(chief, kMu, 700.0) - roe_to_rtn_matrix_near_circular(chief, kMu, 700.0);

@@ -1,5 +1,6 @@
 // ROE state transition matrices against an independent numerical Jacobian of the model they
-// linearise, plus the digest's regression tables.
+// linearise, plus regression tables (worked example in
+// docs/algorithms/relative-motion.md#worked-example-j2-stm-for-the-visors-chief).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,20 +94,22 @@ TEST(KeplerianRoeStm, ExactForTwoBodyPropagation) {
   EXPECT_LT((roe_f - expected).cwiseAbs().maxCoeff(), 2e-14);  // angle round-off over n tau = 20 rad
 }
 
-// Regression (NOT an independent check: the digest's own throw-away scripts, same formulas):
-// digest Test 2.2-a, VISORS chief argp 90 deg, M = 0, with the digest's constants
-// (mu 3.986004418e14, R_E 6378137 m, a = R_E + 500 km). a*roe in metres.
-const visors::core::EarthGravityConstants kDigest{3.986004418e14, 6378137.0, 1.08262668e-3};
+// Regression (NOT an independent check: the same formulas, evaluated independently): the worked
+// example in docs/algorithms/relative-motion.md#worked-example-j2-stm-for-the-visors-chief, VISORS
+// chief argp 90 deg, M = 0, with the constants it was evaluated with (mu 3.986004418e14,
+// R_E 6378137 m, a = R_E + 500 km). Columns: secular-J2 propagation of chief and deputy mean
+// elements with exact ROE differencing, and eq. (A6) times roe0. a*roe in metres.
+const visors::core::EarthGravityConstants kExampleGravity{3.986004418e14, 6378137.0, 1.08262668e-3};
 struct Row {
   std::vector<double> roe0;
   double tau;
   std::vector<double> nonlinear;
   std::vector<double> stm;
 };
-TEST(J2RoeStm, DigestTest2_2aRegression) {
-  const KeplerianElements chief{kDigest.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
+TEST(J2RoeStm, WorkedExampleLongHorizonRegression) {
+  const KeplerianElements chief{kExampleGravity.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
   const std::vector<double> sci{-2.62, 45.21, -34.51, 4.78, -18.72, 2.72};
-  const double orbit = 2.0 * visors::core::kPi * std::sqrt(std::pow(chief.a, 3) / kDigest.mu);
+  const double orbit = 2.0 * visors::core::kPi * std::sqrt(std::pow(chief.a, 3) / kExampleGravity.mu);
   const std::vector<Row> rows{
       {sci, orbit, {-2.62, 69.6718, -34.4901, 4.9174, -18.72, 2.5697}, {-2.62, 69.6718, -34.4901, 4.9174, -18.72, 2.5697}},
       {sci, 86400.0, {-2.62, 417.5025, -34.1481, 6.8614, -18.72, 0.4322}, {-2.62, 417.5023, -34.1481, 6.8614, -18.72, 0.4322}},
@@ -116,8 +119,8 @@ TEST(J2RoeStm, DigestTest2_2aRegression) {
   double worst_stm = 0.0;
   for (const Row& row : rows) {
     const RelativeOrbitalElements roe0 = Eigen::Map<const RelativeOrbitalElements>(row.roe0.data()) / chief.a;
-    const RelativeOrbitalElements nl = propagate_roe_secular(chief, roe0, row.tau, kDigest) * chief.a;
-    const RelativeOrbitalElements lin = j2_roe_stm(chief, row.tau, kDigest) * roe0 * chief.a;
+    const RelativeOrbitalElements nl = propagate_roe_secular(chief, roe0, row.tau, kExampleGravity) * chief.a;
+    const RelativeOrbitalElements lin = j2_roe_stm(chief, row.tau, kExampleGravity) * roe0 * chief.a;
     for (int k = 0; k < 6; ++k) {
       worst_nl = std::max(worst_nl, std::abs(nl[k] - row.nonlinear[static_cast<std::size_t>(k)]));
       worst_stm = std::max(worst_stm, std::abs(lin[k] - row.stm[static_cast<std::size_t>(k)]));
@@ -127,12 +130,12 @@ TEST(J2RoeStm, DigestTest2_2aRegression) {
   EXPECT_LT(worst_stm, 1.5e-4);
 }
 
-// Regression: digest Test 2.2-b, one-orbit matrix entries (1-based indices in the digest).
-TEST(J2RoeStm, DigestTest2_2bRegression) {
-  const KeplerianElements chief{kDigest.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
-  const double orbit = 2.0 * visors::core::kPi * std::sqrt(std::pow(chief.a, 3) / kDigest.mu);
-  const RoeStm phi = j2_roe_stm(chief, orbit, kDigest);
-  // tolerances = last printed digit of the digest entries; measured 1.3e-7, 1.8e-9, 2.5e-9, 3.5e-9, 5.0e-9, 4.6e-9 (2026-11)
+// Regression: the one-orbit matrix entries of the same worked example (1-based indices there).
+TEST(J2RoeStm, WorkedExampleOneOrbitRegression) {
+  const KeplerianElements chief{kExampleGravity.re + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
+  const double orbit = 2.0 * visors::core::kPi * std::sqrt(std::pow(chief.a, 3) / kExampleGravity.mu);
+  const RoeStm phi = j2_roe_stm(chief, orbit, kExampleGravity);
+  // tolerances = last printed digit of the worked example's entries; measured 1.3e-7, 1.8e-9, 2.5e-9, 3.5e-9, 5.0e-9, 4.6e-9 (2026-11)
   EXPECT_NEAR(phi(1, 0), -9.395765, 1e-6);
   EXPECT_NEAR(phi(1, 4), 8.25846e-3, 1e-8);
   EXPECT_NEAR(phi(2, 2), 0.99999207, 1e-8);

@@ -1,9 +1,10 @@
 // The baseline processor on real receiver data nobody on this project produced: GSI GEONET
 // stations 0759 (rover) and 3040 (base), 2005-04-02 00:00-00:59:30 GPST, 30 s, L1/L2, about
 // 3.3 km apart (data/gnss/gsi-2005-04-02, SOURCES.md; the RTKLIB test data). No rover
-// truth exists: the checks are the issue's consistency criteria between independent processings
-// (L1 only vs L1+L2, kinematic vs static) and RTKLIB 2.4.3's fix counts on the same data for
-// orientation (104 of 120 epochs fixed in continuous mode, 114 in fix-and-hold: issue 14).
+// truth exists: the checks are consistency criteria between independent processings (L1 only vs
+// L1+L2, kinematic vs static) and RTKLIB 2.4.3's fix counts on the same data for orientation (104
+// of 120 epochs fixed in continuous mode, 114 in fix-and-hold, as the project recorded them when
+// these tests were written; not re-run by the tests).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +12,7 @@
 #include "visors/baseline/baseline_processor.hpp"
 #include "visors/gnss/files/rinex_nav_file.hpp"
 #include "visors/gnss/files/rinex_obs_file.hpp"
-#include "visors/gnss/gnss_test_data.hpp"
+#include "gnss/gnss_test_data.hpp"
 
 namespace visors::baseline {
 namespace {
@@ -63,7 +64,7 @@ TEST(BaselineGsi, EveryEpochIsPaired) {
   EXPECT_EQ(r.rover_unpaired + r.base_unpaired, 0);
 }
 
-// Issue 14 acceptance: static L1+L2 and static L1-only both fixed and within 1 cm of each other.
+// Acceptance: static L1+L2 and static L1-only both fixed and within 1 cm of each other.
 TEST(BaselineGsi, StaticL1AgreesWithL1L2WithinOneCentimetre) {
   SKIP_WITHOUT_GSI_DATA();
   const auto dual = run(PositionModel::kStatic, FrequencySet::kL1L2);
@@ -83,7 +84,7 @@ TEST(BaselineGsi, StaticFixedSolutionIsMillimetric) {
   EXPECT_NEAR(r.final_fixed.baseline_enu_m.norm(), 3.3e3, 0.1e3);
 }
 
-// Issue 14 acceptance: every fixed kinematic epoch within 5 cm (3D) of the static solution.
+// Acceptance: every fixed kinematic epoch within 5 cm (3D) of the static solution.
 TEST(BaselineGsi, KinematicFixedEpochsWithinFiveCentimetresOfStatic) {
   SKIP_WITHOUT_GSI_DATA();
   const auto reference = run(PositionModel::kStatic, FrequencySet::kL1L2).final_fixed;
@@ -101,7 +102,7 @@ TEST(BaselineGsi, KinematicFixedEpochsWithinFiveCentimetresOfStatic) {
   }
 }
 
-// Fix rates at least RTKLIB's on the same data (104 / 120 continuous, 114 / 120 hold; issue 14):
+// Fix rates at least RTKLIB's on the same data (104 / 120 continuous, 114 / 120 hold; file comment):
 // measured 116 and 117 static L1+L2, 114 and 116 kinematic.
 TEST(BaselineGsi, FixRateAtLeastRtklibs) {
   SKIP_WITHOUT_GSI_DATA();

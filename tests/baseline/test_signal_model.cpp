@@ -15,7 +15,7 @@
 #include "visors/core/constants.hpp"
 #include "visors/gnss/files/rinex_nav_file.hpp"
 #include "visors/gnss/files/rinex_obs_file.hpp"
-#include "visors/gnss/gnss_test_data.hpp"
+#include "gnss/gnss_test_data.hpp"
 
 namespace visors::baseline {
 namespace {

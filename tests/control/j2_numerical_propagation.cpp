@@ -1,4 +1,4 @@
-#include "visors/control/j2_numerical_propagation.hpp"
+#include "control/j2_numerical_propagation.hpp"
 
 #include <gtest/gtest.h>
 

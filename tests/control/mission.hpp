@@ -1,5 +1,6 @@
 #pragma once
-// Test support: the mission's chief and relative orbits (mission paper; docs/conventions.md).
+// Test support: the mission's chief and relative orbits (Guffanti et al., AAS 23-149, 2023,
+// Table 5; docs/conventions.md).
 
 #include <cmath>
 #include <numbers>

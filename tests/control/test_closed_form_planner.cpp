@@ -1,6 +1,7 @@
-// Closed-form impulsive planner: the digest's worked example (Keplerian), the dominant cases
-// against the lower bounds with J2 and the eccentric Gamma, exactness in the linear model, a J2
-// numerical propagation of the mission transfer, and bad input.
+// Closed-form impulsive planner: the standby -> science worked example (Keplerian;
+// docs/algorithms/control.md#worked-example-standby-to-science), the dominant cases against the
+// lower bounds with J2 and the eccentric Gamma, exactness in the linear model, a J2 numerical
+// propagation of the mission transfer, and bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,8 +14,8 @@
 #include "visors/astro/relative_orbital_elements.hpp"
 #include "visors/astro/roe_stm.hpp"
 #include "visors/control/closed_form_planner.hpp"
-#include "visors/control/j2_numerical_propagation.hpp"
-#include "visors/control/mission.hpp"
+#include "control/j2_numerical_propagation.hpp"
+#include "control/mission.hpp"
 #include "visors/control/delta_v_lower_bound.hpp"
 #include "visors/core/gps_time.hpp"
 
@@ -32,7 +33,8 @@ double orbit_period(const astro::KeplerianElements& c, const core::EarthGravityC
   return core::kTwoPi / (r.argp_dot + r.M_dot);
 }
 
-// Mission ROE (issue): standby a*[0,0,0,200,0,200], science a*[-2.62,45.21,-34.51,4.78,-18.72,2.72] m.
+// Mission ROE (Guffanti et al., AAS 23-149, 2023, Table 5): standby a*[0,0,0,200,0,200],
+// science a*[-2.62,45.21,-34.51,4.78,-18.72,2.72] m.
 astro::RelativeOrbitalElements standby(double a) {
   return astro::RelativeOrbitalElements{0, 0, 0, 200, 0, 200} / a;
 }
@@ -44,10 +46,12 @@ double terminal_error_m(const ManeuverPlan& plan, const astro::RelativeOrbitalEl
   return a * (plan.roe_final_predicted - target).norm();
 }
 
-// Digest Test 4-a [VN] (Keplerian, e = 0, u0 = 0, 1.5 orbits): in-plane burns
-// dv_T = (-29.3163, +54.1291, -26.2627) mm/s at u = 79.98, 259.98, 439.98 deg (cost 0.10971 m/s,
-// equal to the de bound), normal burn |dv_N| = 0.21933 m/s at u = 264.58 deg mod 180.
-TEST(ClosedFormPlanner, ReproducesDigestStandbyToScience) {
+// Worked example docs/algorithms/control.md#worked-example-standby-to-science (Keplerian, e = 0,
+// u0 = 0, 1.5 orbits; the three-tangential-burn closed form of Gaias & D'Amico 2015 / Chernick &
+// D'Amico 2018, evaluated independently): in-plane burns dv_T = (-29.3163, +54.1291, -26.2627) mm/s at
+// u = 79.98, 259.98, 439.98 deg (cost 0.10971 m/s, equal to the de bound), normal burn
+// |dv_N| = 0.21933 m/s at u = 264.58 deg mod 180.
+TEST(ClosedFormPlanner, ReproducesTheWorkedStandbyToScience) {
   astro::KeplerianElements chief = mission_chief();
   chief.e = 0.0;
   chief.argp = 0.0;
@@ -61,21 +65,21 @@ TEST(ClosedFormPlanner, ReproducesDigestStandbyToScience) {
   for (const Impulse& imp : plan->impulses) {
     if (std::abs(imp.dv_rtn.y()) > 1e-6) {
       tangential.push_back(imp.dv_rtn.y());
-      // digest Test 4-a burn phases printed to 0.01 deg; measured 1.1e-4 deg (2026-11)
+      // worked example's burn phases printed to 0.01 deg; measured 1.1e-4 deg (2026-11)
       EXPECT_NEAR(std::fmod(imp.t * n / kDeg, 180.0), 79.975, 0.01);
     }
     if (std::abs(imp.dv_rtn.z()) > 1e-6) {
       normal += std::abs(imp.dv_rtn.z());
-      // digest Test 4-a, 264.58 deg mod 180, printed to 0.01 deg; measured 4.1e-4 deg (2026-11)
+      // worked example, 264.58 deg mod 180, printed to 0.01 deg; measured 4.1e-4 deg (2026-11)
       EXPECT_NEAR(std::fmod(imp.t * n / kDeg, 180.0), 84.579, 0.01);
     }
   }
   ASSERT_EQ(tangential.size(), 3u);
-  // digest Test 4-a prints 1e-4 mm/s; measured 5.5e-10, 3.1e-8, 1.7e-8 m/s (2026-11)
+  // the worked example prints 1e-4 mm/s; measured 5.5e-10, 3.1e-8, 1.7e-8 m/s (2026-11)
   EXPECT_NEAR(tangential[0], -29.3163e-3, 1e-7);
   EXPECT_NEAR(tangential[1], 54.1291e-3, 1e-7);
   EXPECT_NEAR(tangential[2], -26.2627e-3, 1e-7);
-  // digest Test 4-a prints 1e-5 m/s; measured 2.9e-6, 4.8e-6 m/s (2026-11); terminal: planner's terminal_tolerance_m 1e-6 m (closed_form_planner.hpp), measured 2.5e-14 m
+  // the worked example prints 1e-5 m/s; measured 2.9e-6, 4.8e-6 m/s (2026-11); terminal: planner's terminal_tolerance_m 1e-6 m (closed_form_planner.hpp), measured 2.5e-14 m
   EXPECT_NEAR(normal, 0.21933, 1e-5);
   EXPECT_NEAR(plan->dv_total_mps, 0.10971 + 0.21933, 1e-5);
   EXPECT_LT(terminal_error_m(plan.value(), science(a), a), 1e-6);

@@ -10,7 +10,7 @@
 #include "visors/control/impulse_effect.hpp"
 #include "visors/control/least_squares_planner.hpp"
 #include "visors/control/maneuver_buffer.hpp"
-#include "visors/control/mission.hpp"
+#include "control/mission.hpp"
 #include "visors/control/reachable_set_planner.hpp"
 #include "visors/control/stochastic_mpc.hpp"
 #include "support/allocation_counter.hpp"

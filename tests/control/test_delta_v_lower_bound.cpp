@@ -1,5 +1,6 @@
-// Delta-v lower bounds of the reduced impulsive problem: closed forms (digest 4.2 / Chernick &
-// D'Amico 2018), regimes of the dlambda bound, and an independent check against the conic solver
+// Delta-v lower bounds of the reduced impulsive problem: closed forms (Chernick & D'Amico 2018;
+// docs/algorithms/control.md#delta-v-lower-bounds), regimes of the dlambda bound, and an
+// independent check against the conic solver
 // solving the minimum-fuel problem on a dense time grid (a lower bound must not exceed a feasible
 // cost and should be close to the optimum when the window holds the optimal burn locations).
 #include <gtest/gtest.h>
@@ -22,14 +23,16 @@ constexpr double kDeg = core::kDegToRad;
 const core::EarthGravityConstants kJ2{};
 const core::EarthGravityConstants kKepler{kJ2.mu, kJ2.re, 0.0};
 
-// The mission chief (issue 3 / digest tables): a = R_E + 500 km, e = 0.004, i = 97.8 deg.
+// The mission chief (Guffanti et al., AAS 23-149, 2023, Table 5; argp 90 deg as in the worked
+// examples of docs/algorithms/): a = R_E + 500 km, e = 0.004, i = 97.8 deg.
 astro::KeplerianElements mission_chief(double e = 0.004) {
   return {kJ2.re + 500e3, e, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, 0.0};
 }
 
 double mean_motion(const astro::KeplerianElements& c) { return std::sqrt(kJ2.mu / (c.a * c.a * c.a)); }
 
-// Digest Test 4-a pseudostate (standby -> science), metres.
+// Pseudostate of the standby -> science worked example, metres
+// (docs/algorithms/control.md#worked-example-standby-to-science).
 astro::RelativeOrbitalElements science_pseudostate_m() {
   astro::RelativeOrbitalElements w;
   w << -2.62, 45.21, -34.51, -195.22, -18.72, -197.28;
@@ -37,7 +40,8 @@ astro::RelativeOrbitalElements science_pseudostate_m() {
 }
 
 // Minimum of sum ||dv_k|| s.t. sum B_k dv_k = a w over a uniform grid of `points` burn times in
-// [t_start, tf] (digest 5.4 (b)), by the project's interior-point conic solver [m/s].
+// [t_start, tf] (ECOS-style conic form of the grid primal), by the project's interior-point conic
+// solver [m/s].
 double grid_optimum(const astro::KeplerianElements& chief, const astro::RelativeOrbitalElements& w_m, double t_start,
                     double tf, int points, const core::EarthGravityConstants& g) {
   const int n = 4 * points;
@@ -51,7 +55,7 @@ double grid_optimum(const astro::KeplerianElements& chief, const astro::Relative
   pr.G = Eigen::MatrixXd::Zero(n, n);
   pr.h = Eigen::VectorXd::Zero(n);
   pr.A = Eigen::MatrixXd::Zero(6, n);
-  const double scale = w_m.norm();  // unit-norm right-hand side (digest 5.4 scaling)
+  const double scale = w_m.norm();  // unit-norm right-hand side (keeps the solver's tolerances meaningful)
   pr.b = w_m / scale;
   for (int k = 0; k < points; ++k) {
     const double t = t_start + (tf - t_start) * k / (points - 1);
@@ -68,10 +72,12 @@ double grid_optimum(const astro::KeplerianElements& chief, const astro::Relative
   return info.value().primal_objective * scale;
 }
 
-// Digest Test 4-a bounds [VN]: da 1.45 mm/s, dlambda 2.09 mm/s, de 109.71 mm/s (de-dominant),
-// out of plane n a||ddi|| = 0.21933 m/s; Keplerian, 1.5-orbit window. The digest's 2.09 mm/s is
+// Bounds of the standby -> science worked example
+// (docs/algorithms/control.md#worked-example-standby-to-science, the closed forms evaluated
+// independently): da 1.45 mm/s, dlambda 2.09 mm/s, de 109.71 mm/s
+// (de-dominant), out of plane n a||ddi|| = 0.21933 m/s; Keplerian, 1.5-orbit window. 2.09 mm/s is
 // the tangential-only bound; the full dual bound is 1% lower (2.069 mm/s, see the header).
-TEST(DeltaVLowerBound, DigestStandbyToScienceNumbers) {
+TEST(DeltaVLowerBound, WorkedExampleStandbyToScienceNumbers) {
   const astro::KeplerianElements chief = mission_chief();
   const double n = mean_motion(chief);
   const auto b = delta_v_lower_bound(chief, science_pseudostate_m() / chief.a, 1.5 * core::kTwoPi / n, kKepler);
@@ -83,11 +89,11 @@ TEST(DeltaVLowerBound, DigestStandbyToScienceNumbers) {
   EXPECT_NEAR(b->out_of_plane, 0.21933, 0.000005);
   EXPECT_EQ(b->dominant, InPlaneCase::kDe);
   EXPECT_DOUBLE_EQ(b->in_plane, b->de);
-  // definition (coupled bound, digest 4.2); measured 0 (2026-11)
+  // definition (coupled bound, docs/algorithms/control.md#delta-v-lower-bounds); measured 0 (2026-11)
   EXPECT_NEAR(b->total, std::hypot(b->de, b->out_of_plane), 1e-15);
 }
 
-// Closed forms (digest 4.2; Chernick & D'Amico 2018), Keplerian, for windows of du >= 4/3 rad:
+// Closed forms (Chernick & D'Amico 2018), Keplerian, for windows of du >= 4/3 rad:
 // (n/2) a|dda|, (n/2) a||dde||, n a||ddi||, and (n/2) max(a|dda|, |a dda + 4 a ddl/(3 du)|).
 TEST(DeltaVLowerBound, MatchesKeplerianClosedForms) {
   const astro::KeplerianElements chief = mission_chief();
@@ -114,8 +120,8 @@ TEST(DeltaVLowerBound, MatchesKeplerianClosedForms) {
 
 // Pure dlambda, closed form derived here (the dual optimum sits where the unit circle meets the
 // start-of-window ellipse): n a|ddlambda| / sqrt(c^2 + 4), c = 1.5 du, for short and long
-// windows. Its limits are the digest's radial (n/2) a|ddl| and tangential-pair 2 n a|ddl|/(3 du)
-// costs, which it undercuts: the digest's sharp switch at du = 4/3 rad is not the bound.
+// windows. Its limits are the radial (n/2) a|ddl| and tangential-pair 2 n a|ddl|/(3 du) costs,
+// which it undercuts: a sharp switch between them at du = 4/3 rad is not the bound.
 TEST(DeltaVLowerBound, PureDlambdaClosedForm) {
   const astro::KeplerianElements chief = mission_chief();
   const double n = mean_motion(chief);
@@ -130,8 +136,9 @@ TEST(DeltaVLowerBound, PureDlambdaClosedForm) {
   }
 }
 
-// J2 (digest 4.6): the dlambda lever arm is (1.5 n + 3.5 kappa E P) tau (KGD17 eq. A6) instead of
-// 1.5 n tau, and the out-of-plane bound uses the di pre-image under the nodal drift.
+// J2 (docs/algorithms/control.md#the-dlambda-bound): the dlambda lever arm is
+// (1.5 n + 3.5 kappa E P) tau (KGD17 eq. A6) instead of 1.5 n tau, and the out-of-plane bound uses
+// the di pre-image under the nodal drift.
 TEST(DeltaVLowerBound, J2LeverArmAndPreImage) {
   const astro::KeplerianElements chief = mission_chief();
   const astro::J2SecularRates r = astro::j2_secular_rates(chief, kJ2);

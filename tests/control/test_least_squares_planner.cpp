@@ -1,5 +1,6 @@
-// Tikhonov least-squares planner at 2-3 fixed times (digest 5.6): exact for nu -> 0, the digest's
-// singular-time pitfall, the regularisation trade-off, the J2 numerical propagation, bad input.
+// Tikhonov least-squares planner at 2-3 fixed times (docs/algorithms/control.md#least-squares-planner):
+// exact for nu -> 0, the singular-time pitfall, the regularisation trade-off, the J2 numerical
+// propagation, bad input.
 #include <Eigen/QR>
 #include <gtest/gtest.h>
 
@@ -11,8 +12,8 @@
 #include "visors/astro/j2_secular.hpp"
 #include "visors/astro/roe_stm.hpp"
 #include "visors/control/closed_form_planner.hpp"
-#include "visors/control/j2_numerical_propagation.hpp"
-#include "visors/control/mission.hpp"
+#include "control/j2_numerical_propagation.hpp"
+#include "control/mission.hpp"
 #include "visors/control/least_squares_planner.hpp"
 
 namespace visors::control {
@@ -66,8 +67,9 @@ TEST(LeastSquaresPlanner, ExactForVanishingRegularisation) {
   }
 }
 
-// Regularisation trade-off (digest 5.6): larger nu gives smaller impulses and a larger terminal
-// error, monotonically; the predicted error is nu (MM' + nu I)^-1 w.
+// Regularisation trade-off (docs/algorithms/control.md#least-squares-planner): larger nu gives
+// smaller impulses and a larger terminal error, monotonically; the predicted error is
+// nu (MM' + nu I)^-1 w.
 TEST(LeastSquaresPlanner, RegularisationTradesErrorForDeltaV) {
   const astro::KeplerianElements chief = mission_chief();
   const double a = chief.a;
@@ -88,11 +90,12 @@ TEST(LeastSquaresPlanner, RegularisationTradesErrorForDeltaV) {
   EXPECT_GT(last_err, 0.01);  // nu at the scale of MM' leaves a visible error
 }
 
-// Digest Test 5.6-a [VN] (Keplerian near-circular, standby -> science, 1.5 orbits): burns at
+// Worked example docs/algorithms/control.md#worked-example-fixed-time-burns (Keplerian
+// near-circular, standby -> science, 1.5 orbits; M'(M M')^-1 w evaluated independently): burns at
 // u = 90, 270, 450 deg cannot change dix (cos u = 0): nu = 0 is rejected as singular geometry,
 // and nu > 0 returns a bounded plan that leaves the 18.72 m of a*dix; times at u = 45, 225, 405,
 // 520 deg give an exact solution of 0.4257 m/s.
-TEST(LeastSquaresPlanner, DigestSingularTimesAndExactFourBurnSolution) {
+TEST(LeastSquaresPlanner, WorkedExampleSingularTimesAndExactFourBurnSolution) {
   astro::KeplerianElements chief = mission_chief();
   chief.e = 0.0;
   chief.argp = 0.0;
@@ -115,7 +118,7 @@ TEST(LeastSquaresPlanner, DigestSingularTimesAndExactFourBurnSolution) {
   const std::array<double, 4> good{45 * kDeg / n, 225 * kDeg / n, 405 * kDeg / n, 520 * kDeg / n};
   const auto p = plan_least_squares(chief, standby, science(a), tf, good, exact, kKepler);
   ASSERT_TRUE(p.ok());
-  // exact four-burn solution, round-off; loose: measured 2.9e-13 m (2026-11), bound 1e-9 m ~3400x above. dv: digest Test 5.6-a prints 1e-4 m/s; measured 4.6e-5 m/s
+  // exact four-burn solution, round-off; loose: measured 2.9e-13 m (2026-11), bound 1e-9 m ~3400x above. dv: the worked example prints 1e-4 m/s; measured 4.6e-5 m/s
   EXPECT_LT(a * p->terminal_error.norm(), 1e-9);
   EXPECT_NEAR(p->plan.dv_total_mps, 0.4257, 1e-4);
 }

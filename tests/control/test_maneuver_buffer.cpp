@@ -8,7 +8,7 @@
 
 #include "visors/astro/keplerian_elements.hpp"
 #include "visors/control/impulse_effect.hpp"
-#include "visors/control/j2_numerical_propagation.hpp"
+#include "control/j2_numerical_propagation.hpp"
 #include "visors/control/maneuver_buffer.hpp"
 #include "visors/astro/relative_orbital_elements.hpp"
 #include "visors/core/constants.hpp"
@@ -16,11 +16,13 @@
 namespace visors::control {
 namespace {
 
-// Mission chief (mean, t = 0) and the optics spacecraft's wet mass (mission paper).
+// Mission chief (mean, t = 0) and the optics spacecraft's wet mass (Guffanti et al., AAS 23-149,
+// 2023, Tables 5 and 4).
 const astro::KeplerianElements kChief{6878136.3, 0.004, 97.8 * core::kDegToRad, 157.5 * core::kDegToRad,
                                       90.0 * core::kDegToRad, 0.0};
 constexpr double kMass = 10.62;  // [kg]
-// The digest's buffering example (relative-motion-and-control.md sec. 8.1): (10, 50, 20) mm/s.
+// A large impulse to buffer: (10, 50, 20) mm/s (dozens of pieces; the loss of an equal split is
+// metres, docs/algorithms/control.md#maneuver-buffering).
 const Impulse kLargeImpulse{2000.0, {0.010, 0.050, 0.020}};
 
 // Net first-order effect of impulses on the mean ROE at t_ref.
@@ -42,7 +44,7 @@ TEST(ManeuverBuffer, EveryPieceIsWithinTheActuatorLimits) {
 }
 
 // Pieces 46.5 s apart, centred on the planned time (a one-sided schedule adds 3 N dt dv_T of
-// dlambda: digest 8.3 item 1).
+// dlambda: docs/algorithms/control.md#maneuver-buffering).
 TEST(ManeuverBuffer, PiecesAreEvenlySpacedAndCentredOnThePlannedTime) {
   const auto pieces = split_impulse(kChief, kLargeImpulse, kMass);
   ASSERT_TRUE(pieces.ok());
@@ -51,14 +53,15 @@ TEST(ManeuverBuffer, PiecesAreEvenlySpacedAndCentredOnThePlannedTime) {
   for (std::size_t k = 0; k < pieces->size(); ++k) {
     mean_t += (*pieces)[k].t;
     if (k > 0) {
-      // 46.5 s between impulses (docs/conventions.md Propulsion), centred (digest 8.3 item 1); measured 0 (2026-11)
+      // 46.5 s between impulses (docs/conventions.md Propulsion), centred (docs/algorithms/control.md#maneuver-buffering); measured 0 (2026-11)
       EXPECT_NEAR((*pieces)[k].t - (*pieces)[k - 1].t, 46.5, 1e-9);
     }
   }
   EXPECT_NEAR(mean_t / static_cast<double>(pieces->size()), kLargeImpulse.t, 1e-9);
 }
 
-// Issue 5 acceptance: the net first-order ROE effect is preserved to 1e-6 m (before quantisation).
+// Acceptance criterion of the buffer: the net first-order ROE effect is preserved to 1e-6 m
+// (before quantisation).
 TEST(ManeuverBuffer, SplitPreservesTheNetRoeEffect) {
   const auto pieces = split_impulse(kChief, kLargeImpulse, kMass);
   ASSERT_TRUE(pieces.ok());
@@ -68,8 +71,9 @@ TEST(ManeuverBuffer, SplitPreservesTheNetRoeEffect) {
   EXPECT_LT(kChief.a * (split - planned).cwiseAbs().maxCoeff(), 1e-6);  // [m]
 }
 
-// The equal split dv/K at the same times loses the de/di effect by the Dirichlet factor (digest
-// 8.1: metres for this impulse); the buffer's pieces do not.
+// The equal split dv/K at the same times loses the de/di effect by the Dirichlet factor
+// (docs/algorithms/control.md#maneuver-buffering: metres for this impulse); the buffer's pieces do
+// not.
 TEST(ManeuverBuffer, EqualSplitWouldMissTheTargetByMetres) {
   const auto pieces = split_impulse(kChief, kLargeImpulse, kMass);
   ASSERT_TRUE(pieces.ok());

@@ -1,6 +1,7 @@
-// The reachable-set planner with fewer than six impulses (issue 13): max_impulses is a cardinality
-// constraint, so every k in 1..6 must give either a plan that reaches the target in the linear
-// model or a clear failure, never ok with a miss (the reduction once read stale columns and
+// The reachable-set planner with fewer than six impulses
+// (docs/algorithms/control.md#fewer-than-six-impulses): max_impulses is a cardinality constraint,
+// so every k in 1..6 must give either a plan that reaches the target in the linear model or a
+// clear failure, never ok with a miss (the reduction once read stale columns and
 // returned ok with a 180 m miss at k = 1). References: an exhaustive search over every pair of
 // the planner's own grid times written here independently (dynamic-size QR solves of the same
 // linear model), and the 6-impulse optimum, below which no k-impulse plan can be.
@@ -14,7 +15,7 @@
 
 #include "visors/astro/roe_stm.hpp"
 #include "visors/control/impulse_effect.hpp"
-#include "visors/control/mission.hpp"
+#include "control/mission.hpp"
 #include "visors/control/reachable_set_planner.hpp"
 
 namespace visors::control {
@@ -85,8 +86,8 @@ double six_impulse_cost(const Case& c) {
   return planner.plan(mission_chief(), c.roe0, c.target, 0.0, c.tf_orbits * period_s()).value().dv_total_mps;
 }
 
-// Every ok plan, for every k, reaches the target within 1 mm (issue 13 acceptance) with at most
-// k impulses; a failure names the field.
+// Every ok plan, for every k, reaches the target within 1 mm (the planner's terminal_tolerance_m)
+// with at most k impulses; a failure names the field.
 TEST(ReachableSetCardinality, EveryOkPlanReachesTheTargetWithinOneMillimetre) {
   for (const Case& c : cases()) {
     for (int k = 1; k <= 6; ++k) {
@@ -97,7 +98,7 @@ TEST(ReachableSetCardinality, EveryOkPlanReachesTheTargetWithinOneMillimetre) {
         EXPECT_EQ(plan.error().field, "max_impulses") << plan.error().describe();
         continue;
       }
-      // max_impulses is a cardinality constraint (issue 13); measured 2 .. 6 impulses for k = 2 .. 6 (2026-11)
+      // max_impulses is a cardinality constraint (reachable_set_planner.hpp); measured 2 .. 6 impulses for k = 2 .. 6 (2026-11)
       EXPECT_LE(plan->impulses.size(), static_cast<std::size_t>(k));
       EXPECT_LT(terminal_miss_m(c, *plan), 1e-3);
     }
@@ -128,7 +129,8 @@ TEST(ReachableSetCardinality, OneImpulseFindsATargetOneImpulseMade) {
   EXPECT_LT((plan->impulses[0].dv_rtn - dv_rtn).norm(), 1e-9);
 }
 
-// k = 2 within 0.5 % of the exhaustive two-impulse optimum on the same grid (issue 13 acceptance).
+// k = 2 within 0.5 % of the exhaustive two-impulse optimum on the same grid (the acceptance
+// criterion of the two-impulse search).
 TEST(ReachableSetCardinality, TwoImpulsesMatchTheExhaustivePairSearch) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);

@@ -1,6 +1,7 @@
-// Reachable-set (dual) planner of Koenig & D'Amico 2021 (digest sec. 5) against a brute-force
-// reference: the same minimum-fuel problem on a 10x finer time grid, solved as ONE conic program
-// with every grid constraint at once (no working set, no exchange, no time refinement), whose
+// Reachable-set (dual) planner of Koenig & D'Amico 2021
+// (docs/algorithms/control.md#reachable-set-planner) against a brute-force reference: the same
+// minimum-fuel problem on a 10x finer time grid, solved as ONE conic program with every grid
+// constraint at once (no working set, no exchange, no time refinement), whose
 // primal impulses (the cone multipliers) are checked for feasibility and whose primal cost is
 // checked against its dual objective, so the reference value is certified optimal for the dense
 // grid by the duality gap.
@@ -19,7 +20,7 @@
 
 #include "visors/astro/j2_secular.hpp"
 #include "visors/astro/roe_stm.hpp"
-#include "visors/control/mission.hpp"
+#include "control/mission.hpp"
 #include "visors/control/impulse_effect.hpp"
 #include "visors/control/reachable_set_planner.hpp"
 #include "visors/optim/conic_solver.hpp"
@@ -114,7 +115,7 @@ std::vector<Case> cases() {
       {"standby_to_science_0.5orbit", standby(), science(), 0.0, 0.5},
       {"science_to_standby_1orbit", science(), standby(), 0.0, 1.0},
       {"science_to_standby_late_start", science(), standby(), 0.2, 0.9},
-      // Along-track dominated (digest sec. 4.5: burns at the window ends).
+      // Along-track dominated (the dlambda-dominant case: burns at the window ends).
       {"dlambda_dominant_0.4orbit", science(), roe_m(-2.62, 95.21, -34.51, 4.78, -18.72, 2.72), 0.0, 0.4},
       // Small science-orbit trim over a quarter orbit (radial burns are efficient there).
       {"science_trim_0.25orbit", science(), roe_m(-2.0, 44.0, -33.5, 5.5, -18.9, 2.5), 0.0, 0.25},
@@ -259,7 +260,7 @@ TEST(ReachableSetPlanner, PlanHasAtMostSixSortedImpulsesInsideTheWindow) {
   }
 }
 
-// Weak duality (digest sec. 5.2 step 6): dv_lower_bound never exceeds the optimum of the planner's
+// Weak duality (Koenig & D'Amico 2021): dv_lower_bound never exceeds the optimum of the planner's
 // own grid (the reference on that same grid), and the exchange closes the gap to 1e-6.
 TEST(ReachableSetPlanner, LowerBoundIsTightOnThePlannerGrid) {
   ReachableSetPlanner planner = make_planner();
@@ -276,11 +277,11 @@ TEST(ReachableSetPlanner, LowerBoundIsTightOnThePlannerGrid) {
   }
 }
 
-// Digest sec. 4.4 (test 4-a) gives the Keplerian near-circular in-plane optimum of standby ->
-// science over 1.5 orbits as 0.10971 m/s (tangential) plus 0.21933 m/s (normal); the 3-D
-// reachable-set optimum with J2 and radial burns allowed can only be cheaper than their sum
-// (0.32904) and not cheaper than the larger of the two (a 3-D impulse costs at least its normal
-// and its in-plane part).
+// The worked example docs/algorithms/control.md#worked-example-standby-to-science gives the
+// Keplerian near-circular optimum of standby -> science over 1.5 orbits as 0.10971 m/s
+// (tangential, in plane) plus 0.21933 m/s (normal); the 3-D reachable-set optimum with J2 and
+// radial burns allowed can only be cheaper than their sum (0.32904) and not cheaper than the
+// larger of the two (a 3-D impulse costs at least its normal and its in-plane part).
 TEST(ReachableSetPlanner, StandbyToScienceBetweenDecoupledBounds) {
   ReachableSetPlanner planner = make_planner();
   const auto plan = planner.plan(mission_chief(), standby(), science(), 0.0, 1.5 * period_s());

@@ -1,5 +1,6 @@
-// Stochastic MPC wrapper (digest sec. 5.5): replanning logic on the planner's own linear model,
-// and the closed loop against a numerical J2 propagation of both spacecraft.
+// Stochastic MPC wrapper (docs/algorithms/control.md#stochastic-mpc): replanning logic on the
+// planner's own linear model, and the closed loop against a numerical J2 propagation of both
+// spacecraft.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +15,7 @@
 #include "visors/astro/mean_osculating.hpp"
 #include "visors/astro/roe_stm.hpp"
 #include "visors/control/impulse_effect.hpp"
-#include "visors/control/mission.hpp"
+#include "control/mission.hpp"
 #include "visors/control/stochastic_mpc.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/dynamics/files/force_model_files.hpp"

@@ -1,7 +1,8 @@
-// Issue 5 acceptance (guidance): the transfer from the standby to the science orbit, flown as
-// 1.5-orbit closed-form legs between the guidance's waypoints, stays passively safe — RN
-// separation minus 3 sigma >= 5 m — at every instant, checked by sampling every 10 s with the
-// eccentric ROE -> RTN map (the planners' linear model, J2 included).
+// Acceptance test of the transfer guidance (docs/algorithms/control.md#transfer-waypoints): the
+// transfer from the standby to the science orbit, flown as 1.5-orbit closed-form legs between the
+// guidance's waypoints, stays passively safe — RN separation minus 3 sigma >= 5 m — at every
+// instant, checked by sampling every 10 s with the eccentric ROE -> RTN map (the planners' linear
+// model, J2 included).
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,8 @@ const astro::KeplerianElements kChief{6878136.3, 0.004, 97.8 * core::kDegToRad, 
                                       90.0 * core::kDegToRad, 0.0};
 const core::GpsTime kEpoch = core::GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kUtc).value();
 constexpr double kMu = 3.986004415e14;
-// Relative navigation uncertainty, 1 sigma, per a*dROE component (issue 6's ideal navigation:
+// Relative navigation uncertainty, 1 sigma, per a*dROE component (the relative accuracy of the
+// navigation with integer ambiguities fixed, Guffanti et al., AAS 23-149, 2023, Table 3:
 // 1 cm and 50 um/s; 50 um/s / n = 4.5 cm) [m].
 constexpr double kSigmaRoe = 0.05;
 

@@ -92,15 +92,16 @@ TEST(EarthFrames, CelestialPoleMatchesErfaXys06aTestValue) {
 }
 
 TEST(EarthFrames, ProjectEpochCheck) {
-  // Digest §1.2 (pyerfa): 2024-10-01T00:00:00 UTC, x_p 0.226101", y_p 0.407871", UT1-UTC
-  // 0.0590197 s (no dX, dY): GCRS (7000 km, 0, 0) -> ITRS (6895679.284, -1203879.233, 16792.928) m.
+  // ERFA eraC2t06a at 2024-10-01T00:00:00 UTC, x_p 0.226101", y_p 0.407871", UT1-UTC 0.0590197 s
+  // (the finals2000A row of MJD 60584; no dX, dY): GCRS (7000 km, 0, 0) -> ITRS (6895679.284,
+  // -1203879.233, 16792.928) m. Worked example in docs/algorithms/dynamics.md#gcrf-to-itrf-with-erfa.
   EarthOrientation eop;
   eop.xp = 0.226101 * kArcsecToRad;
   eop.yp = 0.407871 * kArcsecToRad;
   eop.dut1 = 0.0590197;
   const StateVector itrf =
       visors::core::gcrf_to_itrf(utc("2024-10-01T00:00:00"), {{7.0e6, 0.0, 0.0}, {0, 0, 0}}, eop);
-  // reference printed to 1 mm (digest §1.2, pyerfa); measured <= 2.6e-4 m (2026-11)
+  // reference printed to 1 mm (eraC2t06a, above); measured <= 2.6e-4 m (2026-11)
   EXPECT_NEAR(itrf.r.x(), 6895679.284, 1e-3);
   EXPECT_NEAR(itrf.r.y(), -1203879.233, 1e-3);
   EXPECT_NEAR(itrf.r.z(), 16792.928, 1e-3);

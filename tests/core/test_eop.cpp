@@ -202,8 +202,9 @@ TEST(Eop, MissingFileIsAnError) {
 }
 
 TEST(Eop, LeapSecondInsideTheIntervalIsInterpolatedThroughUt1MinusTai) {
-  // Synthetic rows around the 2016-12-31 leap second. UT1-UTC of MJD 57753 is the digest's
-  // -0.4077601 s; the next day's value is made up, +1 s jump included (0.5922 s).
+  // Synthetic rows around the 2016-12-31 leap second. UT1-UTC of MJD 57753 is the IERS
+  // finals2000A value, -0.4077601 s; the next day's value is made up, +1 s jump included
+  // (0.5922 s). Worked example in docs/algorithms/dynamics.md#earth-orientation-parameters.
   TempFile file({finals_line(16, 12, 30, 57752.0, 0.1, 0.2, -0.4070000, 1.0, 0.1, 0.1),
                  finals_line(16, 12, 31, 57753.0, 0.1, 0.2, -0.4077601, 1.0, 0.1, 0.1),
                  finals_line(17, 1, 1, 57754.0, 0.1, 0.2, 0.5922000, 1.0, 0.1, 0.1),

@@ -57,7 +57,8 @@ TEST(GpsTime, EpochIsWeekZero) {
 
 TEST(GpsTime, MissionEpoch) {
   // 2024-10-01 00:00:00 GPST: week 2334, TOW 172800 s (Tuesday); GPS - UTC = 18 s, so UTC is
-  // 2024-09-30T23:59:42 and TT - UTC = 18 + 51.184 = 69.184 s (digest §1.1, pyerfa).
+  // 2024-09-30T23:59:42 and TT - UTC = 18 + 51.184 = 69.184 s (worked example in
+  // docs/algorithms/dynamics.md#time-scales).
   const GpsTime t = gps("2024-10-01T00:00:00");
   EXPECT_EQ(t.week(), 2334);
   EXPECT_EQ(t.seconds_of_week(), 172800.0);

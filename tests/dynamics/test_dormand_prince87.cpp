@@ -295,7 +295,7 @@ TEST(DormandPrince87, TwoBodyIntegralsConservedTenDays) {
     const double d_momentum = (momentum(r.x) - momentum(x0)).norm() / momentum(x0).norm();
     std::printf("[ measured ] e = %g, 10 days: relative energy drift %.2e, angular momentum %.2e\n",
                 e, d_energy, d_momentum);
-    // measured regression bound: energy 1.1e-11, momentum 5.5e-12 relative (2026-11); bound 1e-10 (issue 3 acceptance, tests/dynamics/test_orbit_propagator.cpp)
+    // measured regression bound: energy 1.1e-11, momentum 5.5e-12 relative (2026-11); bound 1e-10 (the propagator's acceptance bound, docs/algorithms/dynamics.md#propagator-acceptance)
     EXPECT_LT(d_energy, 1e-10) << "e = " << e;
     EXPECT_LT(d_momentum, 1e-10) << "e = " << e;
   }

@@ -17,8 +17,8 @@ using visors::dynamics::drag_acceleration;
 using visors::dynamics::earth_rotation_gcrf_approximate;
 using visors::dynamics::relative_wind_gcrf;
 
-// brahe drag.rs::test_accel_drag (digest sec. 3.2): a = R + 500 km (R = 6378136.3 m), e = 0.01,
-// i = 97.3 deg, RAAN 15 deg, argp 30 deg, M 45 deg, GM = 3.986004415e14.
+// brahe drag.rs::test_accel_drag (docs/algorithms/dynamics.md#drag-acceleration): a = R + 500 km
+// (R = 6378136.3 m), e = 0.01, i = 97.3 deg, RAAN 15 deg, argp 30 deg, M 45 deg, GM = 3.986004415e14.
 StateVector brahe_state() {
   visors::astro::KeplerianElements el;
   el.a = 6378136.3 + 500e3;
@@ -32,7 +32,8 @@ StateVector brahe_state() {
 
 TEST(Drag, BraheTestVectorMagnitude) {
   // rho = 1e-12 kg/m^3, m = 1000 kg, A = 1 m^2, C_D = 2, omega_E = 7.292115146706979e-5 rad/s:
-  // |a| = 5.97601877277239e-8 m/s^2 (brahe, reproduced exactly in the digest). Tolerance 1e-14
+  // |a| = 5.97601877277239e-8 m/s^2 (brahe; re-evaluated from M&G eq. 3.97 in
+  // docs/algorithms/dynamics.md#drag-acceleration: 5.976018772772391e-8). Tolerance 1e-14
   // relative (measured 2e-16): the two element-to-Cartesian conversions round differently.
   const Eigen::Vector3d a =
       drag_acceleration(brahe_state(), 1e-12, 2.0, 1.0, 1000.0, earth_rotation_gcrf_approximate());

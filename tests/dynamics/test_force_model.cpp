@@ -1,6 +1,7 @@
 // The assembled force model: configuration checks, its creation from loaded data and the loading
 // with fallbacks (dynamics/files/force_model_files.hpp), term magnitudes, the truth/on-board model
-// mismatch and the differential accelerations between the two spacecraft (issue 3 acceptance).
+// mismatch and the differential accelerations between the two spacecraft
+// (docs/algorithms/dynamics.md#truth-and-on-board-mismatch).
 
 #include <algorithm>
 #include <cmath>
@@ -172,7 +173,8 @@ TEST(ForceModel, CountsIntervalsWithoutApHistory) {
 // chief (500 km) equals the model evaluated directly at the same point with the activity of the
 // space-weather table (f107, f107a, daily Ap and the 3-hourly ap history): the plumbing. The
 // second time is in the same UTC day but another 3-hour interval of the storm of 2024-10-10
-// (SOURCES.md sec. 2), so a model that refreshed its ap history only daily would fail.
+// (the space-weather file's 3-hourly ap), so a model that refreshed its ap history only daily
+// would fail.
 TEST(ForceModel, TruthDensityIsNrlmsise00WithTheObservedApHistory) {
   const ForceModelConfig truth = ForceModelConfig::truth();
   if (const auto missing = missing_files(truth); !missing.empty()) {
@@ -309,8 +311,9 @@ TEST(ForceModel, EmpiricalAccelerationIsInTheRtnFrame) {
   EXPECT_NEAR(a.empirical.dot(x.r.normalized()), 1e-6, 1e-18);
 }
 
-// Issue 3 acceptance, model mismatch: one orbit of the mission chief with the truth and the
-// on-board models from the same initial state, RTN difference of the positions.
+// Model mismatch (docs/algorithms/dynamics.md#truth-and-on-board-mismatch): one orbit of the
+// mission chief with the truth and the on-board models from the same initial state, RTN difference
+// of the positions.
 Eigen::Vector3d mismatch_after_one_orbit(ForceModelConfig truth_config, ForceModelConfig onboard_config) {
   ForceModel truth = make(truth_config);
   ForceModel onboard = make(onboard_config);
@@ -362,12 +365,12 @@ TEST(ForceModel, TruthAndOnboardModelsWithoutDragDifferByMetres) {
   EXPECT_LT(d_rtn.norm(), 20.0);
 }
 
-// Issue 3 acceptance: the differential acceleration between two spacecraft 40 m apart (OSC
-// sunward of DSC, as in science mode), per term. Gravity's differential is checked against the
+// The differential acceleration between two spacecraft 40 m apart (OSC sunward of DSC, as in
+// science mode), per term. Gravity's differential is checked against the
 // full-field gravity gradient times the separation (second-order remainder ~ 40 m / 6878 km).
 TEST(ForceModel, DifferentialAccelerationsFortyMetresApart) {
   SpacecraftProperties osc;
-  osc.mass = 10.62;  // mission paper: OSC 10.62 kg, DSC 11.35 kg
+  osc.mass = 10.62;  // Guffanti et al., AAS 23-149, 2023, Table 4: OSC 10.62 kg, DSC 11.35 kg
   ForceModel dsc_forces = make(ForceModelConfig::truth());
   ForceModel osc_forces = make(ForceModelConfig::truth(), osc);
   const core::StateVector dsc = mission_chief(dsc_forces.gm());

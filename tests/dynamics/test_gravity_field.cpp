@@ -1,5 +1,5 @@
-// ICGEM .gfc reader: the quirks of the real files (navigation-and-dynamics digest §2.3) and one
-// clear error per malformed input, plus the embedded default field.
+// ICGEM .gfc reader: the quirks of the real files (docs/algorithms/dynamics.md#reading-icgem-files)
+// and one clear error per malformed input, plus the embedded default field.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -48,7 +48,7 @@ std::string error_text(const visors::core::Result<GravityField>& result) {
   return result.ok() ? std::string("(no error)") : result.error().describe();
 }
 
-// Digest §2.4-6: GGM05S C̄20 with a Fortran D exponent, GM and R of the header (ICGEM GGM05S).
+// GGM05S C̄20 with a Fortran D exponent, GM and R of the header (ICGEM GGM05S).
 TEST(IcgemReader, Ggm05sHeaderAndDExponent) {
   REQUIRE_DATA(path, "gravity/GGM05S_d90.gfc");
   const auto field = read_icgem(path);
@@ -62,7 +62,7 @@ TEST(IcgemReader, Ggm05sHeaderAndDExponent) {
   EXPECT_EQ(field->s(90, 90), 2.179174916721e-09);  // last line "gfc 90 90 ... 2.179174916721D-09"
 }
 
-// Digest §2.3-2: GGM01S has no norm key (fully normalised), no degree-1 lines, 8 columns.
+// GGM01S has no norm key (fully normalised), no degree-1 lines, 8 columns.
 TEST(IcgemReader, Ggm01sNoNormNoDegreeOneExtraColumn) {
   REQUIRE_DATA(path, "gravity/GGM01S.gfc");
   const auto field = read_icgem(path, 20);
@@ -76,7 +76,7 @@ TEST(IcgemReader, Ggm01sNoNormNoDegreeOneExtraColumn) {
   EXPECT_EQ(field->max_degree, 20);
 }
 
-// Digest §2.3-3: JGM3 has the free-text header line "J2-DOT -26e10-12", lines ordered by m.
+// JGM3 has the free-text header line "J2-DOT -26e10-12", lines ordered by m.
 TEST(IcgemReader, Jgm3FreeTextHeaderAndColumnOrder) {
   REQUIRE_DATA(path, "gravity/JGM3.gfc");
   const auto field = read_icgem(path);
@@ -182,7 +182,8 @@ TEST(IcgemReader, TimeVariableRecordRejected) {
   EXPECT_NE(error_text(field).find("time-variable record 'gfct'"), std::string::npos) << error_text(field);
 }
 
-// Un-normalised input converted with N_nm = sqrt((2-δ0m)(2n+1)(n-m)!/(n+m)!) (digest §2.1):
+// Un-normalised input converted with N_nm = sqrt((2-δ0m)(2n+1)(n-m)!/(n+m)!)
+// (docs/algorithms/dynamics.md#potential-and-normalisation):
 // C̄20 = C20/sqrt(5), C̄22 = C22/sqrt(10/24), C̄31 = C31/sqrt(14·2!/4!).
 TEST(IcgemReader, UnnormalizedConvertedToFullyNormalised) {
   std::string header = kHeader;

@@ -58,12 +58,12 @@ void expect_relative(double actual, double expected, double tol) {
 }
 
 TEST(HarrisPriester, ApexAt500KmIsTheTableMaximum) {
-  // M&G Table 3.8 at 500 km: rho_M = 2.042 g/km^3 = 2.042e-12 kg/m^3 (digest sec. 3.1 test).
+  // M&G Table 3.8 at 500 km: rho_M = 2.042 g/km^3 = 2.042e-12 kg/m^3 (a table node).
   expect_relative(model().density(query(500e3, kApex)), 2.042e-12, kNodeRelTol);
 }
 
 TEST(HarrisPriester, AntapexAt500KmIsTheTableMinimum) {
-  // M&G Table 3.8 at 500 km: rho_m = 0.3916 g/km^3 = 3.916e-13 kg/m^3 (digest sec. 3.1 test).
+  // M&G Table 3.8 at 500 km: rho_m = 0.3916 g/km^3 = 3.916e-13 kg/m^3 (a table node).
   expect_relative(model().density(query(500e3, -kApex)), 3.916e-13, kNodeRelTol);
 }
 
@@ -85,11 +85,11 @@ TEST_F(SharedTable, EmbeddedTableEqualsTheFileExactly) {
   EXPECT_EQ(embedded.rho_min, table_.rho_min);
   EXPECT_EQ(embedded.rho_max, table_.rho_max);
   EXPECT_EQ(embedded.f107, 150.0);
-  EXPECT_EQ(embedded.height_m.size(), 50u);  // SOURCES.md sec. 6: 50 rows, 100-1000 km
+  EXPECT_EQ(embedded.height_m.size(), 50u);  // data/SOURCES.md: 50 rows, 100-1000 km
 }
 
 TEST_F(SharedTable, EveryNodeGivesMaximumAtApexAndMinimumAtAntapex) {
-  // The file's kg/m^3 columns (SOURCES.md sec. 6, M&G Table 3.8), with n = 6 and n = 2.
+  // The file's kg/m^3 columns (data/SOURCES.md, M&G Table 3.8), with n = 6 and n = 2.
   for (double n : {6.0, 2.0}) {
     HarrisPriesterSettings settings;
     settings.cosine_exponent = n;
@@ -103,8 +103,8 @@ TEST_F(SharedTable, EveryNodeGivesMaximumAtApexAndMinimumAtAntapex) {
 }
 
 TEST(HarrisPriester, BraheCrossValidationVector) {
-  // brahe harris_priester.rs::test_harris_priester_cross_validation (digest sec. 3.1, reproduced
-  // there with n = 6 and WGS-84 geodetic height). The points lie in the x-z plane; the height
+  // brahe harris_priester.rs::test_harris_priester_cross_validation (n = 6, WGS-84 geodetic
+  // height; docs/algorithms/dynamics.md#harris-priester). The points lie in the x-z plane; the height
   // does not depend on longitude, so r serves as both r_gcrf and r_itrf. Tolerance: half a unit
   // of the last published digit.
   const Eigen::Vector3d sun(24622331959.580, -133060326832.922, -57688711921.833);
@@ -210,7 +210,7 @@ TEST(HarrisPriester, TableChosenByClosestF107Level) {
   auto created = HarrisPriesterAtmosphere::create({high, embedded_harris_priester_table()});
   ASSERT_TRUE(created.ok()) << created.error().describe();
   const HarrisPriesterAtmosphere& hp = *created;
-  EXPECT_EQ(hp.tables()[hp.table_index(215.3)].f107, 250.0);  // 2024-10-01 f107a (SOURCES.md)
+  EXPECT_EQ(hp.tables()[hp.table_index(215.3)].f107, 250.0);  // 2024-10-01 f107a (space-weather file)
   EXPECT_EQ(hp.tables()[hp.table_index(120.0)].f107, 150.0);
   EXPECT_EQ(hp.tables()[hp.table_index(200.0)].f107, 150.0);  // tie: the lower level
   expect_relative(hp.density(query(500e3, kApex, 215.3)), 3.0 * 2.042e-12, kNodeRelTol);

@@ -26,7 +26,7 @@ using visors::dynamics::Nrlmsise00Output;
 using visors::dynamics::files::parse_nrlmsise00_coefficients;
 using visors::dynamics::files::read_nrlmsise00_coefficients;
 
-// The repository's copy of the tables (data/SOURCES.md), so these tests need no shared data.
+// The repository's copy of the tables (data/SOURCES.md), so these tests need no data from outside it.
 const std::string kCoefficientFile = std::string(VISORS_SOURCE_DIR) + "/data/atmosphere/nrlmsise00_coefficients.txt";
 
 const Nrlmsise00Coefficients& coefficients() {
@@ -144,7 +144,8 @@ TEST(Nrlmsise00, PublishedCasesEveryOutputToItsPrintedDigits) {
         EXPECT_EQ(got[q], 0.0) << "case " << c.number << " " << kQuantity[q];
       } else if (q == 8 && want < 1e-30) {
         // Cases 4 and 17 (100 km): anomalous O ~2.8e-42 and 2.4e-42 cm^-3 in the C program,
-        // 0 in the FORTRAN (SOURCES.md sec. 5): compare absolutely, "negligible".
+        // 0 in the FORTRAN (docs/nrlmsise00.md#accuracy-against-the-published-cases): compare
+        // absolutely, "negligible".
         EXPECT_NEAR(got[q], 0.0, 1e-30) << "case " << c.number << " " << kQuantity[q];
       } else {
         EXPECT_NEAR(got[q], want, printed_tolerance(want)) << "case " << c.number << " " << kQuantity[q];

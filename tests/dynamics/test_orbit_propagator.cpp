@@ -26,7 +26,8 @@ using core::GpsTime;
 
 const GpsTime kEpoch = GpsTime::parse("2024-10-01T00:00:00", core::TimeScale::kUtc).value();
 
-// The mission chief (issue 3: a = R_E + 500 km, e = 0.004, i = 97.8 deg, RAAN 157.5 deg).
+// The mission chief (Guffanti et al., AAS 23-149, 2023, Table 5: a = R_E + 500 km, e = 0.004,
+// i = 97.8 deg, RAAN 157.5 deg; argument of perigee 90 deg and M = 0 are this test's choice).
 astro::KeplerianElements mission_chief() {
   return {6378136.3 + 500e3, 0.004, 97.8 * core::kDegToRad, 157.5 * core::kDegToRad, 90.0 * core::kDegToRad, 0.0};
 }
@@ -59,8 +60,8 @@ PropagatorSettings rk4_settings(double step, IntegratorKind kind = IntegratorKin
 
 double energy(const core::StateVector& x, double gm) { return 0.5 * x.v.squaredNorm() - gm / x.r.norm(); }
 
-// Issue 3 acceptance: two-body energy and angular momentum conserved to 1e-10 (relative) over
-// 10 days with the reference integrator.
+// Propagator acceptance (docs/algorithms/dynamics.md#propagator-acceptance): two-body energy and
+// angular momentum conserved to 1e-10 (relative) over 10 days with the reference integrator.
 TEST(OrbitPropagator, TwoBodyConservesEnergyAndAngularMomentumOverTenDays) {
   ForceModel forces = make_forces(ForceModelConfig::gravity_only(0, 0));
   OrbitPropagator propagator = make_propagator(forces, reference_settings());
@@ -72,7 +73,7 @@ TEST(OrbitPropagator, TwoBodyConservesEnergyAndAngularMomentumOverTenDays) {
   const double energy_drift = std::abs(energy(x1.value(), forces.gm()) / e0 - 1.0);
   const double momentum_drift = (x1.value().r.cross(x1.value().v) - h0).norm() / h0.norm();
   std::printf("10-day two-body drift: energy %.2e, angular momentum %.2e\n", energy_drift, momentum_drift);
-  // issue 3 acceptance (1e-10, above); loose vs measurement: 4.3e-14 / 2.1e-14 (2026-11), ~2000x below the bound
+  // the acceptance bound (1e-10, above); loose vs measurement: 4.3e-14 / 2.1e-14 (2026-11), ~2000x below the bound
   EXPECT_LT(energy_drift, 1e-10);
   EXPECT_LT(momentum_drift, 1e-10);
 }
@@ -90,7 +91,7 @@ TEST(OrbitPropagator, TwoBodyMatchesKeplerOverOneDay) {
   EXPECT_LT((x1.value().r - expected.r).norm(), 1e-3);  // [m]
 }
 
-// Issue 3 acceptance: J2-only secular rates of RAAN and argument of latitude match first-order
+// Propagator acceptance: J2-only secular rates of RAAN and argument of latitude match first-order
 // theory (Brouwer/Kozai; astro::j2_secular_rates). Numerical osculating states -> mean elements
 // (astro::mean_from_osculating) at both ends of one day; the field's own C20 gives J2 = -sqrt(5) C20.
 // The elements are taken in an inertial frame whose z axis is the Earth's (the CIP, 0.14 deg from
@@ -160,7 +161,7 @@ TEST(OrbitPropagator, J2OnlySecularRatesMatchFirstOrderTheory) {
   EXPECT_NEAR(u_j2_rate, u_j2_theory, 2e-3 * std::abs(u_j2_theory));
 }
 
-// Issue 3 acceptance: RK4 at the truth's step against the reference integrator over one day,
+// Propagator acceptance: RK4 at the truth's step against the reference integrator over one day,
 // with every truth force (GGM05S 60x60, NRLMSISE-00 drag, SRP with penumbra, Sun, Moon). The
 // activity is the observed one in NRLMSISE-00's daily-Ap mode, constant over the day: with the
 // 3-hourly ap history (the truth's default) the drag jumps every 3 hours by up to tens of percent,
@@ -183,7 +184,7 @@ TEST(OrbitPropagator, Rk4AtTheTruthStepMatchesTheReferenceOverOneDay) {
               1e3 * error, static_cast<long long>(rk4.stats().steps),
               static_cast<long long>(reference.stats().steps));
   // measured 1.9e-3 m with NRLMSISE-00 (2.6e-3 m with the Harris-Priester maximum), 2026-11
-  EXPECT_LT(error, 0.01);  // [m], issue 3
+  EXPECT_LT(error, 0.01);  // [m], the acceptance bound (docs/algorithms/dynamics.md#propagator-acceptance)
 }
 
 // A maneuver at t equals stopping at t, adding dv (RTN of the pre-burn state) and restarting.

@@ -12,7 +12,8 @@ namespace {
 
 constexpr double kEarthRadius = 6378136.3;  // [m]
 
-// brahe solar_radiation_pressure.rs test_accel_solar_radiation_pressure (digest sec. 3.3):
+// brahe solar_radiation_pressure.rs test_accel_solar_radiation_pressure (M&G eq. 3.75 in closed
+// form; docs/algorithms/dynamics.md#solar-radiation-pressure):
 // satellite at 1 AU on +x, Sun at the origin, A/m = 1, Cr = 1, P = 4.5e-6 -> (+4.5e-6, 0, 0).
 TEST(SolarRadiationPressure, OneAstronomicalUnitReferenceCase) {
   const Eigen::Vector3d a = srp_acceleration({kAstronomicalUnit, 0, 0}, Eigen::Vector3d::Zero(), 1.0,

@@ -1,5 +1,5 @@
 // CelesTrak space-weather CSV: NRLMSISE-00 convention at the mission epoch and the October 2024
-// storm (SOURCES.md sec. 2), range and format errors.
+// storm (the file's rows; docs/algorithms/dynamics.md#space-weather), range and format errors.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -38,13 +38,13 @@ class SpaceWeatherFile : public ::testing::Test {
 };
 
 TEST_F(SpaceWeatherFile, CoversThe215Days) {
-  EXPECT_EQ(table_->size(), 215u);        // SOURCES.md sec. 2: 215 days
+  EXPECT_EQ(table_->size(), 215u);        // data/SOURCES.md: 215 days
   EXPECT_EQ(table_->first_mjd(), 60492);  // 2024-07-01
   EXPECT_EQ(table_->last_mjd(), 60706);   // 2025-01-31
 }
 
 TEST_F(SpaceWeatherFile, MissionEpochCentredMeanAndAp) {
-  // SOURCES.md sec. 2: 2024-10-01 centred-81 F10.7 215.3, Ap 5.
+  // File row 2024-10-01: F10.7_OBS_CENTER81 215.3, AP_AVG 5.
   const auto a = table_->at(utc("2024-10-01T12:00:00"));
   ASSERT_TRUE(a.ok()) << a.error().describe();
   EXPECT_EQ(a->f107a, 215.3);
@@ -52,7 +52,7 @@ TEST_F(SpaceWeatherFile, MissionEpochCentredMeanAndAp) {
 }
 
 TEST_F(SpaceWeatherFile, F107IsThePreviousDaysObservedValue) {
-  // SOURCES.md sec. 2: F10.7_obs 244.6 on 2024-10-01, so f107 = 244.6 during 2024-10-02 UTC.
+  // File row 2024-10-01: F10.7_OBS 244.6, so f107 = 244.6 during 2024-10-02 UTC.
   EXPECT_EQ(table_->at(utc("2024-10-02T00:00:00"))->f107, 244.6);
   EXPECT_EQ(table_->at(utc("2024-10-02T23:59:59.999"))->f107, 244.6);
   // ... and on 2024-10-01 the 2024-09-30 value (file row 2024-09-30: F10.7_OBS 214.2).
@@ -60,7 +60,7 @@ TEST_F(SpaceWeatherFile, F107IsThePreviousDaysObservedValue) {
 }
 
 TEST_F(SpaceWeatherFile, StormDaysDailyAp) {
-  // SOURCES.md sec. 2: daily Ap 97 on 2024-10-10 and 116 on 2024-10-11.
+  // File rows: AP_AVG 97 on 2024-10-10 and 116 on 2024-10-11.
   EXPECT_EQ(table_->at(utc("2024-10-10T06:00:00"))->ap, 97.0);
   EXPECT_EQ(table_->at(utc("2024-10-11T18:00:00"))->ap, 116.0);
 }

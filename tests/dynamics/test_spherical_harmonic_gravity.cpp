@@ -1,4 +1,5 @@
-// Spherical-harmonic gravity against published vectors (Montenbruck & Gill / JGM-3, digest §2.4),
+// Spherical-harmonic gravity against published vectors (Montenbruck & Gill / JGM-3; worked examples
+// in docs/algorithms/dynamics.md#gravity-worked-examples),
 // an independent implementation (GeographicLib::SphericalHarmonic, Clenshaw summation) with the
 // same coefficients, closed forms and the gradient's own identities.
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ namespace {
 using visors::dynamics::GravityField;
 using visors::dynamics::SphericalHarmonicGravity;
 
-// Reads a shared-data gravity file; empty when absent (the caller skips).
+// Reads a gravity file of the data search path; empty when absent (the caller skips).
 std::optional<GravityField> load_field(const std::string& relative, int degree = -1) {
   const auto path = visors::core::files::find_data_file(relative);
   if (!path) return std::nullopt;
@@ -59,15 +60,16 @@ std::vector<Eigen::Vector3d> random_points(int count, double radius, std::uint64
   return points;
 }
 
-const Eigen::Vector3d kMgPosition(6525.919e3, 1710.416e3, 2508.886e3);  // digest §2.4-1, body-fixed [m]
+const Eigen::Vector3d kMgPosition(6525.919e3, 1710.416e3, 2508.886e3);  // M&G test point, body-fixed [m]
 
 struct ReferenceVector {
   int degree;
   Eigen::Vector3d a;  // [m/s^2]
 };
 
-// Montenbruck & Gill reference vectors with JGM-3, E = I (digest §2.4-1; M&G test program via
-// brahe test_accel_gravity_jgm3_validation). Tolerance 1e-7 m/s^2 as published to ~1e-8.
+// Montenbruck & Gill reference vectors with JGM-3, E = I (the values of M&G's accompanying
+// software as tabulated in brahe's gravity.rs test_accel_gravity_jgm3_validation). Tolerance
+// 1e-7 m/s^2 as published to ~1e-8.
 TEST(SphericalHarmonicGravity, Jgm3MontenbruckGillVectors) {
   REQUIRE_FIELD(field, "gravity/JGM3.gfc", 20);
   const ReferenceVector references[] = {
@@ -86,8 +88,9 @@ TEST(SphericalHarmonicGravity, Jgm3MontenbruckGillVectors) {
   EXPECT_LT(worst, 1e-7);
 }
 
-// Digest §2.4-2 (digest reference implementation, FD-potential confirmed): GGM05S 60x60.
-TEST(SphericalHarmonicGravity, Ggm05s60DigestVector) {
+// GGM05S 60x60 at the M&G point, an independent evaluation (central differences of the potential,
+// column-wise Legendre functions): docs/algorithms/dynamics.md#gravity-worked-examples.
+TEST(SphericalHarmonicGravity, Ggm05s60WorkedVector) {
   REQUIRE_FIELD(field, "gravity/GGM05S_d70.gfc", 60);
   SphericalHarmonicGravity g = make(*field, 60, 60);
   const Eigen::Vector3d ref(-6.9792607656, -1.8292848885, -2.6899854388);
@@ -95,8 +98,8 @@ TEST(SphericalHarmonicGravity, Ggm05s60DigestVector) {
   EXPECT_LT((g.acceleration(kMgPosition) - ref).cwiseAbs().maxCoeff(), 1e-7);
 }
 
-// Digest §2.4-2: GGM01S 20x20.
-TEST(SphericalHarmonicGravity, Ggm01s20DigestVector) {
+// GGM01S 20x20 at the M&G point, evaluated as above (docs/algorithms/dynamics.md#gravity-worked-examples).
+TEST(SphericalHarmonicGravity, Ggm01s20WorkedVector) {
   REQUIRE_FIELD(field, "gravity/GGM01S.gfc", 20);
   SphericalHarmonicGravity g = make(*field, 20, 20);
   const Eigen::Vector3d ref(-6.9792625603, -1.8292834269, -2.6899896973);
@@ -204,7 +207,7 @@ TEST(SphericalHarmonicGravity, GradientTraceVanishes) {
   EXPECT_LT(worst, 1e-12);
 }
 
-// Digest §2.4-4: only C̄00 = 1 and C̄20: textbook J2 acceleration with J2 = -sqrt(5) C̄20
+// Only C̄00 = 1 and C̄20: textbook J2 acceleration with J2 = -sqrt(5) C̄20
 // (e.g. Vallado, "Fundamentals of Astrodynamics", 4th ed., eq. 8-30).
 TEST(SphericalHarmonicGravity, J2OnlyMatchesClosedForm) {
   GravityField field = visors::dynamics::embedded_gravity_field();
@@ -228,7 +231,7 @@ TEST(SphericalHarmonicGravity, J2OnlyMatchesClosedForm) {
   EXPECT_LT(worst, 1e-14);
 }
 
-// Digest §2.4-5: the Cartesian V/W recursion has no pole singularity. At (0, 0, ±7000 km) the
+// The Cartesian V/W recursion has no pole singularity (Cunningham 1970). At (0, 0, ±7000 km) the
 // results are finite, and a 1 mm step off the axis changes the acceleration by the gradient times
 // the step (to round-off, 1e-14 m/s^2: a ~ 8 m/s^2 with 1e-16 relative rounding).
 TEST(SphericalHarmonicGravity, PolesFiniteAndContinuous) {

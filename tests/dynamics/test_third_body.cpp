@@ -10,7 +10,9 @@
 namespace visors::dynamics {
 namespace {
 
-const Eigen::Vector3d kMoon(-376313966.331919, 125552784.254334, 80458346.9703463);  // digest 3.4 [m]
+// The low-precision Moon (M&G sec. 3.3.2) at MJD_TT 60310.25, EME2000, as in brahe's ephemerides.rs
+// tests; any realistic lunar position serves here.
+const Eigen::Vector3d kMoon(-376313966.331919, 125552784.254334, 80458346.9703463);  // [m]
 const Eigen::Vector3d kSatellite(4.0e6, -3.0e6, 4.5e6);                               // |r| ~ 6.7e6 m
 
 // Disturbing potential R = GM (1/|s - r| - r.s/|s|^3) (Montenbruck & Gill 2000, sec. 3.2.1);

@@ -18,7 +18,8 @@ namespace visors::gnc::test {
 
 inline constexpr double kDeg = std::numbers::pi / 180.0;
 
-/// The mission chief (DSC) mean elements (mission paper test case; argp 90 deg, u0 = 0).
+/// The mission chief (DSC) mean elements (Guffanti et al., AAS 23-149, 2023, Table 5, u0 = 0;
+/// argp 90 deg is this project's choice: docs/requirements.md#mission-timeline-and-orbits).
 inline astro::KeplerianElements mission_chief() {
   return {6378136.3 + 500e3, 0.004, 97.8 * kDeg, 157.5 * kDeg, 90.0 * kDeg, -90.0 * kDeg};
 }

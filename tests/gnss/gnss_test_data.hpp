@@ -35,7 +35,8 @@ inline constexpr const char* kGsi0759Obs = "gsi-2005-04-02/07590920.05o";
 inline constexpr const char* kGsi3040Obs = "gsi-2005-04-02/30400920.05o";
 inline constexpr const char* kGsi0759Nav = "gsi-2005-04-02/07590920.05n";
 inline constexpr const char* kGsi3040Nav = "gsi-2005-04-02/30400920.05n";
-/// Station 3040's position given with the data (issue 14; the RINEX header's is ~2 m off) [m].
+/// Station 3040's position as RTKLIB's own rnx2rtkp tests give it for this data (option -r,
+/// tomojitakasu/RTKLIB app/rnx2rtkp/gcc/makefile; the RINEX header's is ~2 m off) [m].
 inline constexpr double kGsi3040Ecef[3] = {-3978241.958, 3382840.234, 3649900.853};
 
 /// The whole text of a file.

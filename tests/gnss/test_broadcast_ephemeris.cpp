@@ -33,8 +33,10 @@ class BroadcastEphemerisTest : public ::testing::Test {
   static inline files::NavigationFile* nav_ = nullptr;
 };
 
-// Reference: navigation-and-dynamics.md 4.1, RTKLIB 2.4.2p13 eph2pos on the G01 record with
-// t_oe = 2010-07-01 12:00:00 GPST (TOW 388800, IODE 65) evaluated at t_oe.
+// Reference: RTKLIB 2.4.2p13 eph2pos (tomojitakasu/RTKLIB, src/ephemeris.c) on the G01 record with
+// t_oe = 2010-07-01 12:00:00 GPST (TOW 388800, IODE 65) evaluated at t_oe; an independent
+// evaluation of IS-GPS-200 Table 20-IV gives the same to the printed millimetre (worked example
+// in docs/algorithms/gnss-measurements.md#worked-example-g01-on-2010-07-01).
 TEST_F(BroadcastEphemerisTest, G01PositionMatchesRtklib) {
   const auto& eph = record(1, "2010-07-01T12:00:00");
   EXPECT_EQ(eph.iode, 65);
@@ -51,7 +53,7 @@ TEST_F(BroadcastEphemerisTest, G01ClockMatchesRtklib) {
   EXPECT_NEAR(l1_clock_bias_s(eph, s), -1.364453417261e-4, 1e-15);  // minus T_GD = -1.9092e-8 s
 }
 
-// Reference: the same digest table (RTKLIB eph2pos at 2010-07-01 12:00:00 GPST) for G05 (its
+// Reference: RTKLIB 2.4.2p13 eph2pos at 2010-07-01 12:00:00 GPST, as above, for G05 (its
 // record nearest 12:00 has t_oc 11:59:12, line 1705) and G12.
 TEST_F(BroadcastEphemerisTest, G05AndG12MatchRtklib) {
   const auto set = EphemerisSet::screen(nav_->records, nav_->record_lines);

@@ -1,8 +1,8 @@
-// The issue's acceptance: broadcast ephemerides against the IGS final orbits of the same day, over
-// all healthy satellites and all SP3 epochs (15 min). Broadcast orbits refer to the antenna phase
-// centre as the control segment defines it, SP3 to the centre of mass: the comparison is made
-// without any correction, so the offset (mostly along the nadir, 0 to 1.6 m depending on the
-// satellite block) is part of the error, the conservative choice. The per-satellite mean radial
+// Acceptance of the broadcast orbits: broadcast ephemerides against the IGS final orbits of the
+// same day, over all healthy satellites and all SP3 epochs (15 min). Broadcast orbits refer to the
+// antenna phase centre as the control segment defines it, SP3 to the centre of mass: the comparison
+// is made without any correction, so the offset (mostly along the nadir, 0 to 1.6 m depending on
+// the satellite block) is part of the error, the conservative choice. The per-satellite mean radial
 // difference is reported as the estimate of that offset, and the RMS after removing it.
 #include <cmath>
 #include <cstdio>
@@ -86,8 +86,8 @@ TEST(BroadcastVsPrecise, IgsDay20100701) {
   const Comparison c = compare(test::kBrdc20100701, test::kSp320100701);
   EXPECT_EQ(c.satellites, 30);
   EXPECT_EQ(c.samples, 2880);
-  EXPECT_LT(c.rms_3d_m, 2.5);               // issue: 3D RMS below 2.5 m
-  EXPECT_LT(c.worst_satellite_rms_m, 4.0);  // issue: every satellite below 4 m RMS
+  EXPECT_LT(c.rms_3d_m, 2.5);               // acceptance bound: 3D RMS below 2.5 m
+  EXPECT_LT(c.worst_satellite_rms_m, 4.0);  // acceptance bound: every satellite below 4 m RMS
   // removing the mean radial offset can only lower the RMS (identity above); measured 1.585 m < 1.866 m (2026-11)
   EXPECT_LT(c.rms_without_radial_offset_m, c.rms_3d_m);
 }

@@ -1,7 +1,8 @@
 #pragma once
 // RTKLIB's published LAMBDA unit-test cases, test/utest/t_lambda.c (tomojitakasu/RTKLIB;
-// navigation digest sec. 6.7): the float ambiguities and covariances of utest1 (n = 6) and utest2
-// (n = 10). Their expected integers and squared norms are written beside the assertions that use them.
+// docs/algorithms/ambiguity-resolution.md#rtklib-utest1-and-utest2): the float ambiguities and
+// covariances of utest1 (n = 6) and utest2 (n = 10). Their expected integers and squared norms are
+// written beside the assertions that use them.
 
 #include <Eigen/Core>
 

@@ -1,4 +1,4 @@
-// Fix statistics that mean something (issue 14): on simulated float solutions with known integers,
+// Fix statistics that mean something: on simulated float solutions with known integers,
 // each acceptance rule's empirical wrong-fix rate stays at or below the failure rate it promises
 // (within binomial error), with the fix rate reported next to it (RecordProperty, in the XML of
 // `ctest --output-junit` and printed).

@@ -1,10 +1,11 @@
-// Ambiguity slots (navigation digest sec. 5.4, 5.7-4): the bank's rules one at a time, then the
-// fixed-size filter (AmbiguitySlotBank x 2 + scalar_update, 98 states, the multipath bank M parked) against a reference filter
-// that physically resizes its matrices (std::vector + Eigen::MatrixXd holding the 26 core states
-// plus one state per tracked satellite; rows and columns inserted when a satellite rises, deleted
-// when it sets; dense textbook batch update), driven by the same scripted and random sequences.
-// After every step: the fixed filter's active subset equals the reference through the PRN maps,
-// the rest of its layout is parked (checked here and by consistent()), the counts agree.
+// Ambiguity slots (docs/algorithms/cdgps-filter.md#ambiguity-slots): the bank's rules one at a
+// time, then the fixed-size filter (AmbiguitySlotBank x 2 + scalar_update, 98 states, the multipath
+// bank M parked) against a reference filter that physically resizes its matrices (std::vector +
+// Eigen::MatrixXd holding the 26 core states plus one state per tracked satellite; rows and columns
+// inserted when a satellite rises, deleted when it sets; dense textbook batch update), driven by
+// the same scripted and random sequences. After every step: the fixed filter's active subset equals
+// the reference through the PRN maps, the rest of its layout is parked (checked here and by
+// consistent()), the counts agree.
 #include "visors/nav/ambiguity_slots.hpp"
 
 #include <gtest/gtest.h>
@@ -188,8 +189,8 @@ TEST(AmbiguitySlotBank, InvalidPriorIsRefused) {
   }
 }
 
-// Digest 5.4 on RTKLIB's filter(): a state of exactly 0.0 is not inactive. Even a prior that
-// looks exactly like a parked slot (x = 0, variance kParkedVariance) is an active satellite.
+// Unlike in RTKLIB's filter() (src/rtkcmn.c), a state of exactly 0.0 is not inactive. Even a prior
+// that looks exactly like a parked slot (x = 0, variance kParkedVariance) is an active satellite.
 TEST(AmbiguitySlotBank, ZeroValueDoesNotMakeASlotInactive) {
   Parked p;
   const int slot = p.bank.acquire(9, 0.0, AmbiguitySlotBank::kParkedVariance, p.f.x, p.f.P);
@@ -297,10 +298,10 @@ TEST(AmbiguitySlotBank, ConsistentSeesAWrongParkedDiagonal) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Against a filter that physically resizes its matrices (digest 5.7-4).
+// Against a filter that physically resizes its matrices: the active subset of P must equal its P.
 
 enum Bank { kGraphic = 0, kSdcp = 1 };
-constexpr double kSdcpPartial = 0.19029367;  // L1 wavelength [m]: dh/dN_SD = lambda (digest 5.3)
+constexpr double kSdcpPartial = 0.19029367;  // L1 wavelength [m]: dh/dN_SD = lambda (SDCP row)
 
 struct Key {
   int bank = 0;
@@ -641,8 +642,8 @@ Scalar random_scalar(Twin& t, const std::vector<Key>& keys) {
   return s;
 }
 
-constexpr double kGate = 5.0;  // sigmas (digest 5.3)
-// Allowed difference between the two filters (the brief's 1e-10; digest 5.7-4 asks "equals"),
+constexpr double kGate = 5.0;  // sigmas (the filter's default gate_sigmas)
+// Allowed difference between the two filters (1e-10, this comparison's bound: they should be equal),
 // norm-wise and entry by entry (see Findings).
 constexpr double kTolerance = 1e-10;
 
@@ -772,7 +773,7 @@ Twin random_run(std::uint64_t seed, int epochs, Ranges ranges) {
   return t;
 }
 
-// Digest 5.7-4 with the brief's 1e-10. Ranges: priors up to (10 m)^2 (the digest's GRAPHIC prior),
+// The comparison with its 1e-10 bound. Ranges: priors up to (10 m)^2 (the filter's GRAPHIC prior),
 // measurement variances (3 cm)^2..(0.3 m)^2: a measurement cancels at most ~1e5 of a prior.
 TEST(AmbiguitySlotsAgainstResizingFilter, HundredThousandRandomEpochs) {
   constexpr int kEpochs = 100000;
@@ -802,13 +803,14 @@ TEST(AmbiguitySlotsAgainstResizingFilter, HundredThousandRandomEpochs) {
   RecordProperty("epochs_empty", std::to_string(f.epochs_empty));
 }
 
-// The flight's dynamic range: SDCP priors up to (100 cycles)^2 (digest 5.4) measured with
+// The flight's dynamic range: SDCP priors up to (100 cycles)^2 (the filter's default) measured with
 // r = (3 mm)^2 ~ 1e-5 m^2. A precise measurement then cancels P_prior down to ~r: any two
-// implementations of the update (here Joseph scalars and the batch short form) differ by
-// ~eps P_prior / P_posterior, up to 2.2e-16 x 1e9 ~ 2e-7 of the posterior, and that difference
-// stays in the ambiguity's later variances (no process noise to forget it): the covariance form's
-// known weakness (digest 5.1, 5.5), not the slots'. The bound is that estimate, 1e-6; a slot
-// error (a stale or missing cross-covariance) shows at 1e-3..1 entry by entry.
+// implementations of the update (here Joseph scalars and the batch short form) differ by ~eps
+// P_prior / P_posterior, up to 2.2e-16 x 1e9 ~ 2e-7 of the posterior, and that difference stays in
+// the ambiguity's later variances (no process noise to forget it): the covariance form's known
+// weakness (docs/algorithms/cdgps-filter.md#units-and-scaling), not the slots'. The bound is that
+// estimate, 1e-6; a slot error (a stale or missing cross-covariance) shows at 1e-3..1 entry by
+// entry.
 TEST(AmbiguitySlotsAgainstResizingFilter, FlightDynamicRangeAgreesToTheRoundOffOfTheCancellation) {
   const Twin t = random_run(31, 20000, Ranges{1e4, 1e-5, 1e-1});
   const Findings& f = t.findings();

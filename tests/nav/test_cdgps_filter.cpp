@@ -296,8 +296,9 @@ class CdgpsFilterRun : public ::testing::Test {
 };
 RunOutcome* CdgpsFilterRun::result = nullptr;
 
-// Mission requirement: relative position better than 1 cm (paper sec. 4.2); with integers fixed
-// and 2 mm phase the DD geometry gives a few millimetres.
+// Mission requirement: relative position better than 1 cm (Guffanti et al., AAS 23-149, 2023,
+// Table 3: 1 cm 3D 1-sigma with IAR on); with integers fixed and 2 mm phase the DD geometry gives
+// a few millimetres.
 TEST_F(CdgpsFilterRun, RelativePositionIsMillimetric) { EXPECT_LT(result->relative_error_m, 0.005); }
 
 TEST_F(CdgpsFilterRun, FixesTheIntegersWithinAMinute) {
@@ -440,7 +441,7 @@ TEST(CdgpsFilterSlip, UnflaggedSlipIsDetectedAndRecovered) {
 // Started 850 m from the truth (each spacecraft; 1.7 km and 0.11 m/s apart): every ambiguity
 // starts at its code value, so the first epoch brings the codes' metres and the float solution
 // converges (measured: first fix at 10 s, 0.7 mm after 5 min). Started at the residual of the
-// predicted measurement instead (the digest's 5.4), each ambiguity took the state's error with
+// predicted measurement instead (the textbook start), each ambiguity took the state's error with
 // an uncorrelated prior of 19 m: the filter believed it and never fixed (3.5 km off after 5 min;
 // in replays, 4 in 20 never refixed after a 30-minute coast).
 TEST(CdgpsFilterRecovery, StartedAKilometreOffItConverges) {
@@ -816,8 +817,9 @@ TEST(CdgpsFilterManeuver, UnknownImpulseIsNotAbsorbed) {
   EXPECT_GT(r.detected_slips, 0);
 }
 
-// Issue 15: with the DD phase degraded so that no fix is possible (5 cm phase noise, resolution
-// off), laser ranges every 2 s (3 mm) cut the line-of-sight component of the relative error.
+// The rangefinder without a fix: with the DD phase degraded so that no fix is possible (5 cm phase
+// noise, resolution off), laser ranges every 2 s (3 mm) cut the line-of-sight component of the
+// relative error.
 TEST(CdgpsFilterLaser, CutsTheLineOfSightErrorWithoutAFix) {
   const RunOutcome without = simulate(400, -1, {}, {true, 0.0});
   const RunOutcome with = simulate(400, -1, {}, {true, 0.003});

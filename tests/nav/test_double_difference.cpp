@@ -1,5 +1,6 @@
-// Single- to double-difference ambiguities (navigation digest sec. 6.1) against dense products
-// G P G' built independently here, and the textbook DD cofactor of independent SDs.
+// Single- to double-difference ambiguities
+// (docs/algorithms/ambiguity-resolution.md#single-to-double-differences) against dense products G P
+// G' built independently here, and the textbook DD cofactor of independent SDs.
 #include "visors/nav/double_difference.hpp"
 
 #include <gtest/gtest.h>
@@ -30,7 +31,7 @@ Eigen::VectorXd random_vector(Index n, std::mt19937_64& rng) {
   return x;
 }
 
-// The digest's D_m written out row by row: +1 at the satellite, -1 at the reference.
+// The differencing matrix D_m written out row by row: +1 at the satellite, -1 at the reference.
 Eigen::MatrixXd dense_g(Index n_states, const std::vector<std::array<Index, 2>>& rows) {
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(static_cast<Index>(rows.size()), n_states);
   for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -74,9 +75,9 @@ TEST(DoubleDifference, TwoGroupsRowsAndReferences) {
   }
 }
 
-TEST(DoubleDifference, DenseGIsTheDigestDm) {
+TEST(DoubleDifference, DenseGIsTheDoubleDifferenceMatrix) {
   const auto dd = two_groups();
-  EXPECT_EQ(dd.G(), dense_g(TwoGroups::kStates, TwoGroups{}.rows));  // digest 6.1 step 2
+  EXPECT_EQ(dd.G(), dense_g(TwoGroups::kStates, TwoGroups{}.rows));  // D_m row by row
 }
 
 TEST(DoubleDifference, AmbiguitiesEqualDenseGx) {
@@ -84,7 +85,7 @@ TEST(DoubleDifference, AmbiguitiesEqualDenseGx) {
   std::mt19937_64 rng(11);
   const Eigen::VectorXd x = random_vector(TwoGroups::kStates, rng);
   ASSERT_TRUE(dd.evaluate(x, random_spd(TwoGroups::kStates, rng)));
-  const Eigen::VectorXd expected = dense_g(TwoGroups::kStates, TwoGroups{}.rows) * x;  // digest 6.1 step 3
+  const Eigen::VectorXd expected = dense_g(TwoGroups::kStates, TwoGroups{}.rows) * x;  // a = D_m x
   EXPECT_LT((dd.a() - expected).cwiseAbs().maxCoeff(), 1e-12);
 }
 
@@ -94,7 +95,7 @@ TEST(DoubleDifference, CovarianceEqualsDenseGPGt) {
   const Eigen::MatrixXd P = random_spd(TwoGroups::kStates, rng);
   ASSERT_TRUE(dd.evaluate(random_vector(TwoGroups::kStates, rng), P));
   const Eigen::MatrixXd G = dense_g(TwoGroups::kStates, TwoGroups{}.rows);
-  const Eigen::MatrixXd expected = G * P * G.transpose();  // digest 6.1 step 3, Q = D_m P D_m'
+  const Eigen::MatrixXd expected = G * P * G.transpose();  // Q = D_m P D_m'
   EXPECT_LT((dd.Q() - expected).cwiseAbs().maxCoeff(), 1e-12 * P.cwiseAbs().maxCoeff());
 }
 
@@ -111,11 +112,12 @@ TEST(DoubleDifference, CovarianceIsExactlySymmetric) {
   auto dd = two_groups();
   std::mt19937_64 rng(14);
   ASSERT_TRUE(dd.evaluate(random_vector(TwoGroups::kStates, rng), random_spd(TwoGroups::kStates, rng)));
-  EXPECT_EQ(dd.Q(), dd.Q().transpose());  // digest 6.1 "symmetrise Q"
+  EXPECT_EQ(dd.Q(), dd.Q().transpose());  // Q exactly symmetric
 }
 
-// Independent SDs of variance s^2 give DD covariance s^2 (I + 1 1') per reference (digest 6.1; the
-// DD cofactor 2 (I + 1 1') of tests/support/dd_geometry.hpp is this with s^2 = 2 sigma^2).
+// Independent SDs of variance s^2 give DD covariance s^2 (I + 1 1') per reference
+// (docs/algorithms/gnss-measurements.md#double-differences; the DD cofactor 2 (I + 1 1') of
+// tests/support/dd_geometry.hpp is this with s^2 = 2 sigma^2).
 TEST(DoubleDifference, IndependentSdsGiveTheDdCofactor) {
   const double s2 = 0.04;  // SD ambiguity variance [cycles^2]
   auto dd = DoubleDifferenceAmbiguities::create(9).value();

@@ -1,7 +1,8 @@
-// Fixed-solution and hold updates (navigation digest sec. 6.5) against independent batch
-// solutions: the equality-constrained least squares (KKT system, dense LU) for the exact
-// conditioning, and the information form of the Kalman update for the hold; the fixed constraints
-// of an integer solution; and an end-to-end SD filter state -> DD -> ILS -> fixed baseline.
+// Fixed-solution and hold updates (docs/algorithms/ambiguity-resolution.md#fixed-solution-update)
+// against independent batch solutions: the equality-constrained least squares (KKT system, dense
+// LU) for the exact conditioning, and the information form of the Kalman update for the hold; the
+// fixed constraints of an integer solution; and an end-to-end SD filter state -> DD -> ILS -> fixed
+// baseline.
 #include "visors/nav/fixed_solution.hpp"
 
 #include <gtest/gtest.h>
@@ -118,7 +119,7 @@ TEST(FixedSolution, ExactUpdateCovarianceEqualsConstrainedLeastSquares) {
 
 TEST(FixedSolution, ExactUpdateSatisfiesTheConstraints) {
   const Problem p = random_problem(10, 4, 4);
-  EXPECT_LT(max_abs(p.C * updated(p, 0.0).x - p.z), 1e-9);  // C x+ = z (brief; digest 6.8-5)
+  EXPECT_LT(max_abs(p.C * updated(p, 0.0).x - p.z), 1e-9);  // C x+ = z: conditioned on it
 }
 
 TEST(FixedSolution, ExactUpdateLeavesNoVarianceAlongTheConstraints) {
@@ -159,7 +160,7 @@ TEST(FixedSolution, AllZeroConstraintIsNotPositiveDefinite) {
 
 TEST(FixedSolution, HoldUpdateMeanEqualsInformationForm) {
   const Problem p = random_problem(10, 4, 6);
-  const double s = 1e-3;  // RTKLIB VAR_HOLDAMB [cycles^2], digest 6.5 option B
+  const double s = 1e-3;  // RTKLIB VAR_HOLDAMB [cycles^2] (src/rtkpos.c, holdamb)
   const Gaussian expected = information_update(p.prior, p.C, p.z, s);
   EXPECT_LT(max_abs(updated(p, s).x - expected.x), 1e-9 * (1.0 + max_abs(expected.x)));
 }
@@ -245,7 +246,7 @@ TEST(FixedSolution, ExactCovarianceStaysPositiveSemidefinite) {
 TEST(FixedSolution, HoldCovarianceStaysPositiveDefinite) {
   const Problem p = random_problem(12, 5, 10);
   const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(updated(p, 1e-3).P).eigenvalues();
-  EXPECT_GT(eigenvalues.minCoeff(), 0.0);  // s > 0 keeps P positive definite (digest 6.5)
+  EXPECT_GT(eigenvalues.minCoeff(), 0.0);  // s > 0 keeps P positive definite
 }
 
 // The status tests check x and P bit for bit (NaN included): a refused update must not touch them.

@@ -1,5 +1,5 @@
 // Transition and process noise of the Gauss-Markov empirical-acceleration chain
-// (nav/gauss_markov.hpp; navigation digest sec. 5.2) against:
+// (nav/gauss_markov.hpp; docs/algorithms/cdgps-filter.md#empirical-accelerations) against:
 // - Van Loan's method (IEEE TAC 23(3), 1978) computed here with Eigen's independent matrix
 //   exponential (unsupported/Eigen/MatrixFunctions, Pade approximant with scaling and squaring);
 // - the same method in 200-digit decimal arithmetic (tests/nav/gauss_markov_reference.py, its
@@ -7,7 +7,8 @@
 //   the blocks of the 6x6 exponential span e^(+-dt/tau) and Q = Phi E12 cancels them (measured:
 //   Q within 4.4e-15 of the exact values for dt/tau <= 2, 2.9e-13 at 5, 6.4e-11 at 10, useless at
 //   100); it stays accurate for tiny dt/tau (2.4e-15 at 1e-8, dt = 10 s);
-// - the digest's published reference (sec. 5.7, tau = 600 s, sigma = 5e-8 m/s^2, dt = 10 s);
+// - the closed forms evaluated in 40-digit arithmetic at tau = 600 s, sigma = 5e-8 m/s^2, dt = 10 s
+//   (docs/algorithms/cdgps-filter.md#worked-example-gauss-markov-noise);
 // - the integrated random walk (tau -> infinity: the white-noise jerk model, q dt^5 / 20 ... q dt,
 //   Bar-Shalom, Li & Kirubarajan 2001) and the stationary variance sigma^2 (tau -> 0);
 // - the semigroup property of the exact discretisation (two steps of dt = one step of 2 dt).
@@ -30,7 +31,7 @@
 namespace visors::nav {
 namespace {
 
-constexpr double kSigma = 5e-8;  // [m/s^2], typical LEO value (digest sec. 5.2)
+constexpr double kSigma = 5e-8;  // [m/s^2], a LEO reduced-dynamic value (the filter's default: 1e-7)
 constexpr double kDt = 10.0;     // [s]
 
 /// Largest |a_ij - b_ij| / |b_ij| (equal elements, zeros included, count as 0; NaN as infinite).
@@ -141,19 +142,20 @@ TEST(GaussMarkov, TransitionMatchesExactArithmeticVanLoan) {
   }
 }
 
-// Digest sec. 5.7, test 1 (values printed to 8 significant digits): each must round to them, i.e.
-// lie within half a unit of the 8th digit.
-class GaussMarkovDigest : public ::testing::Test {
+// The worked example of docs/algorithms/cdgps-filter.md#worked-example-gauss-markov-noise (values
+// printed to 8 significant digits): each must round to them, i.e. lie within half a unit of the
+// 8th digit.
+class GaussMarkovWorkedExample : public ::testing::Test {
  protected:
   const Eigen::Matrix3d q_ = gauss_markov_chain(10.0, 600.0, 5e-8).noise;
 };
 
-TEST_F(GaussMarkovDigest, Qrr) { EXPECT_NEAR(q_(0, 0), 4.12831500e-14, 0.5e-8 * 1e-14); }
-TEST_F(GaussMarkovDigest, Qrv) { EXPECT_NEAR(q_(0, 1), 1.03017254e-14, 0.5e-8 * 1e-14); }
-TEST_F(GaussMarkovDigest, Qra) { EXPECT_NEAR(q_(0, 2), 1.36595155e-15, 0.5e-8 * 1e-15); }
-TEST_F(GaussMarkovDigest, Qvv) { EXPECT_NEAR(q_(1, 1), 2.74332402e-15, 0.5e-8 * 1e-15); }
-TEST_F(GaussMarkovDigest, Qva) { EXPECT_NEAR(q_(1, 2), 4.09789258e-16, 0.5e-8 * 1e-16); }
-TEST_F(GaussMarkovDigest, Qaa) { EXPECT_NEAR(q_(2, 2), 8.19597488e-17, 0.5e-8 * 1e-17); }
+TEST_F(GaussMarkovWorkedExample, Qrr) { EXPECT_NEAR(q_(0, 0), 4.12831500e-14, 0.5e-8 * 1e-14); }
+TEST_F(GaussMarkovWorkedExample, Qrv) { EXPECT_NEAR(q_(0, 1), 1.03017254e-14, 0.5e-8 * 1e-14); }
+TEST_F(GaussMarkovWorkedExample, Qra) { EXPECT_NEAR(q_(0, 2), 1.36595155e-15, 0.5e-8 * 1e-15); }
+TEST_F(GaussMarkovWorkedExample, Qvv) { EXPECT_NEAR(q_(1, 1), 2.74332402e-15, 0.5e-8 * 1e-15); }
+TEST_F(GaussMarkovWorkedExample, Qva) { EXPECT_NEAR(q_(1, 2), 4.09789258e-16, 0.5e-8 * 1e-16); }
+TEST_F(GaussMarkovWorkedExample, Qaa) { EXPECT_NEAR(q_(2, 2), 8.19597488e-17, 0.5e-8 * 1e-17); }
 
 TEST(GaussMarkov, NoiseIsSymmetric) {
   for (int k = -8; k <= 2; ++k) {

@@ -1,7 +1,7 @@
 // GRAPHIC and SDCP rows of the filter (nav/gps_measurement_model.hpp) against central differences
 // of the whole prediction chain (state -> SI receiver estimate -> range model -> measurement) in
-// every one of the 98 scaled states (navigation digest sec. 5.7-2), and their values against the
-// observation equations of digest sec. 4.3 written out here.
+// every one of the 98 scaled states, and their values against the observation equations of
+// docs/algorithms/gnss-measurements.md written out here.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -106,14 +106,15 @@ TEST(GpsMeasurementModel, SdcpRowMatchesCentralDifferencesInEveryState) {
   expect_row_matches_central_differences(sdcp);
 }
 
-// Digest 4.3: G = rho + c dt_r - c dt^j + B.
+// GRAPHIC (docs/algorithms/gnss-measurements.md#graphic): G = rho + c dt_r - c dt^j + B.
 TEST(GpsMeasurementModel, GraphicValueIsTheObservationEquation) {
   const NavVector x = state_vector();
   const RangePrediction r = range(x, Craft::kOsc);
   EXPECT_NEAR(graphic(x).value_m, r.range_m + x(state::clock(Craft::kOsc)) - r.satellite_clock_m + x(kB), 1e-6);
 }
 
-// Digest 4.3: dPhi = rho_d - rho_c + c dt_d - c dt_c + lambda N (+ the satellite clock's change
+// SDCP (docs/algorithms/gnss-measurements.md#single-differences):
+// dPhi = rho_d - rho_c + c dt_d - c dt_c + lambda N (+ the satellite clock's change
 // between the two transmission instants, 0.3 ms apart here: 2.2e-11 x 3e-4 s x c = 2 um).
 TEST(GpsMeasurementModel, SdcpValueIsTheObservationEquation) {
   const NavVector x = state_vector();

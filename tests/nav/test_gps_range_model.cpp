@@ -1,5 +1,5 @@
 // The filter's range model (nav/gps_range_model.hpp) against independent computations: its
-// analytic partials against central differences of the model itself (navigation digest sec. 5.7-2),
+// analytic partials against central differences of the model itself,
 // its light time against the definition rho = c (t_r - t_tx), its Sagnac handling against a
 // computation done entirely in the inertial frame, and its reception instant against the clock.
 #include <gtest/gtest.h>
@@ -128,7 +128,8 @@ TEST(GpsRangeModel, ReceptionInstantIsTheTagMinusTheClock) {
 
 // Independent Sagnac check: the same range computed in the inertial frame only, with each
 // instant's own ITRF -> GCRF matrix (full rotation at t_tx, no R3 correction), by a separate
-// light-time iteration here. Agreement to 1 mm (digest 4.5: ECI iteration and rotated ECEF agree).
+// light-time iteration here. Agreement to 1 mm (the two are the same model written in two frames:
+// docs/algorithms/gnss-measurements.md#range-model).
 TEST(GpsRangeModel, SagnacAgreesWithAnInertialComputation) {
   Scene s = scene();
   const RangePrediction p = predict_range(epoch(), s.receiver, s.antenna, ephemeris(), s.frame);

@@ -14,7 +14,7 @@
 #include "visors/nav/bootstrap.hpp"
 #include "visors/nav/integer_least_squares.hpp"
 #include "visors/nav/lambda_reduction.hpp"
-#include "visors/nav/rtklib_lambda_cases.hpp"
+#include "nav/rtklib_lambda_cases.hpp"
 #include "support/random_orthogonal.hpp"
 
 namespace visors::nav {
@@ -152,9 +152,10 @@ TEST(IlsProperties, DecorrelationDoesNotLowerTheBootstrappedSuccessRate) {
   }
 }
 
-// Monte Carlo of the bootstrapped estimator (navigation digest sec. 6.8 item 4): Q = 0.25 x the
-// RTKLIB utest1 covariance, a = z + e with e ~ N(0, Q); success = the bootstrapped integers of the
-// decorrelated problem equal Z' z. 1e5 draws: the binomial sigma is ~1.2e-3 near P = 0.84.
+// Monte Carlo of the bootstrapped estimator
+// (docs/algorithms/ambiguity-resolution.md#scaled-utest1): Q = 0.25 x the RTKLIB utest1 covariance,
+// a = z + e with e ~ N(0, Q); success = the bootstrapped integers of the decorrelated problem equal
+// Z' z. 1e5 draws: the binomial sigma is ~1.2e-3 near P = 0.84.
 TEST(IlsProperties, BootstrappedSuccessRateMatchesMonteCarlo) {
   const Eigen::MatrixXd Q = 0.25 * rtklib::utest1_q();
   Decorrelation dc;
@@ -179,9 +180,10 @@ TEST(IlsProperties, BootstrappedSuccessRateMatchesMonteCarlo) {
   }
   const double p = static_cast<double>(successes) / draws;
   const double sigma = std::sqrt(formula * (1.0 - formula) / draws);
-  // Digest sec. 6.8: 0.8382 for its decorrelated basis; ours must match our own formula (4 sigma).
+  // 0.8382 for the classic LAMBDA reduction's basis (same worked example); ours must match our own
+  // formula (4 sigma).
   EXPECT_NEAR(p, formula, 4.0 * sigma);
-  EXPECT_NEAR(formula, 0.8382, 5e-3);  // digest value, basis-dependent in the 3rd decimal
+  EXPECT_NEAR(formula, 0.8382, 5e-3);  // classic reduction's value, basis-dependent in the 3rd decimal
 }
 
 }  // namespace

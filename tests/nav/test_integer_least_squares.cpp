@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "visors/nav/bootstrap.hpp"
-#include "visors/nav/rtklib_lambda_cases.hpp"
+#include "nav/rtklib_lambda_cases.hpp"
 
 namespace visors::nav {
 namespace {
@@ -64,8 +64,10 @@ TEST(IntegerLeastSquares, RtklibUtest2SecondCandidateIsExact) {
 TEST(IntegerLeastSquares, RtklibUtest2SquaredNorms) {
   auto ils = make_ils();
   ASSERT_EQ(ils.resolve(utest2_a(), utest2_q()), IlsStatus::kOk);
-  // t_lambda.c utest2 s = (1506.435789, 1612.811795), to 1e-4 there; Q is nearly singular and the
-  // digest's brute force gives 1506.435806 / 1612.811781 (2e-5 apart): 1e-4 covers both.
+  // t_lambda.c utest2 s = (1506.435789, 1612.811795), to 1e-4 there; Q is nearly singular
+  // (condition 5e6), and these candidates' exact norms for the printed a and Q are 1506.435815 /
+  // 1612.811766 (60-digit arithmetic; worked example in
+  // docs/algorithms/ambiguity-resolution.md#rtklib-utest1-and-utest2): 1e-4 covers both.
   EXPECT_NEAR(ils.solution().sqnorm(0), 1506.435789, 1e-4);
   EXPECT_NEAR(ils.solution().sqnorm(1), 1612.811795, 1e-4);
 }
@@ -73,9 +75,10 @@ TEST(IntegerLeastSquares, RtklibUtest2SquaredNorms) {
 TEST(IntegerLeastSquares, Utest1BootstrappedSuccessRateAfterDecorrelation) {
   auto ils = make_ils();
   ASSERT_EQ(ils.decorrelate(utest1_a(), utest1_q()), IlsStatus::kOk);
-  // Navigation digest sec. 6.7 (derived there, decorrelated): P_s,IB = 0.1743. The pivoted
+  // The classic LAMBDA reduction (RTKLIB's) gives P_s,IB = 0.1743 (worked example in
+  // docs/algorithms/ambiguity-resolution.md#bootstrapped-success-rate-of-utest1). The pivoted
   // reduction may reach a different (equally valid) basis; the bootstrapped rate of any reduced
-  // basis must be at least the undecorrelated order's 0.1712 (digest) and close to 0.1743.
+  // basis must be at least the undecorrelated order's 0.1712 (same example) and close to 0.1743.
   EXPECT_NEAR(ils.success_rate_bootstrap(), 0.1743, 2e-3);
 }
 

@@ -1,5 +1,5 @@
 // The laser-rangefinder model (nav/laser_range_model.hpp): its value against the geometry, its
-// row against central differences (digest sec. 7 tests).
+// row against central differences (docs/algorithms/cdgps-filter.md#laser-rangefinder).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>

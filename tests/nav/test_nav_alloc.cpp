@@ -1,12 +1,12 @@
-// The ambiguity resolution allocates nothing after creation (issue 14, CONTRIBUTING "Memory"):
-// this file counts every heap allocation of the test_nav executable
+// The ambiguity resolution allocates nothing after creation (CONTRIBUTING.md, flight-code rules,
+// "Memory"): this file counts every heap allocation of the test_nav executable
 // (support/allocation_counter.hpp, malloc level) around decorrelation, search, partial search and
 // acceptance, on 24-ambiguity dual-frequency problems and on the capacity-sized 64; and around the
-// SD -> DD transformation, the fixed constraints and the fixed-solution update of a filter of
-// 3 + 64 states with 62 DD ambiguities (32 satellites, L1 and L2); around the Gauss-Markov
-// chain (transition and process noise of the empirical accelerations); and around the 98-state
-// navigation filter's ambiguity slots (acquire, reinitialise, release, checks), its scalar
-// Joseph update (accepted, gated, refused) and its whole epoch (CdgpsFilter predict + update).
+// SD -> DD transformation, the fixed constraints and the fixed-solution update of a filter of 3 +
+// 64 states with 62 DD ambiguities (32 satellites, L1 and L2); around the Gauss-Markov chain
+// (transition and process noise of the empirical accelerations); and around the 98-state navigation
+// filter's ambiguity slots (acquire, reinitialise, release, checks), its scalar Joseph update
+// (accepted, gated, refused) and its whole epoch (CdgpsFilter predict + update).
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>

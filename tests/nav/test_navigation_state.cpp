@@ -1,5 +1,5 @@
-// The filter's state layout (navigation digest sec. 5.1: 13 + 13 + 24 + 24 = 74, plus the 24 SD
-// multipath states of nav/sd_multipath.hpp: 98) and its units.
+// The filter's state layout (Guffanti et al., AAS 23-149, 2023, sec. 4.2, eq. (1): 13 + 13 + 24 +
+// 24 = 74, plus the 24 SD multipath states of nav/sd_multipath.hpp: 98) and its units.
 #include <gtest/gtest.h>
 
 #include "visors/nav/navigation_state.hpp"
@@ -7,7 +7,7 @@
 namespace visors::nav {
 namespace {
 
-TEST(NavigationState, HasTheDigestsSeventyFourStatesPlusTheMultipathBank) { EXPECT_EQ(kNavStates, 74 + 24); }
+TEST(NavigationState, HasSeventyFourStatesPlusTheMultipathBank) { EXPECT_EQ(kNavStates, 74 + 24); }
 
 TEST(NavigationState, OscBlockFollowsTheDscBlock) { EXPECT_EQ(state::position(Craft::kOsc), 13); }
 

@@ -1,5 +1,6 @@
-// Sequential scalar Joseph update (navigation digest sec. 5.5, 5.7-3) against textbook dense
-// formulas evaluated independently on dynamic Eigen matrices: the Joseph form
+// Sequential scalar Joseph update (docs/algorithms/cdgps-filter.md#sequential-scalar-updates)
+// against textbook dense formulas evaluated independently on dynamic Eigen matrices: the Joseph
+// form
 // (I - K H) P (I - K H)' + K R K' formed with the explicit n x n I - K H, the short form
 // (I - K H) P, and the batch update K = P H' (H P H' + R)^-1; the gate; refused input.
 #include "visors/nav/scalar_update.hpp"
@@ -52,7 +53,7 @@ double relative_difference(const MatrixXd& a, const MatrixXd& reference) {
   return max_abs(a - reference) / max_abs(reference);
 }
 
-// Textbook Joseph form with the explicit I - K H (Bucy & Joseph; digest sec. 5.5).
+// Textbook Joseph form with the explicit I - K H (Bucy & Joseph 1968).
 MatrixXd dense_joseph(const MatrixXd& P, const RowVectorXd& h, const VectorXd& k, double r) {
   const MatrixXd A = MatrixXd::Identity(P.rows(), P.cols()) - k * h;
   return A * P * A.transpose() + k * r * k.transpose();
@@ -149,7 +150,7 @@ TEST(ScalarUpdate, JosephEqualsShortFormWithOptimalGain) {
   Filter f = prior;
   ScalarUpdateWorkspace ws;
   (void)scalar_update(f.x, f.P, h, 0.3, r, kWideGate, ws);
-  // Digest 5.7-3: "with the optimal K they agree to round-off".
+  // With the optimal K the Joseph and short forms agree to round-off.
   EXPECT_LT(relative_difference(f.P, dense_short_form(prior.P, h, optimal_gain(prior.P, h, r))), 1e-13);
 }
 
@@ -186,7 +187,7 @@ TEST(ScalarUpdate, ReportsInnovationVarianceAndNis) {
 // A precise measurement of a poorly known combination (r = 1e-4 h P h'; an SDCP of (2.8 mm)^2
 // against a metre-level prior is more extreme still). Gain 1 % high: the short form
 // P - 1.01 u u' / s has h P+ h' = c (1 - 1.01 c / (c + r)) < 0, indefinite; the Joseph form is
-// a congruence of P plus r k k', positive definite for any gain (digest 5.5, 5.7-3).
+// a congruence of P plus r k k', positive definite for any gain.
 struct PerturbedGainCase {
   Filter prior;
   NavRow h;
@@ -234,7 +235,7 @@ TEST(ScalarUpdate, JosephUpdateRefusesNegativeVarianceLeavingPUntouched) {
   EXPECT_EQ(std::memcmp(P.data(), c.prior.P.data(), sizeof(double) * kNavStates * kNavStates), 0);
 }
 
-// Gate at 5 sigma (digest 5.3: |nu| <= k sqrt(H P H' + R), k ~ 4-5).
+// Gate at 5 sigma (|nu| <= k sqrt(H P H' + R), k = 5 the filter's default gate_sigmas).
 struct GateCase {
   Filter prior;
   NavRow h;

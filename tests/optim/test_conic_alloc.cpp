@@ -1,4 +1,4 @@
-// solve() allocates nothing (issue 4, CONTRIBUTING "Memory"): this file counts every heap allocation
+// solve() allocates nothing (conic_solver.hpp, CONTRIBUTING "Memory"): this file counts every heap allocation
 // of the test_optim executable (support/allocation_counter.hpp) and
 // checks that no allocation happens between the start and the end of solve(), on an SOCP of the
 // planner's shape, a QP, and an LP that exercises the dense-LU fallback of the KKT solve.
@@ -7,7 +7,7 @@
 #include <random>
 
 #include "visors/optim/conic_solver.hpp"
-#include "visors/optim/minimum_fuel_problem.hpp"
+#include "optim/minimum_fuel_problem.hpp"
 #include "support/allocation_counter.hpp"
 
 namespace {

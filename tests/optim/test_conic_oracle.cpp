@@ -1,4 +1,5 @@
-// Acceptance test of the conic solver against CVXOPT as an independent oracle (issue 4).
+// Acceptance test of the conic solver against CVXOPT as an independent oracle
+// (docs/algorithms/control.md#conic-solver).
 // tests/optim/cvxopt_oracle.py (run here with /usr/bin/python3, which scripts/install-deps.sh
 // provides together with python3-cvxopt) generates 320 seeded instances in eight classes and
 // solves them with CVXOPT; every instance is solved again here and compared: same status,
@@ -91,7 +92,7 @@ TEST(ConicOracle, AgreesWithCvxoptOnGeneratedInstances) {
   settings.feasibility_tolerance = 1e-9;
   settings.absolute_gap_tolerance = 1e-9;
   settings.relative_gap_tolerance = 1e-9;
-  const double kObjective = 1e-7;  // issue 4: objective within 1e-7 relative
+  const double kObjective = 1e-7;  // acceptance criterion: objective within 1e-7 relative
   const double kResidual = 1e-8;   // residual / certificate check on the returned point
 
   std::map<std::string, ClassStats> stats;

@@ -9,7 +9,7 @@
 #include <Eigen/Dense>
 
 #include "visors/optim/conic_solver.hpp"
-#include "visors/optim/minimum_fuel_problem.hpp"
+#include "optim/minimum_fuel_problem.hpp"
 
 namespace {
 

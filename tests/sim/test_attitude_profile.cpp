@@ -93,7 +93,7 @@ TEST(AttitudeProfile, ScheduleRejectsOverlap) {
   EXPECT_EQ(p.schedule({150.0, 300.0, 400.0}).error().field, "slew_start_s");
 }
 
-// 90 deg at 1.5 deg/s = 60 s; plus 30 s settling = 90 s (issue defaults, hand).
+// 90 deg at 1.5 deg/s = 60 s; plus 30 s settling = 90 s (the defaults, by hand).
 TEST(AttitudeProfile, SlewDurationIsAngleOverRate) {
   // loose: measured 7.1e-15 s (2026-11), bound 1e-12 s ~140x above round-off (ulp(60 s) 7.1e-15 s)
   EXPECT_NEAR(make_profile().slew_duration_s(90.0 * kDegToRad), 60.0, 1e-12);
@@ -145,7 +145,7 @@ TEST(AttitudeProfile, ObservationKeepsAntennaClosestToZenith) {
 }
 
 // Finite differences every 0.1 s from 20 s before the slew to 20 s after the return slew: the
-// rotation between samples never exceeds 1.5 deg/s (issue default) x 0.1 s, to 1e-9 relative
+// rotation between samples never exceeds 1.5 deg/s (the default) x 0.1 s, to 1e-9 relative
 // (round-off of the predicted states; the test orbit is circular so the prediction is exact).
 TEST(AttitudeProfile, SlewRateNeverExceedsTheLimit) {
   const Scenario s;

@@ -82,7 +82,8 @@ class ScienceLeg : public ::testing::Test {
 
 TEST_F(ScienceLeg, TheAttemptIsMade) { EXPECT_EQ(summary_["observations"].size(), 1U); }
 
-// Issue 6: no passive-safety violation in nominal operation.
+// No passive-safety violation in nominal operation (Guffanti et al., AAS 23-149, 2023, sec. 2,
+// safety requirements).
 TEST_F(ScienceLeg, NoSafetyViolation) { EXPECT_EQ(summary_["safety_violations"].get<int>(), 0); }
 
 // The science orbit's minimum RN separation is ~19 m (paper: e/i separation); epsilon is 5 m.
@@ -143,8 +144,9 @@ TEST_F(ScienceLeg, LateralErrorIsRecomputedFromTheFilesAlone) {
 
 TEST_F(ScienceLeg, ResolvedScenarioIsValid) { EXPECT_TRUE(campaign_from_toml(read(dir_ / "scenario.toml")).ok()); }
 
-// Issue 6: same seed, same results, bit for bit (standby keeping with maneuvers, all random
-// models on: navigation, propulsion, geometry).
+// Reproducibility (docs/requirements.md#closed-loop-system-acceptance): same seed, same results,
+// bit for bit (standby keeping with maneuvers, all random models on: navigation, propulsion,
+// geometry).
 TEST(CampaignRun, SameSeedSameResultsBitForBit) {
   constexpr const char* kStandby = R"(
 [formation]
@@ -169,9 +171,9 @@ mode = "ideal"
   EXPECT_TRUE(same);
 }
 
-// Issue 6: a forced safety violation during science (an unplanned 20 mm/s normal impulse that
-// cancels most of the delta-i separation) makes the host command the escape, which separates
-// the spacecraft and ends in manual mode.
+// A forced safety violation during science (an unplanned 20 mm/s normal impulse that cancels most
+// of the delta-i separation) makes the host command the escape, which separates the spacecraft
+// and ends in manual mode (Guffanti et al., AAS 23-149, 2023, secs. 3 and 4.1).
 TEST(CampaignRun, ForcedViolationEscapesAndEndsInManual) {
   const FaultRun run = run_from_science_orbit("escape", R"(
 [campaign]
@@ -190,8 +192,8 @@ impulse_dv_rtn_mps = [0.0, 0.0, 0.02]
   EXPECT_EQ(run.summary["final_mode"].get<std::string>(), "manual");
 }
 
-// Mission paper, FDIR: a non-GNC fault during science makes the host send the formation back to
-// standby (it then runs the transfer to standby on its own).
+// Guffanti et al., AAS 23-149, 2023, sec. 4.1, FDIR: a non-GNC fault during science makes the host
+// send the formation back to standby (it then runs the transfer to standby on its own).
 TEST(CampaignRun, NonGncFaultDuringScienceReturnsTowardsStandby) {
   const FaultRun run = run_from_science_orbit("non_gnc", R"(
 [campaign]
@@ -216,10 +218,12 @@ bool have_gps_constellation() {
   return visors::core::files::find_data_file(visors::sim::GnssSettings{}.nav_file).has_value();
 }
 
-// The same science leg with each spacecraft navigating itself (issue 16): both receivers, the
-// broadcast errors, the crosslink, the rangefinder and the two on-board filters in the loop.
-// Reference values: issue 16's acceptance (antennas <= 3 mm RMS outside the slews, fix rate
-// >= 99.5 %, wrong fixes <= 0.01 %); the mission paper's figures are 1 cm, 99.1 %, 0.008 %.
+// The same science leg with each spacecraft navigating itself: both receivers, the broadcast
+// errors, the crosslink, the rangefinder and the two on-board filters in the loop. Reference
+// values: the project's navigation acceptance (docs/requirements.md#navigation-acceptance-figures:
+// antennas <= 3 mm RMS outside the slews, fix rate >= 99.5 %, wrong fixes <= 0.01 %);
+// Guffanti et al., AAS 23-149, 2023, report 1 cm (Table 3, IAR on, 1-sigma), 99.1 % and 0.008 %
+// (sec. 5).
 class ScienceLegWithGps : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {

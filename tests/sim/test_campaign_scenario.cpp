@@ -1,4 +1,5 @@
-// The campaign scenario: defaults from the mission paper's test case, validation naming the key,
+// The campaign scenario: defaults from the test case of Guffanti et al., AAS 23-149, 2023,
+// Table 5 (docs/requirements.md#mission-timeline-and-orbits), validation naming the key,
 // and the resolved scenario read back.
 #include <gtest/gtest.h>
 
@@ -23,7 +24,8 @@ std::string shipped_scenario() {
   return text.str();
 }
 
-// Mission paper, test-case table: a = R_E + 500 km, e = 0.004, i = 97.8 deg, RAAN = 157.5 deg.
+// Guffanti et al., AAS 23-149, 2023, Table 5: a = R_E + 500 km, e = 0.004, i = 97.8 deg,
+// RAAN = 157.5 deg (R_E: the WGS-84 equatorial radius in the default, a project choice).
 TEST(CampaignScenario, DefaultChiefIsTheMissionTestCase) {
   const auto s = default_campaign();
   // same expression as the default (campaign_scenario.cpp); loose: measured 0 (2026-11), bound 1e-6 m ~1000x above round-off (ulp(a) 9.3e-10 m)
@@ -33,14 +35,15 @@ TEST(CampaignScenario, DefaultChiefIsTheMissionTestCase) {
   EXPECT_NEAR(s.chief_mean.raan, 157.5 * visors::core::kDegToRad, 1e-15);
 }
 
-// u(t0) = argp + M = 0 (test-case table).
+// u(t0) = argp + M = 0 (the same Table 5).
 TEST(CampaignScenario, DefaultArgumentOfLatitudeIsZero) {
   const auto s = default_campaign();
   // 90 deg - 90 deg cancels exactly (campaign_scenario.cpp), round-off (ulp(pi/2) 2.2e-16); measured 0 (2026-11)
   EXPECT_NEAR(std::remainder(s.chief_mean.argp + s.chief_mean.M, 2.0 * M_PI), 0.0, 1e-15);
 }
 
-// Mission paper: 45 min of standby, 10 attempts; standby ROE a*dey = a*diy = 200 m.
+// Guffanti et al., AAS 23-149, 2023, sec. 5: 45 min of standby; Table 5: 10 attempts, standby
+// ROE a*dey = a*diy = 200 m.
 TEST(CampaignScenario, DefaultTimelineAndStandbyOrbit) {
   const auto s = default_campaign();
   EXPECT_EQ(s.standby_s, 2700.0);
@@ -53,7 +56,7 @@ TEST(CampaignScenario, ShippedFileIsValid) { EXPECT_TRUE(campaign_from_toml(ship
 
 TEST(CampaignScenario, ShippedFileKeepsTheDefaultMasses) {
   const auto s = campaign_from_toml(shipped_scenario()).value();
-  EXPECT_EQ(s.dsc.mass_kg, 11.35);  // mission paper: DSC 11.35 kg, OSC 10.62 kg
+  EXPECT_EQ(s.dsc.mass_kg, 11.35);  // DSC 11.35 kg, OSC 10.62 kg: Guffanti et al., AAS 23-149, 2023, Table 4
   EXPECT_EQ(s.osc.mass_kg, 10.62);
 }
 
@@ -77,8 +80,9 @@ TEST(CampaignScenario, UnknownNavigationModeIsNamed) {
   EXPECT_EQ(s.error().field, "navigation.mode");
 }
 
-// Issue 16: carrier-phase GPS navigation is the campaign's default; "ideal" stays for
-// control-only studies; both read back from the resolved scenario.
+// Carrier-phase GPS navigation is the campaign's default (the closed loop with the flight
+// software's own navigation, as Guffanti et al., AAS 23-149, 2023, sec. 5, tests it); "ideal"
+// stays for control-only studies; both read back from the resolved scenario.
 TEST(CampaignScenario, NavigationIsCdgpsByDefault) {
   EXPECT_EQ(default_campaign().navigation_mode, NavigationMode::kCdgps);
 }
@@ -175,7 +179,7 @@ TEST(CampaignScenario, GeometryKeysAreRead) {
 }
 
 TEST(CampaignScenario, GeometryDefaultsAreThePapers) {
-  const auto s = campaign_from_toml("").value();  // mission paper: 3 mm CoM variation, 30 arcsec boresight
+  const auto s = campaign_from_toml("").value();  // 3 mm CoM variation, 30 arcsec boresight: Guffanti et al., AAS 23-149, 2023, Table 1(a)
   EXPECT_EQ(s.geometry.com_sigma_m, 3e-3);
   EXPECT_NEAR(s.geometry.payload_pointing_sigma_rad / 4.84813681109536e-6, 30.0, 1e-12);
 }

@@ -35,7 +35,8 @@ TEST(Crosslink, RejectsNegativeDelay) {
   EXPECT_EQ(Crosslink<int>::create(s, RandomStream(1, "x")).error().field, "delay_s");
 }
 
-// Delay 0.5 s (issue default): sent at 10 s, not there at the largest double below 10.5 s ...
+// Delay 0.5 s (the default, Guffanti et al., AAS 23-149, 2023, sec. 5): sent at 10 s, not there at
+// the largest double below 10.5 s ...
 TEST(Crosslink, NothingBeforeTheDelay) {
   Crosslink<int> link = make();
   link.send(10.0, 1);
@@ -82,7 +83,7 @@ TEST(Crosslink, CarriesArbitraryMessages) {
   EXPECT_EQ(link.receive(1.0), std::vector<std::string>{"nav"});
 }
 
-// Zero drop probability (issue default) loses nothing over 10000 messages.
+// Zero drop probability (the default) loses nothing over 10000 messages.
 TEST(Crosslink, ZeroDropLosesNothing) {
   Crosslink<int> link = make(0.0);
   for (int k = 0; k < 10000; ++k) link.send(k, k);

@@ -36,8 +36,9 @@ TEST(DragArea, OffAxisIsTheWeightedSum) {
               (kAxisX + 2.0 * kAxisY + 2.0 * kAxisZ) / 3.0, 1e-15);
 }
 
-// Issue envelope 0.15 .. 0.55 m^2: minimum over a dense sphere (200000 Fibonacci directions,
-// spacing 0.008 rad) in [0.15, 0.16] (documented exact value 0.1516 m^2 along Y).
+// Envelope 0.15 .. 0.55 m^2 (Guffanti et al., AAS 23-149, 2023, Table 4): minimum over a dense
+// sphere (200000 Fibonacci directions, spacing 0.008 rad) in [0.15, 0.16] (documented exact value
+// 0.1516 m^2 along Y).
 TEST(DragArea, MinimumOverAttitudesIsAbout015) {
   const double a = DragArea::visors_6u().min_projected_area_m2(200000);
   EXPECT_TRUE(a >= 0.15 && a <= 0.16) << a;

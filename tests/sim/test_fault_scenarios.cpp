@@ -1,8 +1,8 @@
-// Shortened system tests of the fault scenarios of data/scenarios/faults (issue 16): each run
-// with the on-board GPS navigation, and the host's FDIR response the mission paper prescribes
-// (GNC incapable -> role switch; non-GNC fault during a transfer -> role switch and back to
-// standby; garbage refused and counted; a lost crosslink absorbed), passive safety throughout.
-// Skipped without the GPS constellation's file (the data search path).
+// Shortened system tests of the fault scenarios of data/scenarios/faults: each run with the
+// on-board GPS navigation, and the host's FDIR response that Guffanti et al., AAS 23-149, 2023,
+// sec. 4.1, prescribes (GNC incapable -> role switch; non-GNC fault during a transfer -> role
+// switch and back to standby; garbage refused and counted; a lost crosslink absorbed), passive
+// safety throughout. Skipped without the GPS constellation's file (the data search path).
 #include <gtest/gtest.h>
 
 #include <filesystem>

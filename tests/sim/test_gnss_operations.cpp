@@ -151,7 +151,7 @@ class GnssCampaignRun : public ::testing::Test {
   static inline std::map<std::string, std::vector<TruthRow>>* truth_ = nullptr;
 };
 
-// The window of the brief: slew lead = AttitudeProfile::required_slew_lead_s(pi) = 180 deg / 1.5
+// The observation window: slew lead = AttitudeProfile::required_slew_lead_s(pi) = 180 deg / 1.5
 // deg/s + 30 s settling = 150 s (attitude_profile.hpp defaults, gnc.science defaults: the flight
 // software plans; the ADCS's own 2 deg/s does not enter).
 TEST_F(GnssCampaignRun, SummaryListsTheObservationWindow) {

@@ -170,7 +170,7 @@ TEST(GnssScenario, SameSeedSameTruth) {
 
 namespace {
 
-// The acceptance: the RINEX output re-read by the reader gives the same observations.
+// Acceptance of the RINEX output: re-read by the reader it gives the same observations.
 // Checked against the truth file: every C1C is range + receiver clock - satellite clock +
 // ionosphere within 5 sigma of the 0.20 m code noise, every L1C (x lambda) the same with the
 // ionosphere's sign reversed plus lambda (N + phi_r - phi^j), within 5 sigma of the 2 mm phase

@@ -23,7 +23,8 @@ class GpsReceiverTest : public test::GpsReceiverWorld {};
 // that coincides with the Earth-fixed axes at reception (the satellite's Earth-fixed position at
 // t_t rotated back by w_E (t_r - t_t)), solved by Newton on f(tau) = |r_I(t_r - tau) - r| - c tau
 // with a numerical derivative: a different formulation from the receiver's fixed-point iteration
-// of R3(w_E tau) (navigation-and-dynamics.md 4.5: the two must agree to < 1 mm).
+// of R3(w_E tau). Both solve the same light-time equation exactly, so they must agree far below
+// the 1 mm this test asks (the phase noise is 2 mm).
 double inertial_range_m(const GpsSatelliteTruth& truth, std::size_t index, core::GpsTime t_receive,
                         const Eigen::Vector3d& r_receiver) {
   const auto f = [&](double tau) {
@@ -55,12 +56,12 @@ TEST_F(GpsReceiverTest, RangeAgreesWithTheInertialFormulation) {
   for (int k = 0; k < epoch.measurement.channel_count; ++k) {
     const auto& truth = epoch.truth[static_cast<std::size_t>(k)];
     const double independent = inertial_range_m(*truth_, index_of(*truth_, truth.prn), t_receive, epoch.apc_itrf_m);
-    // navigation-and-dynamics.md 4.5: the two formulations agree to < 1 mm (comment above inertial_range_m); loose: measured 3.7e-9 m (2026-11), bound 1e-3 m ~3e5x above (kept at the digest's acceptance)
+    // the two formulations agree to < 1 mm (comment above inertial_range_m); loose: measured 3.7e-9 m (2026-11), bound 1e-3 m ~3e5x above (kept at that acceptance)
     EXPECT_NEAR(truth.range_m, independent, 1e-3) << "PRN " << truth.prn;
   }
 }
 
-// The issue's acceptance: double-differenced carrier phase minus the true geometry is an integer
+// The receiver's acceptance: double-differenced carrier phase minus the true geometry is an integer
 // number of wavelengths plus noise of the configured size. Two receivers 40 m apart along the
 // orbit, 1200 epochs; DD noise = 2 x 2 mm = 4 mm (four undifferenced phases) = 0.0210 cycles.
 TEST_F(GpsReceiverTest, DoubleDifferencedPhaseIsIntegerPlusNoise) {
@@ -310,10 +311,10 @@ TEST_F(GpsReceiverTest, IonosphereDelaysCodeAndAdvancesPhase) {
 }
 
 // Visibility over one orbit (5677 s, every 10 s): zenith antenna, and the antenna tilted 90 deg
-// (about the velocity: one half-space of the sky cut off by the Earth's limb). Digest sanity
-// band (navigation-and-dynamics.md 4.8): 8-12 satellites above 5 deg with a zenith boresight,
-// roughly half with a 90 deg tilt. Measured here (31-satellite constellation of 2024): see the
-// bounds' comments.
+// (about the velocity: one half-space of the sky cut off by the Earth's limb). Sanity band, the
+// project's rough expectation rather than a published figure: 8-12 satellites above 5 deg with a
+// zenith boresight at 500 km, roughly half with a 90 deg tilt. Measured here (31-satellite
+// constellation of 2024): see the bounds' comments.
 TEST_F(GpsReceiverTest, VisibilityOverAnOrbitZenithAndTilted) {
   for (const double tilt : {0.0, 0.5 * core::kPi}) {
     GpsReceiver r = receiver(settings(), "visibility");
@@ -329,12 +330,12 @@ TEST_F(GpsReceiverTest, VisibilityOverAnOrbitZenithAndTilted) {
     // the 12 channels (gps_receiver.hpp default), exact by construction; measured 12 (zenith), 10 (tilted) (2026-11)
     EXPECT_LE(max_tracked, 12);
     if (tilt == 0.0) {
-      // digest sanity band 8-12 above 5 deg (navigation-and-dynamics.md 4.8), bounds 9 .. 14 chosen; measured 10.44 visible, 10.40 tracked (2026-11)
+      // sanity band 8-12 above 5 deg (comment above the test), bounds 9 .. 14 chosen; measured 10.44 visible, 10.40 tracked (2026-11)
       EXPECT_GE(visible, 9.0);
       EXPECT_LE(visible, 14.0);
       EXPECT_GE(tracked_sum / samples, 9.0);
     } else {
-      // digest 4.8: roughly half of the zenith's; measured 7.96 (2026-11); bounds 4 .. 9 chosen
+      // sanity band: roughly half of the zenith's; measured 7.96 (2026-11); bounds 4 .. 9 chosen
       EXPECT_GE(visible, 4.0);
       EXPECT_LE(visible, 9.0);
     }
@@ -426,7 +427,8 @@ TEST_F(GpsReceiverTest, CycleSlipsChangeTheAmbiguityAndSetTheFlag) {
   }
 }
 
-// The receiver clock is a random walk of 1 m per epoch (issue): the increments' sigma.
+// The receiver clock is a random walk of 1 m per epoch (Guffanti et al., AAS 23-149, 2023, sec. 5):
+// the increments' sigma.
 TEST_F(GpsReceiverTest, ClockIsARandomWalkOfOneMetrePerStep) {
   GpsReceiver r = receiver(settings(), "clock");
   std::vector<double> steps;
@@ -447,7 +449,7 @@ TEST_F(GpsReceiverTest, ClockIsARandomWalkOfOneMetrePerStep) {
 // per axis, so the tilt is below 5 x 30 x sqrt(2) arcsec for any seed).
 TEST_F(GpsReceiverTest, PhaseCentreIsAlongTheTiltedBoresight) {
   const GpsReceiver r = receiver(settings(), "antenna");
-  // 0.0854 m along the boresight (navigation-and-dynamics.md 4.7); loose: measured 1.4e-17 m (2026-11), bound 1e-12 m ~7e4x above round-off
+  // 0.0854 m along the boresight (Guffanti et al., AAS 23-149, 2023, Table 1(a)); loose: measured 1.4e-17 m (2026-11), bound 1e-12 m ~7e4x above round-off
   EXPECT_NEAR((r.phase_center_body_m() - r.settings().antenna_body_m).norm(), 0.0854, 1e-12);
   const double tilt = std::acos(std::clamp(r.boresight_body().z(), -1.0, 1.0));
   // a drawn mounting error (continuous distribution) is never exactly zero, and below 5 sigma (comment above); measured 1.8e-4 rad (2026-11), upper bound 1.03e-3 rad

@@ -12,7 +12,8 @@ using visors::sim::FdirResponse;
 using visors::sim::FdirTrigger;
 using visors::sim::kFdirPolicy;
 
-// The host's FDIR policy (mission paper, section on FDIR): one rule per trigger.
+// The host's FDIR policy (Guffanti et al., AAS 23-149, 2023, sec. 4.1, FDIR): one rule per
+// trigger.
 TEST(FdirPolicy, EachTriggerHasExactlyOneRule) {
   for (FdirTrigger trigger : {FdirTrigger::kSafetyViolation, FdirTrigger::kGncIncapable, FdirTrigger::kNonGncFault,
                               FdirTrigger::kUnableToAct}) {

@@ -39,7 +39,7 @@ TEST(Propulsion, DefaultSettingsAreValid) { EXPECT_TRUE(PropulsionSettings{}.val
 
 TEST(Propulsion, ValidateNamesTheField) {
   PropulsionSettings s;
-  s.magnitude_sigma = 0.6;  // outside [0, 0.5] (issue: 0.05 .. 0.5)
+  s.magnitude_sigma = 0.6;  // outside [0, 0.5] (paper's Table 1(b): 0.05 .. 0.5)
   EXPECT_EQ(s.validate().error().field, "magnitude_sigma");
 }
 

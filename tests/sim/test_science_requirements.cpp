@@ -1,7 +1,8 @@
-// System test of the science phase against the mission paper's observation requirements
-// (mission paper sec. 2): 40 observation attempts from the paper's science orbit, in four
-// 10-attempt runs with the first four seeds (ideal navigation, every other random model on:
-// propulsion execution errors, payload geometry errors, crosslink), about 30 s in all.
+// System test of the science phase against the observation requirements of
+// Guffanti et al., AAS 23-149, 2023, sec. 2 (docs/requirements.md#science-alignment-requirements):
+// 40 observation attempts from the paper's science orbit, in four 10-attempt runs with the first
+// four seeds (ideal navigation, every other random model on: propulsion execution errors, payload
+// geometry errors, crosslink), about 30 s in all.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,11 +16,12 @@ namespace {
 using visors::sim::campaign_from_toml;
 using visors::sim::run_campaign;
 
-// Mission paper sec. 2, the three alignment requirements over each 10 s observation.
+// Guffanti et al., AAS 23-149, 2023, sec. 2: the three alignment requirements over each 10 s
+// observation.
 constexpr double kLateralErrorMax_m = 0.018;         // photon-sieve centre off the line of sight
 constexpr double kLateralVelocityMax_mps = 0.2e-3;   // relative velocity across the line of sight
 constexpr double kFocusErrorMax_m = 0.015;           // separation off the nominal 40 m
-// Mission paper sec. 2: one success in five attempts (20 %) declares mission success.
+// The same paper, sec. 2: one success in five attempts (20 %) declares mission success.
 constexpr double kRequiredSuccessRate = 0.20;
 
 constexpr int kSeeds = 4;

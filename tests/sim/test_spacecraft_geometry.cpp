@@ -29,7 +29,8 @@ TEST(SpacecraftGeometry, ValidateNamesTheField) {
   EXPECT_EQ(s.validate().error().field, "com_sigma_m");
 }
 
-// Issue default: payload point (0.15, 0, 0) m on the +X face, nominal centre of mass at the origin.
+// Default (project choice, docs/requirements.md#internal-geometry): payload point (0.15, 0, 0) m
+// on the +X face, nominal centre of mass at the origin.
 TEST(SpacecraftGeometry, NominalPayloadFromComIsTheDefault) {
   RandomStream rng(1, "osc.geometry");
   EXPECT_EQ(SpacecraftGeometry::draw({}, rng).payload_from_com_nominal_body_m(), Eigen::Vector3d(0.15, 0.0, 0.0));
@@ -54,8 +55,9 @@ TEST(SpacecraftGeometry, TrueAxisIsUnit) {
   EXPECT_NEAR(SpacecraftGeometry::draw({}, rng).payload_axis_body().norm(), 1.0, 1e-15);
 }
 
-// Sample statistics over N = 20000 draws from one stream; references are the issue's sigmas with
-// 5-standard-error bands (mean: sigma / sqrt(N); std: sigma / sqrt(2N)).
+// Sample statistics over N = 20000 draws from one stream; references are the default sigmas
+// (Guffanti et al., AAS 23-149, 2023, Table 1(a); the phase centre's: docs/truth-and-knowledge.md)
+// with 5-standard-error bands (mean: sigma / sqrt(N); std: sigma / sqrt(2N)).
 constexpr int kDraws = 20000;
 struct Moments {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero(), std = Eigen::Vector3d::Zero();
@@ -127,10 +129,10 @@ TEST(SpacecraftGeometry, DifferentNamesGiveDifferentGeometry) {
   EXPECT_NE(SpacecraftGeometry::draw({}, a).com_body_m(), SpacecraftGeometry::draw({}, b).com_body_m());
 }
 
-// The centre-of-mass knowledge error (mission paper, sensitivity figure): drawn after the eight
-// other numbers, so the same stream with and without it differs by exactly a vector of the given
-// length, and its direction is isotropic (mean direction ~0 within 5 standard errors, 1/sqrt(3N)
-// per axis for a unit vector).
+// The centre-of-mass knowledge error (Guffanti et al., AAS 23-149, 2023, sec. 5, its sensitivity
+// study): drawn after the eight other numbers, so the same stream with and without it differs by
+// exactly a vector of the given length, and its direction is isotropic (mean direction ~0 within 5
+// standard errors, 1/sqrt(3N) per axis for a unit vector).
 Eigen::Vector3d knowledge_offset(std::uint64_t seed, double length) {
   GeometrySettings with;
   with.com_knowledge_error_m = length;

@@ -12,7 +12,8 @@ namespace visors::astro {
 using ControlInputMatrix = Eigen::Matrix<double, 6, 3>;
 
 /// Eccentric form, exact in e (first order in dv), including the O(e) terms Lambda_R,
-/// Lambda_T of the dlambda row that the commonly published form omits (digest sec. 3.2).
+/// Lambda_T of the dlambda row that the commonly published form omits
+/// (docs/algorithms/relative-motion.md#control-input-matrix).
 /// Chief: its Keplerian elements at the burn (validated, 0 < i < pi).
 ControlInputMatrix control_input_matrix(const KeplerianElements& chief, double mu);
 

@@ -14,6 +14,7 @@
 // Accuracy: the theory's truncation is O(J2^2) a, i.e. metres to tens of metres in a for LEO
 // (measured against a numerical J2-only integration in tests/astro/test_mean_osculating.cpp).
 // The inverse is converged to round-off (mean -> osc -> mean agrees to ~1e-15).
+// Notes: docs/algorithms/relative-motion.md#mean-and-osculating-elements.
 
 #include "visors/astro/keplerian_elements.hpp"
 #include "visors/core/constants.hpp"

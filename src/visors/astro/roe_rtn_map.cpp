@@ -38,13 +38,13 @@ RoeToRtnMatrix roe_to_rtn_matrix(const KeplerianElements& chief, double mu, doub
   const double ope = 1.0 + eta;
   const double k2 = k * k;
 
-  // Digest sec. 1.3 (Sullivan, Grimberg & D'Amico 2017 form, scale factors a eta^2 and
-  // a n / eta), checked entry by entry against a finite-difference Jacobian of the exact
-  // elements -> Cartesian -> RTN map (tests/astro/test_roe_rtn_map.cpp). One correction: the
-  // T-velocity entries of dex and dey are re-derived here as the time derivative of the T-position
-  // entries (theta' = n k^2/eta^3, k' rate = n k^2 k'/eta^3, ROE constant); the digest's
-  // "(1 + k^2/eta^3) cos(theta) + (e_x/k^2)(...)" agrees only to O(e^2) (error 0.3 of the entry at
-  // e = 0.3, 1e-4 at e = 0.01), invisible in its e = 0.004 check.
+  // Sullivan, Grimberg & D'Amico 2017 form, scale factors a eta^2 and a n / eta
+  // (docs/algorithms/relative-motion.md#eccentric-roe-to-rtn-map), checked entry by entry against
+  // a finite-difference Jacobian of the exact elements -> Cartesian -> RTN map
+  // (tests/astro/test_roe_rtn_map.cpp). The T-velocity entries of dex and dey are the time
+  // derivative of the T-position entries (theta' = n k^2/eta^3, dk/dt = n k^2 k'/eta^3, ROE
+  // constant); the expansion "(1 + k^2/eta^3) cos(theta) + (e_x/k^2)(...)" found in some
+  // transcriptions agrees only to O(e^2) (error 0.3 of the entry at e = 0.3, 1e-4 at e = 0.01).
   Eigen::Matrix<double, 3, 6> br;
   br << 1.0 / k, -kp / eta3, (ex * (k - 1.0) / ope - ct) / eta3, (ey * (k - 1.0) / ope - st) / eta3,
       0.0, kp * cot_i / eta3,
@@ -78,7 +78,7 @@ RoeToRtnMatrix roe_to_rtn_matrix_near_circular(const KeplerianElements& chief, d
   const double u = chief.argp + chief.M;
   const double cu = std::cos(u);
   const double su = std::sin(u);
-  // D'Amico (2010 thesis) / digest sec. 1.2, e = 0.
+  // D'Amico (2010 thesis), e = 0 (docs/algorithms/relative-motion.md#near-circular-roe-to-rtn-map).
   RoeToRtnMatrix m;
   m << 1.0, 0.0, -cu, -su, 0.0, 0.0,  //
       0.0, 1.0, 2.0 * su, -2.0 * cu, 0.0, 0.0,  //

@@ -8,10 +8,11 @@
 // - 1.5 n tau da, and the tau terms of the map are exactly that drift. Pass tau = 0 when the
 // ROE is already at t.
 //
-// Eccentric form: exact in e, first order in the ROE (digest sec. 1.3, after Sullivan, Grimberg &
-// D'Amico 2017; its T-velocity dex/dey entries corrected, see the .cpp), error O(|roe|^2) a.
-// Near-circular form: D'Amico's e = 0 map, error O(e |roe|) a in addition (decimetres at
-// e = 0.004, 100 m separation).
+// Eccentric form: exact in e, first order in the ROE (after Sullivan, Grimberg & D'Amico, JGCD
+// 40(8) 2017; its T-velocity dex/dey entries re-derived, see the .cpp), error O(|roe|^2) a.
+// Near-circular form: D'Amico's (2010 thesis) e = 0 map, error O(e |roe|) a in addition
+// (decimetres at e = 0.004, 100 m separation). Equations and a worked example:
+// docs/algorithms/relative-motion.md#eccentric-roe-to-rtn-map.
 
 #include <Eigen/Core>
 

@@ -3,6 +3,7 @@
 // The chief elements are its MEAN Keplerian elements at t0 (the start of the interval); the
 // matrix is built in closed form from them, so do not chain short steps expecting an exact
 // match to one long step (the e-coupling terms are evaluated at each step's chief).
+// Equations and a worked example: docs/algorithms/relative-motion.md#state-transition-matrices.
 
 #include <Eigen/Core>
 

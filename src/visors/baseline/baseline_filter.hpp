@@ -5,7 +5,8 @@
 // minus base) carrier-phase ambiguity per satellite and frequency [cycles], in fixed slots
 // (ambiguity_index). SD rather than DD ambiguity states keep the state meaning the same when the
 // reference satellite changes; the DD ambiguities the integer search needs are formed from them
-// with their covariance by nav::DoubleDifferenceAmbiguities (flight code, navigation digest 6.1).
+// with their covariance by nav::DoubleDifferenceAmbiguities (flight code,
+// docs/algorithms/ambiguity-resolution.md#single-to-double-differences).
 //
 // Dynamics: static - the position is constant; kinematic - white noise: each epoch the position
 // restarts from the epoch's code solution with kinematic_position_sigma_m. SD ambiguities are
@@ -21,8 +22,8 @@
 // through nav::resolve_ambiguities (success rate and ratio, partial fixing), then the fixed
 // solution = the float state conditioned on the fixed integer combinations
 // (nav::FixedSolutionUpdate, exact). A fix whose DD phase residuals fail the gate is refused
-// (wrong-fix check, navigation digest 6.6). Hold: an accepted full fix is also fed back to the
-// float filter as a pseudo-measurement of variance hold_variance_cyc2.
+// (wrong-fix check, docs/algorithms/cdgps-filter.md#wrong-fix-check). Hold: an accepted full fix is
+// also fed back to the float filter as a pseudo-measurement of variance hold_variance_cyc2.
 
 #include <array>
 #include <memory>

@@ -4,9 +4,9 @@
 // common practice of short-baseline RTK (RTKLIB 2.4.3's defaults where it has one: elevation-
 // dependent sigma a + b / sin(el) with a = b = 3 mm for phase, code/phase sigma ratio 100,
 // ratio 3), so results can be compared with that peer on the same data. The mask is 10 deg, not
-// RTKLIB's 15: on the GSI pair (2005-04-02 00:00-01:00) a 15 deg mask leaves 5 satellites in the
-// last minutes, where the fixed kinematic solution has a formal up sigma of 17 cm (and is 10 cm
-// off the static one, consistently); at 10 deg every fixed kinematic epoch is within 3 cm.
+// RTKLIB's 15: on a one-hour pair a 15 deg mask can leave 5 satellites, too few for a fixed
+// kinematic height (tests/baseline/test_baseline_gsi.cpp checks the fixed kinematic epochs
+// against the static solution at 10 deg).
 
 #include <string_view>
 

@@ -7,7 +7,8 @@
 //   H_i = [-(e_i - e_k)',  lambda at i's ambiguity, -lambda at k's]   (phase)
 //   H_i = [-(e_i - e_k)',  0]                                         (code)
 // (e the unit vector rover -> satellite: the range falls as the rover moves towards it). The
-// DD noise is correlated through the reference (navigation digest 6.1): within a group
+// DD noise is correlated through the reference
+// (docs/algorithms/gnss-measurements.md#double-differences): within a group
 // R_ij = s_k + delta_ij s_i (s the SD variances); groups are independent.
 
 #include <functional>

@@ -134,10 +134,10 @@ core::Result<ClosedFormProblem> set_up(const astro::KeplerianElements& chief_mea
 }
 
 // The time in the window at which a normal burn changes di along w_i: the pre-image direction
-// at a trial time (digest 4.6), the first time whose mean argument of latitude is congruent to
-// it modulo pi (either sign of dv_N works), then refined on the exact input matrix (the di effect
-// b(t) of a unit normal burn parallel to w_i: g(t) = b(t) x w_i = 0 by the secant method, b
-// rotating at ~u_dot).
+// at a trial time (docs/algorithms/control.md#out-of-plane-bound-with-j2), the first time whose
+// mean argument of latitude is congruent to it modulo pi (either sign of dv_N works), then
+// refined on the exact input matrix (the di effect b(t) of a unit normal burn parallel to w_i:
+// g(t) = b(t) x w_i = 0 by the secant method, b rotating at ~u_dot).
 double normal_burn_time(const ClosedFormProblem& p, const Eigen::Vector2d& wi) {
   using namespace astro::roe;
   const astro::KeplerianElements& chief = *p.chief;
@@ -212,8 +212,8 @@ struct TangentialCandidates {
 };
 
 // Candidate times of the tangential burns: the delta-e phased times u0 + u_dot t + argp_dot (tf
-// - t) = phi_e + k pi (digest 4.6), the first and last three of them; the window ends (the
-// dlambda lever) and points a quarter and half orbit inside them.
+// - t) = phi_e + k pi (docs/algorithms/control.md#closed-form-planner), the first and last three
+// of them; the window ends (the dlambda lever) and points a quarter and half orbit inside them.
 TangentialCandidates tangential_candidates(const ClosedFormProblem& p, const Vector4d& r4) {
   TangentialCandidates cand;
   const double phi_e = std::atan2(r4[3], r4[2]);

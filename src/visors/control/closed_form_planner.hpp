@@ -1,26 +1,28 @@
 #pragma once
 // Closed-form, time-optimised impulsive planner in mean QNS ROE (Gaias & D'Amico, JGCD 38(6)
-// 2015; Chernick & D'Amico, JGCD 41(2) 2018; digest secs. 4.3-4.6): tangential in-plane burns at
-// the delta-e phased locations (plus, for the dlambda-dominant case, burns at the window ends) and
-// one or two normal burns at the delta-i phased location, with J2 (Koenig, Guffanti & D'Amico
-// 2017 STM) and the eccentric control input matrix.
+// 2015; Chernick & D'Amico, JGCD 41(2) 2018; docs/algorithms/control.md#closed-form-planner):
+// tangential in-plane burns at the delta-e phased locations (plus, for the dlambda-dominant case,
+// burns at the window ends) and one or two normal burns at the delta-i phased location, with J2
+// (Koenig, Guffanti & D'Amico 2017 STM) and the eccentric control input matrix.
 //
 // Model: roe(tf) = Phi(tf, t0) roe0 + sum_k B(t_k) dv_k, B(t) = Phi(tf, t) Gamma(t), where
 // Phi(tf, t) = astro::j2_roe_stm(chief(t), tf - t), Gamma(t) = astro::control_input_matrix(chief(t))
-// and chief(t) = astro::propagate_mean_j2(chief_mean_t0, t) (secular J2 phase rate, digest 2.2).
+// and chief(t) = astro::propagate_mean_j2(chief_mean_t0, t) (secular J2 phase rate,
+// docs/algorithms/relative-motion.md#secular-j2-rates).
 //
 // Algorithm:
 //  1. Pseudostate w = roe_target - Phi(tf, t0) roe0 (absorbs the free J2 and da drift).
-//  2. Normal burn(s): the delta-i phased time (u(t) = atan2 of the pre-image of w_i mod pi,
-//     digest 4.3/4.6), found on the exact B(t) by a secant iteration, sized to hit w_i.
+//  2. Normal burn(s): the delta-i phased time (u(t) = atan2 of the pre-image of w_i under the
+//     differential nodal drift, mod pi), found on the exact B(t) by a secant iteration, sized to
+//     hit w_i.
 //  3. In plane: candidate times = delta-e phased times u(t) + argp_dot (tf - t) = phi_e + k pi
 //     (the delta-e effect of a burn is rotated by argp_dot (tf - t) until tf) plus the window
 //     ends and points a quarter and half orbit inside them. The tangential magnitudes minimise
 //     sum |x_k| subject to the four in-plane rows (da, dlambda, dex, dey) of the exact B: an
 //     l1 problem whose optimum is a basic solution, found by enumerating all 3- and 4-subsets of
 //     the candidates (Carathéodory). In the Keplerian near-circular model this reproduces the
-//     three-burn closed form of digest 4.4 (de- and da-dominant cases) and the end-burn solution
-//     of the dlambda-dominant case (digest 4.5).
+//     three-burn closed form (de- and da-dominant cases) and the end-burn solution of the
+//     dlambda-dominant case (docs/algorithms/control.md#closed-form-planner).
 //  4. Correction: the residual left by the first-order phasing (eccentric Gamma, J2 couplings) is
 //     removed by the minimum-norm change of all impulse vectors, dv += M'(M M')^-1 r (6 x 3N), so
 //     the plan is exact for the linear J2 model.
@@ -37,13 +39,14 @@
 // propagation the standby -> science transfer ends 0.24 m (1.5 orbits) / 0.26 m (3 orbits) from
 // the target, mostly a*diy = -0.22 m: Gamma maps the impulse to osculating elements, and the
 // mean-element jump differs by the O(J2) Jacobian of the mean/osculating map (~1e-3 of the
-// 200 m delta-i change; our reading, not separately verified).
+// 200 m delta-i change; an attribution, not separately verified).
 //
-// Digest cross-check (sec. 4.3-4.6): the 4.4 three-burn closed form (x2 = (A - B)/2, x1, x3) and
-// the Test 4-a plan (-29.3163, +54.1291, -26.2627 mm/s, 0.21933 m/s at u = 264.58 deg mod 180)
-// are reproduced; 4.6 omits that a normal burn's dix also drifts dlambda (-kappa F S tau dix,
-// 0.15 m per orbit for the VISORS 18.7 m of a dix): step 3 therefore plans the in-plane burns on
-// the residual after the normal burn(s), and a pure out-of-plane target gets small tangential burns.
+// The Keplerian near-circular standby -> science plan (-29.3163, +54.1291, -26.2627 mm/s; 0.21933
+// m/s normal at u = 84.58 deg mod 180) is reproduced (worked example in
+// docs/algorithms/control.md#worked-example-standby-to-science). A normal burn's dix also drifts
+// dlambda (-kappa F S tau dix, KGD17 eq. A6: 0.15 m per orbit for the VISORS 18.7 m of a dix):
+// step 3 therefore plans the in-plane burns on the residual after the normal burn(s), and a pure
+// out-of-plane target gets small tangential burns.
 // No heap allocation except the returned impulse vector (none for plan_closed_form_into).
 
 #include "visors/astro/keplerian_elements.hpp"
@@ -60,7 +63,7 @@ struct ClosedFormSettings {
   double end_margin_s = 0.0;     // the last allowed burn time is tf - end_margin [s]
   /// Minimum burn-window length in orbits (2 pi / u_dot): the first delta-e phased location lies
   /// within half an orbit of the window start and the three-burn solution needs another orbit
-  /// after it (digest 4.4), hence 1.5.
+  /// after it (docs/algorithms/control.md#closed-form-planner), hence 1.5.
   double min_window_orbits = 1.5;
   /// 1: one normal burn; 2: the normal delta-v split into two equal burns one orbit apart (same
   /// phase), e.g. to respect a per-burn limit.

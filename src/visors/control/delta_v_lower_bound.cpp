@@ -104,9 +104,9 @@ core::Result<DeltaVLowerBound> delta_v_lower_bound(const astro::KeplerianElement
     b.dominant = InPlaneCase::kDa;
   }
 
-  // Out of plane (digest sec. 4.6): a normal burn at t changes di by the pre-image
-  // p = (w_ix, w_iy - k w_ix), k = 2 kappa sin^2 i (tf - t), because dix drives diy by the
-  // differential nodal regression until tf. The cheapest burn time minimises ||p|| over
+  // Out of plane (docs/algorithms/control.md#out-of-plane-bound-with-j2): a normal burn at t
+  // changes di by the pre-image p = (w_ix, w_iy - k w_ix), k = 2 kappa sin^2 i (tf - t), because
+  // dix drives diy by the differential nodal regression until tf. The cheapest burn time minimises ||p|| over
   // k in [0, k_max]; first order in kappa (tf - t).
   const double wix = delta_roe[kDix];
   const double wiy = delta_roe[kDiy];

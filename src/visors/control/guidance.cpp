@@ -20,7 +20,8 @@ using astro::RelativeOrbitalElements;
 namespace roe = astro::roe;
 
 // Sun elevation beta over the orbit plane and its in-plane angle u_s from the ascending node
-// (digest sec. 7.1): s_rtn(u) = (cos b cos(u - u_s), -cos b sin(u - u_s), sin b).
+// (docs/algorithms/control.md#science-orbit): s_rtn(u) = (cos b cos(u - u_s), -cos b sin(u - u_s),
+// sin b).
 struct SunGeometry {
   double beta;
   double u_sun;

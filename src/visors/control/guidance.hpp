@@ -5,14 +5,16 @@
 //    below rho.
 //  - Science: the optics spacecraft (OSC, the deputy) f = 40 m sunward of the detector (DSC, the
 //    chief) at the observation time, with zero lateral inertial relative velocity (mission
-//    requirement: lateral offset <= 18 mm, lateral velocity <= 0.2 mm/s over 10 s). The
-//    observation is placed where the aligned position lies in the TN plane, i.e. where the Sun
-//    direction is perpendicular to the radial direction: u_obs = u_sun +/- 90 deg, which falls
-//    near the poles for the mission's orbit (relative-motion-and-control.md sec. 7.1-7.4). The ROE
-//    follow by inverting the eccentric ROE -> RTN map at that time (sec. 7.3).
+//    requirement, Guffanti et al., AAS 23-149, 2023, sec. 2: lateral offset <= 18 mm, lateral
+//    velocity <= 0.2 mm/s over 10 s). The observation is placed where the aligned position lies
+//    in the TN plane, i.e. where the Sun direction is perpendicular to the radial direction:
+//    u_obs = u_sun +/- 90 deg, which falls near the poles for the mission's orbit
+//    (docs/algorithms/control.md#science-orbit). The ROE follow by inverting the eccentric
+//    ROE -> RTN map at that time.
 //  - Transfer: waypoints whose e and i vectors share one phase and move together from the start to
-//    the target orbit (sec. 6.4), so each intermediate orbit keeps the e/i-vector separation; each
-//    leg is a 1.5-orbit closed-form maneuver.
+//    the target orbit (Guffanti et al., AAS 23-149, 2023, sec. 4.3, passively safe transfer
+//    guidance; docs/algorithms/control.md#transfer-waypoints), so each intermediate orbit keeps
+//    the e/i-vector separation; each leg is a 1.5-orbit closed-form maneuver.
 
 #include <vector>
 
@@ -38,8 +40,9 @@ struct ScienceGeometry {
   double focal_distance_m = 40.0;  // OSC sunward of DSC [m]
   bool north = true;             // observe at u_sun + 90 deg (else u_sun - 90 deg)
   double los_rate_mps = 0.0;         // relative velocity along the Sun line [m/s] (0: hover)
-  /// Lever arms of the payload reference points, r* = f s + offset_rtn (digest sec. 7.2:
-  /// R_O p_O - R_D p_D with the sign for OSC minus DSC) [m].
+  /// Lever arms of the payload reference points, r* = f s + offset_rtn (R_O p_O - R_D p_D, with
+  /// p_O, p_D the payload points in the OSC and DSC body frames and R_O, R_D their body -> RTN
+  /// attitudes; the sign for OSC minus DSC) [m].
   Eigen::Vector3d offset_rtn_m = Eigen::Vector3d::Zero();
   /// The commanded target on the solar disc: standard coordinates (xi east, eta north) about the
   /// apparent Sun centre (astro/apparent_sun.hpp) [rad]; (0, 0) is the disc centre.
@@ -56,7 +59,8 @@ struct ScienceOrbit {
 };
 
 /// The aligned science orbit. `chief_mean_t0`: chief mean elements at t0 (GPS time `t0`); the Sun
-/// from the analytical ephemeris at t_obs. Errors: invalid elements or geometry, a Sun direction
+/// line is the apparent direction of the commanded target seen from the chief at t_obs
+/// (astro/apparent_sun.hpp). Errors: invalid elements or geometry, a Sun direction
 /// too close to the orbit normal (|beta| > 89 deg: no TN-plane alignment).
 core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_mean_t0, core::GpsTime t0,
                                          const ScienceGeometry& geometry = {},

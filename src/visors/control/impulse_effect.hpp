@@ -4,7 +4,8 @@
 //     roe(t_ref) = Phi(t_ref, t0) roe(t0) + sum_k Phi(t_ref, t_k) Gamma(t_k) dv_k,
 // with Phi(t_ref, t_k) = j2_roe_stm(chief(t_k), t_ref - t_k) (Koenig, Guffanti & D'Amico 2017, A6)
 // and Gamma(t_k) = control_input_matrix(chief(t_k)) (GVE, eccentric, with the Lambda terms), the
-// chief's mean elements at t_k from secular J2 (astro::propagate_mean_j2).
+// chief's mean elements at t_k from secular J2 (astro::propagate_mean_j2);
+// docs/algorithms/control.md#the-linear-model.
 
 #include <string>
 #include <vector>

@@ -1,20 +1,23 @@
 #pragma once
-// Tikhonov-regularised least-squares impulses at 2-3 given times (VISORS fine control; digest
-// sec. 5.6): with B_k = a Phi(tf, t_k) Gamma(t_k) [s] (J2 STM, eccentric Gamma, chief propagated
-// by the secular J2 rates; closed_form_planner.hpp) stacked as M = [B_1 ... B_m] (6 x 3m) and the
-// pseudostate w = a (roe_target - Phi(tf, t0) roe0) [m],
+// Tikhonov-regularised least-squares impulses at 2-3 given times (VISORS fine control: Guffanti et
+// al., AAS 23-149, 2023, sec. 4.3, Algorithm #3, eqs. 3-4;
+// docs/algorithms/control.md#least-squares-planner): with B_k = a Phi(tf, t_k) Gamma(t_k) [s]
+// (J2 STM, eccentric Gamma, chief propagated by the secular J2 rates; closed_form_planner.hpp)
+// stacked as M = [B_1 ... B_m] (6 x 3m) and the pseudostate w = a (roe_target - Phi(tf, t0) roe0)
+// [m],
 //   v = argmin ||M v - w||^2 + nu ||v||^2 = (M'M + nu I)^-1 M' w = M'(M M' + nu I)^-1 w.
-// The mission paper prints the first form without the inverse; this is the regularised normal
+// The paper (eq. 4) prints the first form without the inverse; this is the regularised normal
 // equation it stands for. The 6 x 6 form is used (cheaper, defined for any m). nu -> 0 gives the
 // exact minimum-norm solution (it minimises sum ||dv_k||^2, not the fuel sum ||dv_k||). nu > 0
 // trades terminal error for smaller impulses: the predicted terminal error is
 // w - M v = nu (M M' + nu I)^-1 w.
 //
-// Digest 5.6 cross-check: the two forms and the units are right; Test 5.6-a is reproduced
-// (burns at u = 90/270/450 deg leave dix unreachable, 18.72 m residual with nu > 0; u = 45, 225,
-// 405, 520 deg cost 0.4257 m/s exactly; tests/control/test_least_squares_planner.cpp).
-// Measured (mission chief, J2, science ROE displaced by decimetres, 0.6 orbit): linear terminal
-// error 4e-7 m; J2-only numerical propagation 1.7 cm (3 burns) and 1.8 cm (2 burns).
+// Keplerian near-circular standby -> science (worked example in
+// docs/algorithms/control.md#worked-example-fixed-time-burns): burns at u = 90/270/450 deg leave
+// dix unreachable (18.72 m residual with nu > 0); u = 45, 225, 405, 520 deg cost 0.4257 m/s
+// exactly. Accuracy (tests/control/test_least_squares_planner.cpp; mission chief, J2, science ROE
+// displaced by decimetres, 0.6 orbit): linear terminal error 4e-7 m; J2-only numerical
+// propagation 1.7 cm (3 burns) and 1.8 cm (2 burns).
 //
 // nu [s^2] = relative_regularisation * trace(M M') / 6, i.e. relative to the mean eigenvalue of
 // M M', so the default is independent of a and of the number of burns.

@@ -2,8 +2,8 @@
 // Maneuver buffering: one planned impulse -> a sequence of actuator-feasible pieces with the same
 // net first-order effect on the mean ROE.
 //
-// Actuator (mission paper, propulsion table): impulse 1e-3 .. 2.2e-2 N s, quantised in steps of
-// 6e-5 N s, one impulse every 46.5 s.
+// Actuator (Guffanti et al., AAS 23-149, 2023, Table 1(b), propulsion system performance):
+// impulse 1e-3 .. 2.2e-2 N s, quantised in steps of 6e-5 N s, one impulse every 46.5 s.
 //
 // Method: K pieces centred on the planned time (offsets (j - (K-1)/2) * 46.5 s: centring keeps
 // the dlambda and rotation errors of a one-sided schedule away), their velocity changes the
@@ -16,13 +16,14 @@
 // re-solving the remaining pieces for what the rounding left, so only the last piece's rounding
 // (<= half a quantum) remains.
 //
-// This replaces the mission paper's Algorithm 5, which, checked against the derivation in
-// relative-motion-and-control.md sec. 8: (i) scales the radial pieces by 1/c (c the Dirichlet
-// factor), which changes their sum and so dlambda by -2/n dv_R (1/c - 1); (ii) computes the
-// compensating radial pieces from dv_T - dv_Ti (1 + 2N), which is identically zero, so the
-// tangential part of the de effect is left short by the factor c (5-18 % for 60-120 deg spans);
-// (iii) caps the 1-norm of the pieces before the compensation is added. The minimum-norm solve has
-// none of these problems and covers the eccentric, J2 case the paper's closed forms do not.
+// This replaces the paper's Algorithm 5 (same reference, sec. 4.3, maneuver buffering), which
+// (i) scales the radial pieces by 1/c (c the Dirichlet factor), which changes their sum and so
+// dlambda by -2/n dv_R (1/c - 1); (ii) computes the compensating radial pieces from
+// dv_T - dv_Ti (1 + 2N), which is identically zero, so the tangential part of the de effect is
+// left short by the factor c (5-18 % for 60-120 deg spans); (iii) caps the 1-norm of the pieces
+// before the compensation is added (docs/algorithms/control.md#maneuver-buffering). The
+// minimum-norm solve has none of these problems and covers the eccentric, J2 case the paper's
+// closed forms do not.
 
 #include <memory>
 #include <vector>
@@ -35,7 +36,7 @@
 
 namespace visors::control {
 
-/// The propulsion system's limits (mission paper, propulsion table).
+/// The propulsion system's limits (Guffanti et al., AAS 23-149, 2023, Table 1(b)).
 struct ActuatorLimits {
   double max_impulse_ns = 2.2e-2;  // [N s]
   double min_impulse_ns = 1.0e-3;  // [N s]

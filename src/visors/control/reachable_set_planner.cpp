@@ -26,7 +26,8 @@ core::Error invalid(std::string field, std::string message) {
 
 std::size_t at(int k) { return static_cast<std::size_t>(k); }
 
-// Restricted dual (digest sec. 5.4(a)), variables lambda (6): min -w'lambda s.t.
+// Restricted dual (docs/algorithms/control.md#reachable-set-planner), variables lambda (6):
+// min -w'lambda s.t.
 //   lambda_i <= L, -lambda_i <= L        (12 orthant rows: the box keeps every restriction bounded)
 //   (1, B_k' lambda) in Q^4 per slot     (G rows [0; -B_k'], h = (1, 0, 0, 0))
 optim::ConicDimensions dual_dimensions(int slots) {
@@ -53,7 +54,7 @@ optim::ConicProblem dual_problem_shell(int slots, double dual_box) {
   return dpr;
 }
 
-// Magnitude SOCP over m fixed times (digest sec. 5.4(b)): variables [dv_1..dv_m, s_1..s_m],
+// Magnitude SOCP over m fixed times (ECOS-style conic form): variables [dv_1..dv_m, s_1..s_m],
 // min sum s_j s.t. sum B_j dv_j = w, (s_j, dv_j) in Q^4.
 optim::ConicDimensions primal_dimensions(int m) {
   optim::ConicDimensions dims;
@@ -294,11 +295,11 @@ void ReachableSetPlanner::build_grid(Problem& pb, double t_earliest) {
   for (int j = 0; j < dyn; ++j) w.slots.push_back(static_cast<int>(std::lround((j + 0.5) * (ng - 1) / static_cast<double>(dyn))));
 }
 
-// Reachability screen by weak duality (digest sec. 4.2): for any lambda, the cost is at least
-// lambda'w / max_k ||B_k' lambda||. Along the eigenvectors of the grid Gramian sum_k B_k B_k'
-// of the smallest eigenvalues this bound is large exactly when the window cannot steer some
-// direction of w cheaply; beyond the dual box, the target counts as unreachable (and the
-// restricted SOCPs would be too ill-conditioned to say so themselves).
+// Reachability screen by weak duality (docs/algorithms/control.md#delta-v-lower-bounds): for any
+// lambda, the cost is at least lambda'w / max_k ||B_k' lambda||. Along the eigenvectors of the
+// grid Gramian sum_k B_k B_k' of the smallest eigenvalues this bound is large exactly when the
+// window cannot steer some direction of w cheaply; beyond the dual box, the target counts as
+// unreachable (and the restricted SOCPs would be too ill-conditioned to say so themselves).
 core::Result<bool> ReachableSetPlanner::screen_reachability(const Problem& pb) const {
   const ReachableSetSettings& s = settings_;
   const Workspace& w = *work_;
@@ -318,7 +319,7 @@ core::Result<bool> ReachableSetPlanner::screen_reachability(const Problem& pb) c
   return true;
 }
 
-// Step 2: exchange iteration on the restricted dual (digest sec. 5.2), until no grid constraint
+// Step 2: exchange iteration on the restricted dual (KD21), until no grid constraint
 // is violated by more than dual_tolerance. Leaves lambda, h_grid and h_max in the workspace.
 core::Result<bool> ReachableSetPlanner::exchange_iteration(const Problem& pb) {
   const ReachableSetSettings& s = settings_;

@@ -1,9 +1,10 @@
 #pragma once
 // Fuel-optimal impulsive reconfiguration in mean QNS ROE with the reachable-set (dual) algorithm of
 // Koenig & D'Amico, "Fast algorithm for fuel-optimal impulsive control of linear systems with
-// time-varying cost", IEEE TAC 2021 (KD21); digest docs sec. 5.1-5.4.
+// time-varying cost", IEEE TAC 2021 (KD21); docs/algorithms/control.md#reachable-set-planner.
 //
-// Problem (digest sec. 4.1): with the pseudostate w = roe_target - Phi(tf, t0) roe0,
+// Problem (docs/algorithms/control.md#the-linear-model): with the pseudostate
+// w = roe_target - Phi(tf, t0) roe0,
 //   minimise sum_j ||dv_j||  s.t.  sum_j Phi(tf, t_j) Gamma(t_j) dv_j = w,  t_j in [t_earliest, tf],
 // Phi = astro::j2_roe_stm from the chief's mean elements at t_j (J2 secular propagation),
 // Gamma = astro::control_input_matrix (eccentric form) at t_j.
@@ -16,7 +17,7 @@
 // Steps of plan():
 //  1. B_k on `grid_points` equally spaced times over [t_earliest, tf] (metres and seconds, scaled
 //     by the mean motion so the SOCP data are O(1); w normalised to unit length).
-//  2. Exchange iteration (digest sec. 5.2): restricted dual SOCP over the working set (fixed
+//  2. Exchange iteration (KD21): restricted dual SOCP over the working set (fixed
 //     anchors spread over the window, so the dual stays bounded, plus the previously active and
 //     the most violated grid constraints); stop when max_k ||B_k' lambda|| <= 1 + tolerance.
 //     lambda / max_k ||B_k' lambda|| is dual feasible for the whole grid at every iteration, so
@@ -36,19 +37,16 @@
 //  5. The plan, rejected (status "solver") if the linear model's terminal state still misses the
 //     target by more than terminal_tolerance_m: never ok with a miss.
 //
-// Digest notes checked here (docs/relative-motion-and-control.md):
-//  * sec. 5.4(a) says the cone multipliers are the primal impulses "up to sign and scaling"; with
-//    the ConicSolver form (G x + s = h, dual G'z + c = 0), G rows [0; -B_k'] and c = -w they are
-//    exactly dv_k = -z_k(1:3), s_k = z_k0 (in the normalised units; the dense-grid reference of
+// Notes:
+//  * The cone multipliers of the restricted dual are the primal impulses: with the ConicSolver
+//    form (G x + s = h, dual G'z + c = 0), G rows [0; -B_k'] and c = -w they are exactly
+//    dv_k = -z_k(1:3), s_k = z_k0 (in the normalised units; the dense-grid reference of
 //    tests/control/test_reachable_set_planner.cpp checks the recovered impulses' feasibility).
-//  * sec. 5.3 recovers the times from the peaks of h only, clustering adjacent grid points. That
-//    loses burns: standby -> science over 1.5 orbits has two distinct burns one grid step apart
-//    (both grid points carry impulse, one peak of h), and the peaks-only plan cost 24.7% more
-//    than the optimum. The candidates here are the restricted primal's support plus the refined
-//    peaks.
-//  * sec. 5.4(b) expects the 850-point grid primal (3400 variables) in "tens of ms": only with a
-//    sparse KKT. CVXOPT's conelp on the 2410-point primal ran for more than 15 minutes (dense
-//    KKT), and a dense G for ConicSolver would take 90 MB; hence the dual with a working set.
+//  * The times come from the restricted primal's support plus the refined peaks of h, not from
+//    the peaks alone: two distinct burns one grid step apart both carry impulse but make one peak
+//    of h (standby -> science over 1.5 orbits has such a pair).
+//  * The grid primal (4K variables) is fast only with a sparse KKT, which ConicSolver does not
+//    have (dense G); hence the dual with a working set.
 //
 // Allocation: create() sizes every buffer (grid, working set, one small solver per candidate
 // count); plan() allocates only the returned impulse vector (and error messages); plan_into() nothing.

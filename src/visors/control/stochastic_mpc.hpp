@@ -1,7 +1,7 @@
 #pragma once
-// Stochastic MPC wrapper around the reachable-set planner (digest sec. 5.5; VISORS GNC paper,
-// Guffanti et al. AAS 23-149): the plan is kept while it still reaches the target in the
-// statistical sense, and recomputed only when it does not.
+// Stochastic MPC wrapper around the reachable-set planner (Guffanti et al., AAS 23-149, 2023,
+// sec. 4.3, Algorithm #2; docs/algorithms/control.md#stochastic-mpc): the plan is kept while it
+// still reaches the target in the statistical sense, and recomputed only when it does not.
 //
 // At each navigation update (t, mean ROE estimate x, covariance P) the remaining impulses are
 // propagated to the target time tf in the planner's linear model (J2 STM and Gamma from the
@@ -11,10 +11,10 @@
 // with Q_j = sigma_j^2 I the execution error of impulse j (sigma_j = fraction |dv_j| + floor)
 // and Q_f a terminal process noise. With e = mu_f - target, the squared Mahalanobis distance is
 // d^2 = e' P_f^-1 e, chi-square with 6 degrees of freedom when the plan is right and the
-// errors are Gaussian (the digest, sec. 5.5, compares d itself with "a chi-square quantile": the
-// quantile applies to d^2, so the threshold on d is its square root). The MPC replans from t when d exceeds the threshold (or when there is no
-// plan yet), unless t is inside the freeze window before tf (digest: avoid replanning storms
-// near the target time; the planner also refuses horizons below its minimum).
+// errors are Gaussian (a chi-square quantile applies to d^2, so the threshold on d is its square
+// root). The MPC replans from t when d exceeds the threshold (or when there is no plan yet),
+// unless t is inside the freeze window before tf (which avoids replanning storms near the target
+// time; the planner also refuses horizons below its minimum).
 //
 // Accelerations outside the planner's J2 model (differential drag) enter as a known drift: the
 // caller's prediction of their effect on the mean ROE at tf, added to mu_f. Since the model is

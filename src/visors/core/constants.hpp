@@ -19,7 +19,9 @@ inline constexpr double kEarthRotationRate = 7.292115146706979e-5;
 inline constexpr double kSecondsPerDay = 86400.0;
 
 /// Earth gravity constants of the GRACE fields (GGM01S/GGM05S/JGM-3 `.gfc` headers) and the
-/// J2 the project uses by default (EGM2008 C20 un-normalised, as in the issue text).
+/// J2 the project's analytical models use by default: EGM96's, -sqrt(5) C̄20 with
+/// C̄20 = -0.484165371736e-3 (Lemoine et al. 1998, NASA/TP-1998-206861), rounded to 9 digits
+/// (docs/algorithms/dynamics.md#potential-and-normalisation).
 struct EarthGravityConstants {
   double mu = 3.986004415e14;  // [m^3/s^2]
   double re = 6378136.3;       // [m]

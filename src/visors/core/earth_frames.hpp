@@ -19,10 +19,10 @@
 // (tests/core/test_earth_frames.cpp: 1500 epochs, each 600 s after a refresh, the worst case):
 //   orientation 0.0017" max (bound tested: 0.003")  ->  position 0.055 m max at 6878 km
 //   (0.1 m), velocity 6e-5 m/s max (1e-4 m/s).
-// Design note: the digest (navigation-and-dynamics.md sec. 1.3) suggests omitting nutation
-// (bias-precession only); that costs ~10" (330 m) for nothing, since the precession-nutation
-// matrix is refreshed only every few minutes (a refresh costs ~4 us, bench_frames), so the
-// per-call cost is the same as without nutation.
+// Nutation is kept: a bias-precession-only matrix would be off by up to ~10" (330 m), and since
+// the precession-nutation matrix is refreshed only every few minutes (a refresh costs ~4 us,
+// bench_frames) the per-call cost is the same as without it
+// (docs/algorithms/dynamics.md#on-board-earth-frame).
 
 #include <optional>
 

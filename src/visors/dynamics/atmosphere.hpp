@@ -13,8 +13,9 @@
 
 namespace visors::dynamics {
 
-/// Solar and geomagnetic activity for one instant, in the NRLMSISE-00 convention (SOURCES.md of
-/// the shared data): f107 is the previous day's observed F10.7, f107a its 81-day centred mean.
+/// Solar and geomagnetic activity for one instant, in the NRLMSISE-00 convention (Picone et al.
+/// 2002; docs/nrlmsise00.md#conventions): f107 is the previous day's observed F10.7, f107a its
+/// 81-day centred mean.
 struct SolarActivity {
   double f107 = 150.0;   // [sfu] (1e-22 W m^-2 Hz^-1)
   double f107a = 150.0;  // [sfu]

@@ -11,7 +11,8 @@
 // (earth_rotation_gcrf_approximate()): it ignores precession-nutation, whose CIP offset from the
 // GCRF pole is X ~ 2004" per century since J2000, ~500" = 2.4e-3 rad in 2024, so the co-rotation
 // velocity (~500 m/s at LEO) is tilted by ~1.2 m/s: a relative error <~2e-4 in v_r and <~3e-4 in
-// the drag, far below the density-model error (a factor 2-5, navigation-and-dynamics.md 3.1).
+// the drag, far below the density-model error
+// (docs/algorithms/dynamics.md#truth-and-on-board-mismatch).
 
 #include <Eigen/Core>
 

@@ -1,7 +1,8 @@
 #pragma once
 // Force-model configuration as plain data: which terms, the gravity field and its truncation, the
-// atmosphere, the spacecraft's ballistic properties. Two presets follow the mission paper's
-// Table "dynamics" (ground truth vs on-board numerical model); everything can be overridden from
+// atmosphere, the spacecraft's ballistic properties. Two presets follow Guffanti et al.,
+// AAS 23-149, 2023, Table 4 (ground-truth vs on-board numerical model; the departures are listed
+// in docs/algorithms/dynamics.md#truth-and-on-board-models); everything can be overridden from
 // TOML (config/force_model_toml.hpp) or in code.
 
 #include <string>
@@ -13,8 +14,9 @@
 
 namespace visors::dynamics {
 
-/// Ballistic properties of one spacecraft. Defaults: the detector spacecraft (DSC) of the mission
-/// paper (wet mass 11.35 kg, Cd 2.2, Cr 1.8, cross-section 0.15-0.55 m^2: the mean 0.35 m^2).
+/// Ballistic properties of one spacecraft. Defaults: the detector spacecraft (DSC) of Guffanti et
+/// al., AAS 23-149, 2023, Table 4 (wet mass 11.35 kg, Cd 2.2, Cr 1.8, cross-section 0.15-0.55 m^2:
+/// the mean 0.35 m^2).
 struct SpacecraftProperties {
   double mass = 11.35;     // [kg]
   double drag_area = 0.35; // [m^2], attitude dependent; updated by the caller when it changes
@@ -85,9 +87,10 @@ struct ForceModelConfig {
   /// filter's estimate, or a test input).
   Eigen::Vector3d empirical_rtn = Eigen::Vector3d::Zero();
 
-  /// Ground truth (mission paper Table 3): GGM05S 60x60, NRLMSISE-00 driven by the observed space
-  /// weather (F10.7, daily Ap and the 3-hourly ap history), SRP with the conical (penumbra)
-  /// shadow, Sun and Moon, EOP from the IERS file, frame refresh 60 s.
+  /// Ground truth (Guffanti et al., AAS 23-149, 2023, Table 4): GGM05S 60x60, NRLMSISE-00 driven
+  /// by the observed space weather (F10.7, daily Ap and the 3-hourly ap history), SRP with the
+  /// conical (penumbra) shadow (the table has the cylindrical one; the conical is continuous for
+  /// fixed-step RK4), Sun and Moon, EOP from the IERS file, frame refresh 60 s.
   static ForceModelConfig truth();
   /// On-board numerical model: GGM01S 20x20, Harris-Priester with mean activity, SRP with the
   /// cylindrical shadow, Sun, Moon,

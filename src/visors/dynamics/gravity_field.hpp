@@ -4,7 +4,7 @@
 // (dynamics/files/icgem_file.hpp), or the embedded low-degree default. Evaluation lives in
 // spherical_harmonic_gravity.hpp.
 //
-// Convention (navigation-and-dynamics digest §2.1): geodesy normalisation
+// Convention (docs/algorithms/dynamics.md#potential-and-normalisation): geodesy normalisation
 //   P̄_nm = sqrt((2 - δ_0m)(2n + 1)(n - m)!/(n + m)!) P_nm, no Condon-Shortley phase,
 //   U = (GM/r) Σ_n Σ_m (R/r)^n P̄_nm(sin φ) [C̄_nm cos mλ + S̄_nm sin mλ].
 

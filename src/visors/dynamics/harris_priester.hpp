@@ -27,9 +27,8 @@
 // always that table. The model has no geomagnetic (Ap) dependence.
 //
 // Bulge variants: kDiurnal is the model above. kApexMaximum returns rho_M(h) everywhere, the
-// upper envelope the truth world used as a crude stand-in for NRLMSISE-00 at the 2024 solar
-// maximum (F10.7 ~ 245) before it had NRLMSISE-00 (now its fallback when the NRLMSISE-00 tables
-// are missing); it is NOT a validated high-activity model.
+// upper envelope: the truth's fallback when the NRLMSISE-00 tables are missing, a crude stand-in
+// for high activity that is NOT a validated high-activity model.
 
 #include <cstddef>
 #include <optional>

@@ -5,11 +5,11 @@
 //  - kRk4Fixed: classical 4th-order Runge-Kutta on the grid t0 + k h. A requested output or
 //    maneuver time between grid points is reached by a partial step, and the next step returns to
 //    the grid.
-//  - kRk4Dynamic: the mission's dynamic step (mission paper Table 3: truth 1-10 s, on board
-//    5-30 s). Steps of `step` seconds restart at every event (output or maneuver time) and are
-//    shortened to land exactly on the next one; a remaining interval between `step` and
-//    `step + min_step` is split in two equal steps, so no step is shorter than `min_step` unless
-//    two events are closer than that.
+//  - kRk4Dynamic: the mission's dynamic step (Guffanti et al., AAS 23-149, 2023, Table 4: truth
+//    1-10 s, on board 5-30 s). Steps of `step` seconds restart at every event (output or
+//    maneuver time) and are shortened to land exactly on the next one; a remaining interval
+//    between `step` and `step + min_step` is split in two equal steps, so no step is shorter than
+//    `min_step` unless two events are closer than that.
 //  - kDormandPrince87: the adaptive 8(7) reference integrator (dynamics/dormand_prince87.hpp),
 //    restarted at every event.
 // A maneuver changes the velocity instantaneously at its time: the state reported at that time is

@@ -3,7 +3,8 @@
 // (dynamics/files/space_weather_file.hpp), e.g.
 // data/space_weather/SW-Observed_2024-07-01_2025-01-31.csv.
 //
-// at(t) follows the NRLMSISE-00 input convention (Picone et al. 2002; SOURCES.md sec. 2):
+// at(t) follows the NRLMSISE-00 input convention (Picone et al. 2002;
+// docs/nrlmsise00.md#conventions):
 //   f107  = observed F10.7 of the PREVIOUS UTC day (the flux lags the thermosphere by ~1 day),
 //   f107a = F10.7_OBS_CENTER81: 81-day mean of the observed flux centred on the current day,
 //   ap    = daily Ap (AP_AVG) of the current day.

@@ -7,8 +7,9 @@
 namespace visors::dynamics {
 namespace {
 
-// Derivative factors of the normalised V/W functions (digest §2.2, the ratios N_nm/N_{n+1,k} of
-// the un-normalised M&G eq. 3.33 factors). With D = R·∂/∂x etc.:
+// Derivative factors of the normalised V/W functions: the un-normalised M&G eq. 3.33 factors times
+// the ratios N_nm/N_{n+1,k} (docs/algorithms/dynamics.md#normalised-cunningham-recursion).
+// With D = R·∂/∂x etc.:
 //   D_x V̄_n0 = -g V̄_{n+1,1},                 D_y V̄_n0 = -g W̄_{n+1,1}
 //   D_x V̄_nm = -f1 V̄_{n+1,m+1} + f2 V̄_{n+1,m-1},   D_x W̄_nm = -f1 W̄_{n+1,m+1} + f2 W̄_{n+1,m-1}
 //   D_y V̄_nm = -f1 W̄_{n+1,m+1} - f2 W̄_{n+1,m-1},   D_y W̄_nm =  f1 V̄_{n+1,m+1} + f2 V̄_{n+1,m-1}
@@ -18,7 +19,7 @@ double k_factor(int n) { return (2.0 * n + 1.0) / (2.0 * n + 3.0); }
 double g_factor(int n) { return std::sqrt(k_factor(n) * (n + 1.0) * (n + 2.0) / 2.0); }
 double f1_factor(int n, int m) { return 0.5 * std::sqrt(k_factor(n) * (n + m + 1.0) * (n + m + 2.0)); }
 double f2_factor(int n, int m) {
-  // δ = 2 at m = 1: (2 - δ_0m)/(2 - δ_0,m-1) = 2/1 (the digest's warning; δ = 1/2 is wrong).
+  // δ = 2 at m = 1: (2 - δ_0m)/(2 - δ_0,m-1) = 2/1 (the inverted ratio, δ = 1/2, is wrong).
   const double delta = m == 1 ? 2.0 : 1.0;
   return 0.5 * std::sqrt(delta * k_factor(n) * (n - m + 1.0) * (n - m + 2.0));
 }
@@ -99,7 +100,8 @@ std::size_t SphericalHarmonicGravity::lay_out_rows() {
   return total;
 }
 
-// Recursion coefficients (digest §2.2): sectorial c_j, sub-diagonal sqrt(2j+1), general a_jk, b_jk.
+// Recursion coefficients (docs/algorithms/dynamics.md#normalised-cunningham-recursion): sectorial
+// c_j, sub-diagonal sqrt(2j+1), general a_jk, b_jk.
 void SphericalHarmonicGravity::compute_recursion_factors(UnpackedArrays& arrays) {
   const int k_cap = order_ + 2;
   auto at = [this](int j, int k) { return offset(j) + static_cast<std::size_t>(k); };
@@ -134,7 +136,8 @@ void SphericalHarmonicGravity::compute_derivative_factors() {
 }
 
 // Fold the derivative relations into the coefficients: a/(GM/R^2) = Σ_nm C̄ D V̄_nm + S̄ D W̄_nm
-// becomes Σ_jk (A_jk V̄_jk + B_jk W̄_jk) with j = n+1 (digest §2.2 sums, regrouped by (j, k)).
+// becomes Σ_jk (A_jk V̄_jk + B_jk W̄_jk) with j = n+1 (the acceleration sums of
+// docs/algorithms/dynamics.md#normalised-cunningham-recursion, regrouped by (j, k)).
 void SphericalHarmonicGravity::fold_derivatives_into_coefficients(const GravityField& field, UnpackedArrays& arrays) {
   auto at = [this](int j, int k) { return offset(j) + static_cast<std::size_t>(k); };
   auto array = [&arrays](RowArray q) -> std::vector<double>& { return arrays[static_cast<std::size_t>(q)]; };
@@ -183,7 +186,8 @@ void SphericalHarmonicGravity::pack_rows(const UnpackedArrays& arrays, std::size
 
 namespace {
 
-// Geometry of one evaluation point (digest §2.2): x0 = Rx/r^2, ..., ρ = R^2/r^2, V̄_00 = R/r.
+// Geometry of one evaluation point (docs/algorithms/dynamics.md#normalised-cunningham-recursion):
+// x0 = Rx/r^2, ..., ρ = R^2/r^2, V̄_00 = R/r.
 struct Geometry {
   double x0, y0, z0, rho, v00;
 };
@@ -353,7 +357,7 @@ void SphericalHarmonicGravity::evaluate(const Eigen::Vector3d& r_itrf, Eigen::Ve
   for (int j = 0; j <= last_row; ++j) {
     const int k_end = std::min(j, k_cap);
     if (j > 0) {
-      // Sectorial V̄_jj + iW̄_jj = c_j (x0 + i y0)(V̄ + iW̄)_{j-1,j-1} (digest §2.2).
+      // Sectorial V̄_jj + iW̄_jj = c_j (x0 + i y0)(V̄ + iW̄)_{j-1,j-1}, the normalised recursion.
       if (j <= k_end) {
         const double c = sectorial_[static_cast<std::size_t>(j)];
         v[j] = c * (p.x0 * v1[j - 1] - p.y0 * w1[j - 1]);

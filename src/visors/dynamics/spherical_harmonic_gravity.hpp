@@ -5,9 +5,10 @@
 // Algorithm: the fully normalised Cunningham V/W recursion (Cunningham 1970, "On the computation
 // of the spherical harmonic terms needed during the numerical integration of the orbital motion
 // of an artificial satellite", Celest. Mech. 2; Montenbruck & Gill 2000, "Satellite Orbits"
-// §3.2.5, eqs. 3.29-3.33, here in the normalised form of the navigation-and-dynamics digest
-// §2.2, including its δ = 2 at m = 1). V̄_nm + iW̄_nm = (R/r)^(n+1) P̄_nm(sin φ) e^(imλ) are built
-// by recursion in Cartesian coordinates, so there is no singularity at the poles.
+// §3.2.5, eqs. 3.29-3.33), here fully normalised: M&G's factors times ratios of the normalisation
+// factors, with δ = 2 at m = 1 (docs/algorithms/dynamics.md#normalised-cunningham-recursion).
+// V̄_nm + iW̄_nm = (R/r)^(n+1) P̄_nm(sin φ) e^(imλ) are built by recursion in Cartesian
+// coordinates, so there is no singularity at the poles.
 //
 // Cost: every square root is computed once in create(); the derivative relations are folded into
 // the model's coefficients there (the acceleration is a linear form in V̄/W̄ of degree <= N+1), so
@@ -105,7 +106,7 @@ class SphericalHarmonicGravity {
 
   // Packed per row j (one contiguous stream for the evaluation loop): kRowArrays arrays of
   // row_length(j) values each:
-  //  - kRecA, kRecB: general recursion term a_jk, b_jk of the digest §2.2 (k <= j-2);
+  //  - kRecA, kRecB: general recursion term a_jk, b_jk (k <= j-2; docs/algorithms/dynamics.md);
   //  - kAxV..kAzW: the acceleration as linear forms in V̄_jk, W̄_jk (j <= N+1):
   //    a_x/(GM/R^2) = Σ_jk (AxV V̄_jk + AxW W̄_jk), likewise y and z;
   //  - kUV, kUW: the potential U/(GM/R) = Σ (C̄ V̄ + S̄ W̄) (j <= N).
@@ -113,7 +114,8 @@ class SphericalHarmonicGravity {
   // Sectorial factor c_j and sub-diagonal factor sqrt(2j+1), per row.
   std::vector<double> sectorial_, subdiagonal_;
 
-  // Derivative factors of V̄_jk (j <= N+1) for the gradient: f1, f2, f3 of the digest at (j, k);
+  // Derivative factors of V̄_jk (j <= N+1) for the gradient: f1, f2, f3 at (j, k)
+  // (docs/algorithms/dynamics.md#normalised-cunningham-recursion);
   // at k = 0, f1 holds g = sqrt(k_j (j+1)(j+2)/2). Same offsets as the packed arrays.
   std::vector<double> f1_, f2_, f3_;
 

@@ -1,7 +1,7 @@
 #pragma once
-// The flight component's channels as fixed-size binary records (architecture.md "The flight
-// component's channels"): what a host application exchanges with it, and what the simulator
-// passes through so that the loop exercises the codec.
+// The flight component's channels as fixed-size binary records
+// (docs/architecture.md#binary-records): what a host application exchanges with it, and what the
+// simulator passes through so that the loop exercises the codec.
 //
 // Record = header (20 bytes) + payload (fixed per channel and version) + CRC-32C (4 bytes) of
 // header and payload (gnc/crc32c.hpp). Every number little-endian; doubles as their IEEE 754

@@ -1,8 +1,9 @@
 #pragma once
-// The GNC flight component of one spacecraft (architecture.md; mission paper sec. 4): typed
-// inputs in, typed outputs out, one step per call, driven by the time tags it is given.
+// The GNC flight component of one spacecraft (docs/architecture.md#the-flight-component;
+// Guffanti et al., AAS 23-149, 2023, sec. 4): typed inputs in, typed outputs out, one step per
+// call, driven by the time tags it is given.
 //
-// Mode manager (mission paper, GNC modes): manual -> standby (command) -> transfer_to_science
+// Mode manager (the same paper, sec. 3): manual -> standby (command) -> transfer_to_science
 // (command) -> science (N observation attempts) -> transfer_to_standby (autonomous) -> standby;
 // escape on the host application's FDIR command (raised by this component's passive-safety
 // check), exiting to manual once the escape pieces are fired. Only the ACTIVE spacecraft plans and

@@ -1,7 +1,9 @@
 #pragma once
 // Configuration of the flight component (the configuration channel): every threshold, horizon and
-// period is here with its default and why. Defaults follow the mission paper (GNC algorithms
-// table, test-case table) where it gives a number; the others are stated as this project's.
+// period is here with its default and why. Defaults follow Guffanti et al., AAS 23-149, 2023
+// (below "the paper": its GNC algorithms table, Table 3, and test-case table, Table 5) where it
+// gives a number; the others are stated as this project's. Each default with its source:
+// docs/requirements.md#guidance-and-control-defaults.
 
 #include <array>
 
@@ -50,15 +52,16 @@ struct TransferSettings {
   /// 1.6-orbit leg, which the first science approach then has to undo.
   bool drag_compensation = true;
   /// Capacity of the waypoint list, reserved at creation (1..kMaxTransferWaypoints): a transfer
-  /// needing more legs is a planning failure (a degenerate geometry; the paper's transfers take
-  /// 4-8 legs).
+  /// needing more legs is a planning failure (a degenerate geometry; a transfer of the default
+  /// campaign takes 8 legs).
   int max_waypoints = 64;
 };
 inline constexpr int kMaxTransferWaypoints = 1024;
 
-/// The MPC's execution-error model set to the simulated actuator (magnitude 5 % 1-sigma, the
-/// paper's lower bound; floor one impulse quantum, 6e-5 N s / 10.6 kg = 6 um/s), so the
-/// Mahalanobis test replans when the error grows beyond what the thrusters explain.
+/// The MPC's execution-error model set to the simulated actuator (magnitude 5 % 1-sigma, the lower
+/// bound of the paper's propulsion table, Table 1(b); floor one impulse quantum, 6e-5 N s / 10.6 kg
+/// = 6 um/s), so the Mahalanobis test replans when the error grows beyond what the thrusters
+/// explain.
 inline control::StochasticMpcSettings science_mpc_defaults() {
   control::StochasticMpcSettings settings;
   settings.execution_sigma_fraction = 0.05;
@@ -79,11 +82,9 @@ struct ScienceSettings {
   /// could not end one plenum refill before the slew starts is skipped, and so is one inside the
   /// planning latency (the first, at the window's start, usually is).
   /// Six burns 150 s apart: each replanning corrects the execution error of the burn before, so
-  /// the error reaching the observation shrinks as (magnitude error x 150 s / lead time) per burn;
-  /// with three burns (900, 540, 180 s) the last burn had to undo nearly the whole error of the
-  /// one before. Measured (ideal navigation at 1 mm, 6 runs of 10 attempts per value; README,
-  /// "The paper's sensitivity study"): success at 30 % / 50 % magnitude error 35 / 23 % with three burns,
-  /// 72 / 67 % with six.
+  /// the error reaching the observation shrinks as (magnitude error x 150 s / lead time) per burn,
+  /// and the last burn only trims (the choice and its measurement: docs/decisions.md, "Six
+  /// fine-control burns").
   std::array<double, control::kMaxLeastSquaresBurns> least_squares_burns_before_s{900.0, 750.0, 600.0, 450.0, 300.0, 150.0};
   int least_squares_burns = 6;
   control::LeastSquaresSettings least_squares;

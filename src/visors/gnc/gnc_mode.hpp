@@ -1,9 +1,10 @@
 #pragma once
-// The flight component's modes (mission paper, GNC modes): manual -> standby (command) ->
-// transfer to science (command) -> science (N observation attempts) -> transfer to standby
-// (autonomous) -> standby; escape from any mode on a passive-safety violation, exiting to manual.
-// The two transfer directions are separate modes so that telemetry and the delta-v budget can
-// tell them apart (the paper budgets them separately).
+// The flight component's modes (Guffanti et al., AAS 23-149, 2023, sec. 3;
+// docs/architecture.md#modes): manual -> standby (command) -> transfer to science (command) ->
+// science (N observation attempts) -> transfer to standby (autonomous) -> standby; escape from any
+// mode on a passive-safety violation, exiting to manual. The two transfer directions are separate
+// modes so that telemetry and the delta-v budget can tell them apart (the paper's delta-v budget,
+// in its appendix, lists them separately).
 
 #include <cstdint>
 #include <optional>

@@ -1,11 +1,11 @@
 #pragma once
-// The flight component's maneuver buffer (mission paper, control stack: "a buffer to spread and
-// store planned maneuvers without commanding them until execution"): each planned impulse is split
-// into actuator-sized, quantised pieces by control::buffer_impulse and stored with its absolute
-// time. A new plan replaces the pieces not yet commanded. A piece is released when its time has
-// come and the plenum has refilled since the previous one (ActuatorLimits::spacing_s); pieces of
-// neighbouring impulses that overlap in time are therefore released late, in order, and the next
-// plan corrects the small effect of the delay.
+// The flight component's maneuver buffer (Guffanti et al., AAS 23-149, 2023, sec. 4.3, control
+// stack: planned maneuvers are kept, spread to the actuator's limits, until they are due): each
+// planned impulse is split into actuator-sized, quantised pieces by control::buffer_impulse and
+// stored with its absolute time. A new plan replaces the pieces not yet commanded. A piece is
+// released when its time has come and the plenum has refilled since the previous one
+// (ActuatorLimits::spacing_s); pieces of neighbouring impulses that overlap in time are therefore
+// released late, in order, and the next plan corrects the small effect of the delay.
 //
 // Impulses are in the deputy convention (the OSC's velocity change, chief RTN); the component
 // flips the sign when the DSC is the one firing.

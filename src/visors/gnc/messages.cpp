@@ -8,9 +8,11 @@ namespace visors::gnc {
 
 namespace {
 
-// How old an input may be and still be used [s]: the channel rates of the mission paper with
-// margin (1 Hz channels 5 s, crosslink 0.5 s delay plus drops, weekly commands one minute after
-// their time tag, propulsion telemetry one maneuver spacing).
+// How old an input may be and still be used [s]: the channel rates of
+// Guffanti et al., AAS 23-149, 2023, Table 2, with margin (time at tone and GPS 2 s, navigation and
+// rangefinder 5 s, crosslink 10 s for its 0.5 s delay plus drops, weekly commands one minute after
+// their time tag, propulsion telemetry 120 s, over two maneuver spacings;
+// docs/requirements.md#interfaces-and-rates).
 constexpr double kMaxAgeTone = 2.0;
 constexpr double kMaxAgeNavigation = 5.0;
 constexpr double kMaxAgeCrosslink = 10.0;

@@ -1,8 +1,8 @@
 #pragma once
-// The flight component's channels as typed records (architecture.md "The flight component's
-// channels"; mission paper, GNC interface). Inputs arrive at any time or not at all; each one is
-// validated (validate_* below) and a bad record is rejected, counted in telemetry, and never
-// used. Outputs are produced by every step.
+// The flight component's channels as typed records (docs/architecture.md#channels;
+// Guffanti et al., AAS 23-149, 2023, sec. 4.1 and its inputs-and-outputs table, Table 2). Inputs
+// arrive at any time or not at all; each one is validated (validate_* below) and a bad record is
+// rejected, counted in telemetry, and never used. Outputs are produced by every step.
 //
 // Relative states follow docs/conventions.md: deputy (OSC) minus chief (DSC), chief RTN.
 

@@ -1,8 +1,8 @@
 #pragma once
-// Observation scheduling (mission paper, science mode): one attempt per orbit, where the aligned
-// relative position lies in the TN plane near the pole chosen by guidance
-// (control::science_orbit). The slew to the observation attitude is commanded early enough for
-// the largest slew the configuration allows at the slew rate, plus settling.
+// Observation scheduling (Guffanti et al., AAS 23-149, 2023, sec. 3, science mode): one attempt per
+// orbit, where the aligned relative position lies in the TN plane near the pole chosen by guidance
+// (control::science_orbit). The slew to the observation attitude is commanded early enough for the
+// largest slew the configuration allows at the slew rate, plus settling.
 
 #include "visors/astro/keplerian_elements.hpp"
 #include "visors/astro/relative_orbital_elements.hpp"
@@ -50,10 +50,10 @@ core::Result<ScheduledObservation> next_observation(const astro::KeplerianElemen
                                                     const core::EarthGravityConstants& gravity);
 
 /// The pole for the campaign: the one whose science orbit has PARALLEL relative e and i vectors
-/// (de . di > 0), like the standby orbit and the mission paper's science orbit, so the transfer
-/// never has to turn an e/i-separated orbit inside out (the paper's pathological case:
-/// antiparallel science vectors against a parallel standby). If both or neither pole qualifies,
-/// geometry.north is kept. Returns true for the north pole.
+/// (de . di > 0), like the standby orbit and the science orbit of Guffanti et al., AAS 23-149, 2023,
+/// Table 5, so the transfer never has to turn an e/i-separated orbit inside out (the paper's
+/// pathological case: antiparallel science vectors against a parallel standby). If both or neither
+/// pole qualifies, geometry.north is kept. Returns true for the north pole.
 core::Result<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                      const ScienceSettings& settings, const control::ScienceGeometry& geometry,
                                      const core::EarthGravityConstants& gravity);

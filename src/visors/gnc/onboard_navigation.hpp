@@ -1,7 +1,8 @@
 #pragma once
 // The flight component's own navigation (`[navigation] mode = "cdgps"`): the carrier-phase
 // differential GPS filter of nav/cdgps_filter.hpp fed from the component's channels, and the
-// navigation solution the control stack and the safety check use (mission paper sec. 4.2).
+// navigation solution the control stack and the safety check use (Guffanti et al., AAS 23-149,
+// 2023, sec. 4.2).
 //
 // Inputs, as they arrive step by step:
 //  - the GPS message: the own receiver's epoch, with the attitude of the time at tone at its time

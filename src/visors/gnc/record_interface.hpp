@@ -1,7 +1,7 @@
 #pragma once
-// The flight component behind its binary channels (architecture.md "The flight component's
-// channels"): what a host application calls once per step with the records that arrived, and
-// what it gets back as records. The simulator drives each component through it, so every message
+// The flight component behind its binary channels (docs/architecture.md#binary-records): what a
+// host application calls once per step with the records that arrived, and what it gets back as
+// records. The simulator drives each component through it, so every message
 // of the loop goes through the codec (gnc/channel_record.hpp) every step.
 //
 // Inputs: any number of records of any channels, in any order, any of them garbage. Each is

@@ -19,9 +19,7 @@
 // records. The error is along-track drift from the mean-motion error of the 4-hour fit and grows
 // ~linearly: ~300 km RMS for the 147 days from 2024-05-07 to 2024-10-01. The result is a
 // representative constellation, with realistic geometry and dynamics, not the satellites' real
-// positions on that day. Alternatives measured and rejected: repeating the ground track every
-// sidereal day (1,130 km RMS) or every 86,154 s (the mean GPS repeat period; 385 km RMS), and
-// propagating without delta_n (358 km RMS).
+// positions on that day (docs/algorithms/gnss-measurements.md#constellation-at-the-mission-epoch).
 
 #include <optional>
 #include <span>

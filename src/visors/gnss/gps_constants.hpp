@@ -2,7 +2,7 @@
 // Constants of the GPS user algorithms, IS-GPS-200 (Rev. N) 20.3.3.4.3 and 20.3.4.3. The
 // ephemeris and almanac parameters were fitted with exactly these values, so the user algorithm
 // must use them (not the IERS values): a different mu gives a metre-level along-track error after
-// hours (navigation-and-dynamics.md 4.1).
+// hours (docs/algorithms/gnss-measurements.md#gps-constants).
 
 namespace visors::gnss {
 

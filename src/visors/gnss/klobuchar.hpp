@@ -37,8 +37,9 @@ core::Result<double> klobuchar_delay_s(const KlobucharCoefficients& coefficients
 core::Result<double> klobuchar_delay_m(const KlobucharCoefficients& coefficients, const KlobucharGeometry& geometry,
                                        core::GpsTime t);
 
-/// The part of the ionosphere above a low-Earth-orbit receiver (digest navigation-and-dynamics.md
-/// 4.2, "LEO use"; Montenbruck & Gill 2005 sec. 6.4.2 for the thin-shell mapping). The ground model
+/// The part of the ionosphere above a low-Earth-orbit receiver
+/// (docs/algorithms/gnss-measurements.md#ionosphere-above-a-leo-receiver; Montenbruck & Gill 2005
+/// sec. 6.4.2 for the thin-shell mapping). The ground model
 /// describes the whole electron column; a receiver at 500 km sees only its topside. Scaling used:
 ///   vertical = topside_fraction x (the ground model's delay at the receiver's zenith, i.e. with
 ///              the obliquity factor F(90 deg) removed; the zenith pierce point is the receiver's
@@ -47,8 +48,11 @@ core::Result<double> klobuchar_delay_m(const KlobucharCoefficients& coefficients
 ///              shell at shell_height_m above the Earth (R = 6371 km), E the geodetic elevation
 ///              of the satellite at the receiver, taken as 0 for rays below the local horizontal
 ///              (they are dropped by the occultation test well before the mapping matters).
-/// topside_fraction 0.35 and a 1000 km shell are defaults in the range the digest quotes
-/// (0.3-0.6); at 40 m baselines the single difference of this delay is far below 1 mm either way.
+/// topside_fraction 0.35 and a 1000 km shell are this project's choice, of the order of published
+/// LEO scale factors (0.25 on average at ~480 km in 2004 from the IRI model, Kim & Kim 2014,
+/// Korean J. Remote Sens. 30(2):331-339; a modified Klobuchar model with a raised shell for
+/// GRACE: Yang, Li & Zhang 2014, J. Earth Syst. Sci. 123(4):767-778); at 40 m baselines the single
+/// difference of this delay is far below 1 mm either way.
 /// Continuity: the ground model switches to the night-time constant at |x| = 1.57 (x the phase of
 /// its cosine of local time), where its cosine polynomial 1 - x^2/2 + x^4/24 is still 0.0207: a
 /// jump of 0.0207 x amplitude. A receiver in low Earth orbit crosses that line within seconds

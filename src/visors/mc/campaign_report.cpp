@@ -15,7 +15,7 @@ namespace {
 
 using report::escape_html;
 
-constexpr double kRequiredSuccess = 0.20;  // mission paper: >= 20 % of the attempts
+constexpr double kRequiredSuccess = 0.20;  // Guffanti et al., AAS 23-149, 2023, sec. 2: >= 20 %
 const char* const kPalette[] = {"#1f3b73", "#c0392b", "#27ae60", "#8e44ad", "#d35400", "#16a085", "#7f8c8d", "#2c3e50"};
 
 struct Attempt {

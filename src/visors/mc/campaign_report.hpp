@@ -1,10 +1,10 @@
 #pragma once
-// The HTML report of a Monte Carlo campaign (`visors mc report`): one self-contained page with,
-// per swept parameter, the mission paper's sensitivity figure (whisker plots of the lateral
-// alignment error over the attempts of each value, and their success percentage against the 20 %
-// requirement), the dispersion of the alignment errors in the detector's frame, delta-v
-// statistics, the failed runs with their reasons, and the campaign's provenance (program version,
-// data files with checksums).
+// The HTML report of a Monte Carlo campaign (`visors mc report`): one self-contained page with, per
+// swept parameter, the sensitivity figure of Guffanti et al., AAS 23-149, 2023, sec. 5, "Monte
+// Carlo alignment performances" (whisker plots of the lateral alignment error over the attempts of
+// each value, and their success percentage against the 20 % requirement of its sec. 2), the
+// dispersion of the alignment errors in the detector's frame, delta-v statistics, the failed runs
+// with their reasons, and the campaign's provenance (program version, data files with checksums).
 
 #include <filesystem>
 #include <string>

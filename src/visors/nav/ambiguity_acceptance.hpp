@@ -1,5 +1,6 @@
 #pragma once
-// Acceptance of an integer solution (navigation digest sec. 6.4): which ambiguities to fix, and
+// Acceptance of an integer solution (docs/algorithms/ambiguity-resolution.md#acceptance): which
+// ambiguities to fix, and
 // whether to fix them at all.
 //
 // - Success-rate test (model driven, Teunissen 1998/1999): fix only when the bootstrapped success

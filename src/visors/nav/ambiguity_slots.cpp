@@ -40,8 +40,9 @@ bool AmbiguitySlotBank::active(int slot) const {
 
 int AmbiguitySlotBank::prn_of(int slot) const { return active(slot) ? prn_of_slot_[slot] : 0; }
 
-// x(s) = value, P(s, s) = variance, the rest of row and column s zero: the state is independent
-// of all others (digest sec. 5.4, "zero the cross-covariances"), or parked when released.
+// x(s) = value, P(s, s) = variance, the rest of row and column s zero: the state is independent of
+// all others (the large-variance initialisation zeroes the cross-covariances), or parked when
+// released.
 void AmbiguitySlotBank::set_independent(int state, double value, double variance, NavVector& x, NavMatrix& P) {
   P.row(state).setZero();
   P.col(state).setZero();

@@ -1,14 +1,14 @@
 #pragma once
-// A bank of ambiguity slots in the navigation filter's fixed 98-state layout (navigation digest
-// sec. 5.4): kGpsSlots consecutive states (the GRAPHIC bank B or the SDCP bank N,
-// navigation_state.hpp) lent to GPS satellites while they are tracked. Fixed storage, a PRN ->
-// slot map and an active mask: the matrix sizes never change and nothing is allocated, where a
-// filter that inserts and deletes rows would reallocate at every rise and set.
+// A bank of ambiguity slots in the navigation filter's fixed 98-state layout
+// (docs/algorithms/cdgps-filter.md#ambiguity-slots): kGpsSlots consecutive states (the GRAPHIC bank
+// B or the SDCP bank N, navigation_state.hpp) lent to GPS satellites while they are tracked. Fixed
+// storage, a PRN -> slot map and an active mask: the matrix sizes never change and nothing is
+// allocated, where a filter that inserts and deletes rows would reallocate at every rise and set.
 //
-// Rules kept by the bank (digest sec. 5.4):
+// Rules kept by the bank:
 // - a satellite rises (acquire): it takes the lowest free slot; its state gets the caller's prior
-//   value and variance, its cross-covariances are zeroed (the digest's preferred "large variance"
-//   initialisation: the new state is independent of the others until measured);
+//   value and variance, its cross-covariances are zeroed (the "large variance" initialisation:
+//   the new state is independent of the others until measured);
 // - a satellite slips (reinitialise): the same in place, the slot keeps its PRN;
 // - a satellite sets or is lost (release): marginalising a Gaussian is deleting the state's row
 //   and column; here they are zeroed instead and the slot is parked: x = 0, P(s, s) =
@@ -17,8 +17,8 @@
 //   are zero the active states' (x, P) equal those of a filter that really deleted the state, as
 //   long as inactive slots get no H entries and no process noise (the caller's part: measurement
 //   rows are checked with row_on_active_only()).
-// Activity is the mask alone. A state whose value is exactly 0.0 is not thereby inactive (the
-// digest's caveat on RTKLIB's filter(), which skips states equal to 0.0: a real state can be 0).
+// Activity is the mask alone. A state whose value is exactly 0.0 is not thereby inactive (unlike
+// RTKLIB's filter(), which skips states equal to 0.0: a real state can be 0).
 //
 // consistent() checks every rule above on a filter's (x, P): an always-on invariant check.
 

@@ -505,7 +505,7 @@ void CdgpsFilter::Impl::predict_scalars(Craft local) {
 
 // New or flagged ambiguities start at their code value (Scalar::from_code) with the prior
 // variance, uncorrelated with the state; the measurement then updates the rest of the state as
-// usual. Not at the measurement's residual at the predicted state (digest 5.4): that value
+// usual. Not at the measurement's residual at the predicted state (the textbook start): that value
 // carries the state's error, which an uncorrelated prior then hides: after a 30-minute coast,
 // 200 m off, every ambiguity absorbed the 200 m with a prior of 19 m, the filter believed its
 // state and never recovered (4 runs in 20, one wrong fix).
@@ -749,7 +749,8 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
   x_fixed = x;
   P_fixed = P;
   if (k == 0 || fixer.apply(x_fixed, P_fixed, C.topRows(k), z_fixed.head(k), 0.0, workspace.gain_mask) != FixedSolutionUpdate::Status::kOk) return;
-  // Wrong-fix check (digest 6.6): the fixed solution must explain every SDCP used to the gate.
+  // Wrong-fix check (docs/algorithms/cdgps-filter.md#wrong-fix-check): the fixed solution must
+  // explain every SDCP used to the gate.
   for (int i = 0; i < sdcp_count; ++i) {
     const Scalar& m = sdcp_scalars[static_cast<std::size_t>(i)];
     const double residual = m.z - (m.p.value_m + m.p.h.dot(x_fixed - x_prior));

@@ -1,6 +1,7 @@
 #pragma once
-// The carrier-phase differential GPS navigation filter each spacecraft runs on board (mission
-// paper sec. 4.2; navigation digest sec. 5-6): one extended Kalman filter estimating both
+// The carrier-phase differential GPS navigation filter each spacecraft runs on board (Guffanti
+// et al., AAS 23-149, 2023, sec. 4.2; docs/algorithms/cdgps-filter.md): one extended Kalman
+// filter estimating both
 // spacecraft (nav/navigation_state.hpp: 98 states), from the local receiver's GRAPHIC and the
 // SDCP of the satellites both receivers track (the remote receiver's phase comes over the
 // crosslink), with integer ambiguity resolution on the double differences of the SDCP
@@ -12,8 +13,9 @@
 //    phase at once): the epoch's median GRAPHIC (local receiver) or SD code (remote) beyond its
 //    own gate is taken into that clock state (absorb_clock_jump in cdgps_filter.cpp).
 // 1. Ambiguity slots (nav/ambiguity_slots.hpp): a satellite new to a bank, or flagged by the
-//    loss-of-lock indicator, gets its slot (re)initialised from the measurement's residual with
-//    the prior variance (digest 5.4, large-variance method), so the same measurement then updates
+//    loss-of-lock indicator, gets its slot (re)initialised at its code value (GRAPHIC minus
+//    code, SD phase minus SD code) with the prior variance (large-variance method,
+//    docs/algorithms/cdgps-filter.md#ambiguity-slots), so the same measurement then updates
 //    it; a satellite unmeasured for longer than slot_timeout_s is released (a lost crosslink epoch
 //    or a short gap keeps the ambiguity, and with it a held integer). A phase flagged with an
 //    unresolved half cycle is not used (the receiver flags the loss of lock when it resolves it).
@@ -39,11 +41,11 @@
 //    acceptance of nav/ambiguity_acceptance.hpp (success rate and ratio, partial fixing) decides;
 //    the fixed solution is the float state conditioned on the fixed integers
 //    (nav/fixed_solution.hpp), refused when an SDCP residual then fails the gate (wrong fix,
-//    digest 6.6). With hold, an accepted full fix is also fed back into the float filter as a
-//    pseudo-measurement, each fixed combination while its float variance exceeds the hold
-//    variance (once, in effect: re-holding it every epoch would make P over-confident); an SDCP
-//    of a held satellite that later fails its gate reinitialises that slot, which releases the
-//    held integer (the wrong-fix recovery).
+//    docs/algorithms/cdgps-filter.md#wrong-fix-check). With hold, an accepted full fix is also fed
+//    back into the float filter as a pseudo-measurement, each fixed combination while its float
+//    variance exceeds the hold variance (once, in effect: re-holding it every epoch would make P
+//    over-confident); an SDCP of a held satellite that later fails its gate reinitialises that
+//    slot, which releases the held integer (the wrong-fix recovery).
 //
 // Time update: the mean of each spacecraft by RK4 under its on-board force model plus the
 // empirical acceleration (nav/orbit_time_update.hpp); the covariance with the short-step

@@ -1,7 +1,8 @@
 #pragma once
 // Every tunable of the carrier-phase differential GPS filter (nav/cdgps_filter.hpp), with its
-// default and unit. Defaults: the navigation digest's (sec. 4.3, 5.2, 5.4, 6.4-6.5) and the
-// mission's receiver (20 cm code, 2 mm phase).
+// default and unit; the algorithm each one enters: docs/algorithms/cdgps-filter.md. Receiver
+// noise: the mission's receiver as simulated in Guffanti et al., AAS 23-149, 2023, sec. 5 (20 cm
+// code, 2 mm phase, undifferenced).
 
 #include <optional>
 
@@ -14,49 +15,44 @@ namespace visors::nav {
 struct CdgpsSettings {
   Craft local = Craft::kDsc;  // whose receiver gives the GRAPHIC measurements (the one running it)
 
-  // Dynamics (digest 5.2).
+  // Dynamics (docs/algorithms/cdgps-filter.md#time-update).
   double max_step_s = 10.0;                // RK4 step of the mean [s]
   double empirical_tau_s = 600.0;          // Gauss-Markov correlation time [s]
   // Its steady-state sigma, each RTN axis [m/s^2], in two parts: one common to both spacecraft
   // (the on-board model's errors 40 m apart are the same: gravity beyond 20x20, the density) and
-  // one of each alone (what differs: drag and SRP areas, thrust leaks). With a single independent
-  // 5e-8 the absolute error was 4.3 m and the float solution over-confident (NEES 43 with 5 cm
-  // phase); with 5e-7 independent, the float became consistent but the fixed relative error grew
-  // (0.69 -> 0.90 mm): the relative dynamics then had 7e-7 of noise it does not have. Own part
-  // 1e-7, not 5e-8: over 20 seeds the antennas' along-track error had a part common to all
-  // seeds, 0.2-0.5 mm over the first 40 min (the geometry's; the truth's and the on-board
-  // model's relative accelerations differ by 2-4e-9 m/s^2 there: the 40 m gradient of gravity
-  // beyond 20x20), that the covariance did not hold: NEES inside its bounds 83 % -> 90 % of the
-  // epochs, 0.63 -> 0.68 mm (scripts/nav_seeds.sh).
+  // one of each alone (what differs: drag and SRP areas, thrust leaks, and the 40 m gradient of
+  // the gravity beyond 20x20, a few 1e-9 m/s^2). The common part gives the absolute orbits their
+  // model error without loosening the relative dynamics, which see only the own parts
+  // (docs/algorithms/cdgps-filter.md#empirical-accelerations).
   double empirical_common_sigma_mps2 = 5e-7;
   double empirical_sigma_mps2 = 1e-7;
   // The own part's along-track axis [m/s^2], when it differs from the others; negative:
   // empirical_sigma_mps2. The differential drag is along-track and reaches 1e-6 m/s^2 at solar
   // maximum (docs/drag-prediction.md). With the multipath states below the filter trusts its
-  // dynamics over the minute, and with 1e-7 that drag went into the along-track error (seeds 6,
-  // 7, 9: antennas 12.9-14.7 mm); 4e-7 gave it back, 1e-6 let the velocity wander (focus
-  // failures: docs/navigation-multipath.md).
+  // dynamics over the minute, so the along-track axis needs room for that drag, and not so much
+  // that the relative velocity wanders (docs/decisions.md, "Gauss-Markov states of the SD
+  // multipath"; docs/navigation-multipath.md).
   double empirical_along_track_sigma_mps2 = 4e-7;
   double clock_random_walk_m = 10.0;       // receiver clock random walk, per sqrt(s) [m/sqrt(s)]
   // Random walk of each GRAPHIC bias [m/sqrt(s)]: the broadcast orbit and clock errors along a
   // line of sight change over a pass (the line of sight turns by ~0.3 rad in 30 min), which a
-  // constant bias cannot follow; 0: constant biases. Without it the GRAPHIC NIS over 20 seeds
-  // rose along the orbit from 0.4 to 1.3 (inside its per-epoch bounds 55 % of the epochs); with
-  // 1e-3 and graphic_sigma_m at the white 0.1 m it is flat at 1.03 (87 %), absolute 2.1 -> 1.5 m.
+  // constant bias cannot follow; 0: constant biases. With it the GRAPHIC normalised innovations
+  // stay consistent along the orbit (docs/algorithms/cdgps-filter.md#graphic-biases).
   double graphic_bias_random_walk_m = 1e-3;
   // Change of a satellite's broadcast range error when its data set changes (every 2 h), 1-sigma
   // [m]: added to its GRAPHIC bias at the switch. gnss-sim's sets jump by ~0.3 m (its
   // refresh_correlation 0.95 on ~1 m along a line of sight); real consecutive sets, 0.1-0.5 m.
   double ephemeris_switch_sigma_m = 0.5;
   // Execution errors of a commanded impulse (apply_impulse), 1-sigma: along the command, as a
-  // fraction of |dv| (the propulsion's 5 %: mission paper, propulsion table), and the direction
-  // error across it. The direction default is the mission's worst case (0.05 .. 10 deg range,
-  // sim/propulsion.hpp) bounded at 1 deg: over-bounding costs a few seconds of SDCP updates,
-  // under-bounding turns a maneuver into false cycle slips.
+  // fraction of |dv| (5 %, the low end of the propulsion's 5-50 % magnitude error, Guffanti et al.,
+  // AAS 23-149, 2023, Table 1b), and the direction error across it. The direction default bounds
+  // the same table's 0.05-10 deg range (sim/propulsion.hpp) at 1 deg: over-bounding costs a few
+  // seconds of SDCP updates, under-bounding turns a maneuver into false cycle slips.
   double impulse_magnitude_sigma = 0.05;   // [-]
   double impulse_direction_sigma_deg = 1.0;  // [deg]
 
-  // Priors at initialise() and for new ambiguities (digest 5.4: large variance, then the update).
+  // Priors at initialise() and for new ambiguities (docs/algorithms/cdgps-filter.md#ambiguity-slots:
+  // a large variance, then the same measurement updates them).
   double position_sigma_m = 10.0;
   double velocity_sigma_mps = 0.1;
   double clock_sigma_m = 100.0;
@@ -64,28 +60,28 @@ struct CdgpsSettings {
   // calibration as the flight team states it (a CubeSat patch antenna's phase centre is known to
   // a few mm: docs/truth-and-knowledge.md). The states start at zero (the calibrated value). A
   // body-fixed lever is what the centre of mass's knowledge error is too; the measurements tell
-  // them apart only through the attitude's turns (docs/decisions.md: with a 0.1 mm prior the
-  // states were held at the calibration, which the truth then equalled exactly).
+  // them apart only through the attitude's turns (docs/decisions.md, "The phase centre is
+  // uncertain"; docs/phase-centre-estimation.md).
   double phase_center_sigma_m = 5e-3;
-  // The phase-centre states as consider states between attitude turns. With both spacecraft in
-  // the same attitude, fixed in the orbital frame, C (p_osc - p_dsc) is a constant RTN offset
-  // between the antennas and the centres of mass; along-track it is a free relative orbit, so the
-  // data cannot tell it from the centres of mass, and estimated states drift with whatever
-  // along-track error they are handed (docs/navigation-multipath.md: 10 mm with no phase-centre
-  // error in the truth). They get a gain only from a turn of either spacecraft's attitude in its
-  // orbital frame faster than phase_center_turn_rate_deg_s (a slew: the antenna offset jumps, the
-  // centres of mass cannot) until phase_center_free_after_turn_s after it, and only along the
-  // body axes the turn exposes (normal to its axis); otherwise their estimate is held at what the
-  // last turns gave (the calibration before any) while their covariance and correlations are
-  // carried (Schmidt consider states, Joseph form). false: always estimated.
+  // The phase-centre states as consider states between attitude turns. With both spacecraft in the
+  // same attitude, fixed in the orbital frame, C (p_osc - p_dsc) is a constant RTN offset between
+  // the antennas and the centres of mass; along-track it is a free relative orbit, so the data
+  // cannot tell it from the centres of mass, and estimated states drift with whatever along-track
+  // error they are handed (docs/phase-centre-estimation.md). They get a gain only from a turn of
+  // either spacecraft's attitude in its orbital frame faster than phase_center_turn_rate_deg_s (a
+  // slew: the antenna offset jumps, the centres of mass cannot) until
+  // phase_center_free_after_turn_s after it, and only along the body axes the turn exposes (normal
+  // to its axis); otherwise their estimate is held at what the last turns gave (the calibration
+  // before any) while their covariance and correlations are carried (Schmidt consider states,
+  // Joseph form). false: always estimated.
   bool phase_center_consider_between_turns = true;
   double phase_center_turn_rate_deg_s = 0.5;  // [deg/s]: the slews turn at 1.5, the nominal attitude at < 0.1
   double phase_center_free_after_turn_s = 300.0;  // [s]
   // Whether the offset along the boresight (body Z) is estimated at all (with the states held
   // between turns). Only the observation slews expose it, and in the nominal attitude it lies
-  // along the radial, where the antennas' GPS error is largest: estimated, it left the slews
-  // worse than it came (seed 12: from 1.7 to 15.5 mm off; seed 11: 8.6 to 10.8 mm), held at the
-  // calibration it keeps the calibration's error (docs/phase-centre-estimation.md).
+  // along the radial, where the antennas' GPS error is largest: estimated, it takes up that error
+  // during the slews; held at the calibration it keeps only the calibration's error
+  // (docs/phase-centre-estimation.md, "The boresight component").
   bool phase_center_boresight_estimated = false;
   // New ambiguities start at their code value (cdgps_filter.cpp, start_ambiguities): GRAPHIC
   // minus code, off by the code's ionospheric delay (2-5 m at 500 km in 2024) and noise; SD
@@ -97,10 +93,12 @@ struct CdgpsSettings {
   // loss-of-lock indicator or the innovation gate says it slipped.
   double slot_timeout_s = 30.0;
 
-  // Measurements (digest 4.3): GRAPHIC = (code + phase) / 2, SDCP = phase OSC - DSC.
+  // Measurements (docs/algorithms/gnss-measurements.md#graphic and #single-differences):
+  // GRAPHIC = (code + phase) / 2, SDCP = phase OSC - DSC.
   // The white 0.1 m noise of (code + phase)/2 (0.2 m code); the broadcast orbit and clock errors
   // (~1 m) go to the bias B: their constant part over a pass at the start, their change through
-  // graphic_bias_random_walk_m. (As white noise, 0.15 m before: the NIS then depended on time.)
+  // graphic_bias_random_walk_m (not into this sigma: as white noise they would make the
+  // innovations' consistency depend on time).
   double graphic_sigma_m = 0.1;
   double sdcp_sigma_m = 0.00283;           // sqrt(2) x 2 mm
   // Variance factor of an SDCP in the float filter's update, >= 1: the SD phase's multipath is
@@ -128,10 +126,8 @@ struct CdgpsSettings {
   // into one scalar per epoch: it ties the clock difference to the codes at every epoch. Without
   // it the remote clock is held by the float SD ambiguities' common part, set by their code
   // start (start_ambiguities) and moved as satellites are handed over; c dt off by 40 m puts the
-  // remote antenna 7.6 km/s x 133 ns = 1 mm along-track. (With the ambiguities started at the
-  // residual, before, the cold start's clock stayed: 24 h, an along-track bias growing to 1.5 mm,
-  // NEES 13; after a 5-min outage, 1 mm for the rest of the orbit.) sqrt(2) x the 0.2 m code
-  // noise, per satellite.
+  // remote antenna 7.6 km/s x 133 ns = 1 mm along-track. sd_code_sigma_m: sqrt(2) x the 0.2 m
+  // code noise, per satellite.
   bool sd_code = true;
   double sd_code_sigma_m = 0.3;
   // The code's multipath, each receiver: its first-order Gauss-Markov steady-state sigma at the
@@ -154,13 +150,14 @@ struct CdgpsSettings {
   bool elevation_weighting = true;
   double min_weighting_elevation_deg = 5.0;
 
-  // Integer ambiguity resolution (digest 6.4-6.5); off: the float filter alone.
+  // Integer ambiguity resolution (docs/algorithms/ambiguity-resolution.md#acceptance and
+  // #fixed-solution-update); off: the float filter alone.
   bool ambiguity_resolution = true;
   // No fix attempt until the float filter has run this long after its cold start [s]. After a
   // cold start the broadcast records arrive one per second as the receiver decodes them (18-36 s
   // after lock), so the first epochs hold few satellites whose float ambiguities have not
-  // converged: the closed loop's cold start fixed wrong integers 7 s after it (white receiver
-  // noise, 2 epochs) before this guard. RTKLIB's demo5 waits similarly (arminfix, arthres1).
+  // converged, and a fix attempted then can be wrong (docs/decisions.md, "Broadcast records
+  // arrive as a receiver decodes them"). RTKLIB's demo5 waits similarly (arminfix, arthres1).
   double min_float_s_before_fix = 30.0;
   // Elevation mask of the integer resolution [deg]: a satellite lower than this above either
   // antenna's plane stays in the float solution, unfixed (RTKLIB's arelmask). Multipath grows as
@@ -172,10 +169,10 @@ struct CdgpsSettings {
   // Fix-and-hold: accepted full fixes fed back into the float filter, each fixed combination once,
   // as a pseudo-measurement of this variance. A DD ambiguity is an integer exactly, so the hold
   // is nearly hard (3e-4 cycles, 0.06 mm): the float state then keeps the fixed accuracy through
-  // epochs without SDCP (crosslink drops, outages). On 10 min with 10 % drops and a 60 s outage
-  // the antennas' error was 6.3 mm RMS held once at 1e-3, 4.5 at 1e-5, 2.2 at 1e-7 (1.0 without
-  // faults, any of them). RTKLIB's holdamb uses 1e-3 but again at every epoch, which tightens
-  // the same way over ~1000 epochs and costs an update of k rows each time.
+  // epochs without SDCP (crosslink drops, outages), the better the tighter the hold
+  // (docs/algorithms/ambiguity-resolution.md#fix-and-hold). RTKLIB's holdamb uses 1e-3 but again
+  // at every epoch, which tightens the same way over ~1000 epochs and costs an update of k rows
+  // each time.
   bool hold = true;
   double hold_variance_cycles2 = 1e-7;     // [cycles^2]
 };

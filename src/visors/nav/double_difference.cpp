@@ -78,8 +78,8 @@ bool DoubleDifferenceAmbiguities::add_group(Index reference, std::span<const Ind
 
 // Column r of P G' is P e_i - P e_ref; row r of G (P G') picks rows i and ref of that product.
 // Only the lower triangle of Q is computed and mirrored: the four-term sums of Q(r, c) and
-// Q(c, r) round differently, and the integer least squares wants Q exactly symmetric (digest
-// sec. 6.1, "symmetrise Q").
+// Q(c, r) round differently, and the integer least squares wants Q exactly symmetric (it checks
+// the symmetry and then reads the lower triangle).
 bool DoubleDifferenceAmbiguities::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
                                            const Eigen::Ref<const Eigen::MatrixXd>& P) {
   const Index n = n_states_;

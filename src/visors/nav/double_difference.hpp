@@ -1,17 +1,19 @@
 #pragma once
 // Single-difference (SD) to double-difference (DD) ambiguities with a reference satellite
-// (navigation digest sec. 6.1). A filter holds SD (receiver-receiver) ambiguity states [cycles] at
-// some indices of its state vector x (n_x states, covariance P). For each frequency one satellite
-// is the reference; every other satellite r of that frequency gives one DD ambiguity
+// (docs/algorithms/ambiguity-resolution.md#single-to-double-differences). A filter holds SD
+// (receiver-receiver) ambiguity states [cycles] at some indices of its state vector x (n_x states,
+// covariance P). For each frequency one satellite is the reference; every other satellite r of that
+// frequency gives one DD ambiguity
 //   a_r = x(i_r) - x(ref) = G_r x,  G_r = e_{i_r}' - e_ref'
-// (the digest's D_m row "+1 for the satellite, -1 for the reference"; RTKLIB's ddmat has the
-// opposite sign). The receiver phase offset common to the SDs of one frequency cancels, so the
-// DDs are integers (digest sec. 6.1). Outputs:
+// (+1 for the satellite, -1 for the reference; RTKLIB's ddmat has the opposite sign). The
+// receiver phase offset common to the SDs of one frequency cancels, so the DDs are integers.
+// Outputs:
 //   a = G x [cycles],  Q = G P G' [cycles^2],  PGt = P G' [state unit x cycles]
-// PGt is the cross-covariance a conditional update of the whole state needs (digest sec. 6.5).
+// PGt is the cross-covariance a conditional update of the whole state needs
+// (docs/algorithms/ambiguity-resolution.md#fixed-solution-update).
 //
 // Holding SD states rather than DD states means a change of reference needs no state remapping:
-// only G changes (digest sec. 6.1). G has two non-zeros per row, so a, Q and PGt are computed by
+// only G changes. G has two non-zeros per row, so a, Q and PGt are computed by
 // index in O(n_x k + k^2), not as dense products; the dense G is kept for the caller (and for the
 // fixed constraints C = Z_k' G, fixed_solution.hpp).
 //

@@ -1,22 +1,24 @@
 #pragma once
-// Feeding an integer fix back into the float states (navigation digest sec. 6.5): the update of
+// Feeding an integer fix back into the float states
+// (docs/algorithms/ambiguity-resolution.md#fixed-solution-update): the update of
 // ALL states x (n_x) with covariance P given k fixed integer combinations C x = z,
 //   S = C P C' + s I,  K = P C' S^-1,  x+ = x + K (z - C x),  P+ = P - K C P,
-// - s = 0: the exact conditioning of the Gaussian (x, P) on C x = z, the fixed solution (digest
-//   option A; RTKLIB resamb_LAMBDA, "continuous" AR output: x+ goes to guidance, the float filter
+// - s = 0: the exact conditioning of the Gaussian (x, P) on C x = z, the fixed solution (RTKLIB
+//   resamb_LAMBDA, "continuous" AR output: x+ goes to guidance, the float filter
 //   keeps running on its own copy);
 // - s > 0: a Kalman update with the pseudo-measurement z = C x + v, v ~ N(0, s I) [cycles^2], the
-//   fix-and-hold constraint (digest option B; RTKLIB holdamb, VAR_HOLDAMB = 0.001 cycles^2).
+//   fix-and-hold constraint (RTKLIB holdamb, VAR_HOLDAMB = 0.001 cycles^2).
 //
 // Computed with the Cholesky factor S = L L': W = L^-1 (P C')' (k x n_x), v = L^-1 (z - C x),
 //   x+ = x + W' v,  P+ = P - W' W,
 // since K = P C' L^-T L^-1. P - W' W is the symmetric form of P - K C P (one triangular solve, the
-// subtracted term symmetric positive semidefinite by construction), computed on the lower
-// triangle and mirrored: P+ is exactly symmetric. Only the columns of C with a non-zero entry
-// enter C P and C x (a fix touches the ambiguity states only: 24 of the filter's 98). This is the "simple" form the digest's conditional update uses, not the
-// Joseph form: with s = 0 the Joseph form (I - K C) P (I - K C)' equals it only when K is the
-// optimal gain, and it costs two n_x^3 products per update; the symmetric downdate keeps P+
-// symmetric, and its positive semidefiniteness is tested (tests/nav/test_fixed_solution.cpp).
+// subtracted term symmetric positive semidefinite by construction), computed on the lower triangle
+// and mirrored: P+ is exactly symmetric. Only the columns of C with a non-zero entry enter C P and
+// C x (a fix touches the ambiguity states only: 24 of the filter's 98). This is the "simple" form
+// of the conditional update, not the Joseph form: with s = 0 the Joseph form (I - K C) P (I - K C)'
+// equals it only when K is the optimal gain, and it costs two n_x^3 products per update; the
+// symmetric downdate keeps P+ symmetric, and its positive semidefiniteness is tested
+// (tests/nav/test_fixed_solution.cpp).
 //
 // Numerically positive definite S: Eigen's LLT succeeds and every squared pivot L_jj^2 exceeds
 // kRelativePivot max_j S_jj. Below that, the solve would lose most digits (redundant fixed

@@ -1,6 +1,6 @@
 #pragma once
 // Discrete-time transition and process noise of the empirical-acceleration chain of the navigation
-// filter (navigation digest sec. 5.2), one axis:
+// filter (docs/algorithms/cdgps-filter.md#empirical-accelerations), one axis:
 //
 //   r' = v,  v' = a,  a' = -a / tau + w,  w white with PSD q = 2 sigma^2 / tau,
 //
@@ -19,8 +19,10 @@
 //   h_rv = x^2/2 - x (1 - E1) + (1 - E1) - (1 - E2) / 2
 //   h_rr = x^3/3 - x^2 + x (1 - 2 E1) + (1 - E2) / 2,        E1 = e^-x, E2 = e^-2x.
 //
-// These are the digest's closed forms (re-derived here; they agree term by term; h_va is the
-// digest's (1 - E1) - (1 - E2)/2 rewritten with 1 - E2 = (1 - E1)(1 + E1)).
+// These are the closed forms of the integrated first-order Gauss-Markov chain of dynamic model
+// compensation (Tapley, Schutz & Born 2004, Statistical Orbit Determination, ch. 4), derived in
+// docs/algorithms/cdgps-filter.md#empirical-accelerations; h_va, usually written
+// (1 - E1) - (1 - E2)/2, is rewritten here with 1 - E2 = (1 - E1)(1 + E1).
 //
 // Numerical evaluation (why: the closed forms of h_vv, h_ra, h_rv, h_rr and Phi_ra cancel
 // catastrophically for small x; h_rr loses about log10(40 / x^4) digits, all of them at x = 1e-4,

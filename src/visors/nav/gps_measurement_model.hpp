@@ -1,6 +1,7 @@
 #pragma once
-// The filter's two GPS measurements as functions of its 98 states (navigation digest sec. 4.3,
-// 5.3), built from the range predictions of nav/gps_range_model.hpp:
+// The filter's two GPS measurements as functions of its 98 states
+// (docs/algorithms/gnss-measurements.md#graphic, #single-differences), built from the range
+// predictions of nav/gps_range_model.hpp:
 //
 //   GRAPHIC of the local receiver k, satellite j (half the sum of code and phase: ionosphere-free
 //   to first order, code noise halved, one float ambiguity B per track, in metres):

@@ -10,11 +10,11 @@ namespace visors::nav {
 namespace {
 
 constexpr double kC = core::kSpeedOfLight;
-constexpr int kLightTimeIterations = 3;  // digest 4.5: increments 8e-3, 3e-8, 9e-14 s
+constexpr int kLightTimeIterations = 3;  // each scales the change by |e.V_sat| / c <= 1.3e-5
 
 // Satellite position and inertial velocity, GCRF, at t_tx = t + offset (offset = t_r - tau - t
 // [s]): its ITRF state at t_tx, rotated about the pole by the Earth's turn omega (t - t_tx) into
-// the ITRF axes of the epoch t (Sagnac: the digest's R3(omega tau) at t_r, plus the turn over
+// the ITRF axes of the epoch t (Sagnac: R3(omega tau) at t_r, plus the turn over
 // t_r - t), then to GCRF with the matrix of t. The ephemeris is evaluated at t_tx rounded to the
 // nanosecond (GpsTime) and moved linearly over the rest, so rho is smooth in the clock state.
 // Inertial velocity: the Earth-fixed one plus omega x r.

@@ -1,20 +1,20 @@
 #pragma once
 // The geometric range of one GPS satellite from one receiver's antenna phase centre, as the
 // navigation filter predicts it, with its partial derivatives with respect to that receiver's
-// filter states (navigation digest sec. 4.3-4.5, 4.7, 5.3): the common core of the GRAPHIC and
-// SDCP measurement models (nav/gps_measurement_model.hpp).
+// filter states (docs/algorithms/gnss-measurements.md#range-model): the common core of the GRAPHIC
+// and SDCP measurement models (nav/gps_measurement_model.hpp).
 //
 // Instants. The filter's epoch t is the measurements' time tag taken as GPS time. The receiver
 // time-tags its measurements with its own clock, so they were taken at the true reception
 // instant t_r = t - c dt / c (c dt: the receiver clock offset state); the satellite transmitted
 // at t_tx = t_r - rho / c. 1 us of clock offset is 7.6 mm of LEO motion, so t_r is modelled,
-// not t (digest 4.5 pitfall).
+// not t.
 //
 // Geometry, inertial (GCRF):
 //   R(t_r) = r(t) + v(t) (t_r - t) + C_body->gcrf (arp + pco + p)   receiver antenna phase centre
 //   S(t_tx) = T_itrf->gcrf(t) R3(omega_E (t - t_tx)) s_itrf(t_tx)     satellite, broadcast ephemeris,
-//        rotated by the Earth's turn from t_tx to t (the Sagnac term of digest 4.5 plus the turn
-//        over t_r - t: the same as the digest's matrix of t_r with R3(omega_E tau));
+//        rotated by the Earth's turn from t_tx to t (the Sagnac rotation R3(omega_E tau) plus the
+//        turn over t_r - t: the same as the ITRF -> GCRF matrix of t_r with R3(omega_E tau));
 //   rho = |S(t_tx) - R(t_r)|, iterated on tau (three iterations converge below 1e-12 s).
 // The acceleration over t_r - t (< ~1 ms: < 4 um) is neglected.
 //
@@ -23,7 +23,7 @@
 // unit line of sight receiver -> satellite and V_s, V_r the inertial velocities, so
 //   d rho/d r = -e'/D,  d rho/d v = -e' (t_r - t)/D,  d rho/d p = -e' C/D,
 //   d rho/d(c dt) = -e.(V_s - V_r)/(c D)  (through t_r: the range rate over c, up to 2.5e-5),
-//   with D = 1 + e.V_s/c (about 1 +- 1.3e-5: the -e' of the digest is off by that much).
+//   with D = 1 + e.V_s/c (about 1 +- 1.3e-5: the usual d rho/d r = -e' is off by that much).
 // SI units here; the filter scales them to its state units (nav/navigation_state.hpp).
 
 #include <Eigen/Core>

@@ -4,7 +4,7 @@
 //   z_1..z_m minimising (a - z)' Q^-1 (a - z),
 // their squared norms, the ratio s_2 / s_1, the bootstrapped success rate of the decorrelated
 // problem and, for partial fixing, the largest subset of decorrelated combinations whose
-// success rate reaches a required level (navigation digest sec. 6.1-6.4).
+// success rate reaches a required level (docs/algorithms/ambiguity-resolution.md).
 //
 // Steps, each in its own file: validation (here), removal of the integer parts of a (values near
 // 1e9 cycles stay exact), decorrelate (lambda_reduction.hpp), search_integer_candidates

@@ -60,7 +60,7 @@ void gauss_transform(Index i, Index j, Decorrelation& out) {
 }
 
 // Permutation of neighbours j and j+1 with the new conditional variance delta of j+1 (de Jonge &
-// Tiberius 1996, eq. 3.19-3.21; navigation digest sec. 6.2 step 2).
+// Tiberius 1996, eq. 3.19-3.21; docs/algorithms/ambiguity-resolution.md#lambda-reduction).
 void permute(Index j, double delta, Decorrelation& out) {
   const Index n = out.n;
   AmbiguityMatrix& L = out.L;
@@ -98,16 +98,17 @@ struct DirtyRows {
   void reduced(Index j, Index n) { first_dirty(j) = n; }
 };
 
-// LAMBDA reduction with lazy Gauss transformations (de Jonge & Tiberius 1996; navigation digest
-// sec. 6.2): column j is (re)reduced only when a permutation at or below j may have changed it,
-// and the walk restarts after each permutation at p from p+1 (the first pair whose decision it can
-// change; the original restarts from n-2 and finds nothing to do above p+1). Only the rows a
-// permutation may have spoilt are re-reduced (DirtyRows), which leaves exactly the same sequence
-// of non-trivial transformations as the full re-reduction and a quarter of its cost (2026-11).
-// The variant of MLAMBDA (only the subdiagonal reduced before each decision, one size reduction
-// at the end) was tried: 40 % fewer instructions, but L grows between size reductions and
-// L' D L lost up to 3e-8 of Z' Q Z on condition-1e6 problems (tests/nav, 2026-11); this order
-// keeps it at round-off. The relative margin keeps rounding from permuting a pair back and forth.
+// LAMBDA reduction with lazy Gauss transformations (de Jonge & Tiberius 1996;
+// docs/algorithms/ambiguity-resolution.md#lambda-reduction): column j is (re)reduced only when a
+// permutation at or below j may have changed it, and the walk restarts after each permutation at p
+// from p+1 (the first pair whose decision it can change; the original restarts from n-2 and finds
+// nothing to do above p+1). Only the rows a permutation may have spoilt are re-reduced (DirtyRows),
+// which leaves exactly the same sequence of non-trivial transformations as the full re-reduction
+// and a quarter of its cost (2026-11). The variant of MLAMBDA (only the subdiagonal reduced before
+// each decision, one size reduction at the end) was tried: 40 % fewer instructions, but L grows
+// between size reductions and L' D L lost up to 3e-8 of Z' Q Z on condition-1e6 problems
+// (tests/nav, 2026-11); this order keeps it at round-off. The relative margin keeps rounding from
+// permuting a pair back and forth.
 void reduce(long max_permutations, Decorrelation& out) {
   constexpr double kMargin = 1e-12;
   const Index n = out.n;

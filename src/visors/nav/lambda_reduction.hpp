@@ -6,14 +6,14 @@
 //
 // Factorisation from the last index backwards, Q = L' diag(d) L with L unit lower triangular:
 // d(n-1) is the variance of the last ambiguity, d(i) the variance of ambiguity i conditioned on
-// i+1..n-1 (navigation digest sec. 6.2). The pivoting puts, at every step, the ambiguity with the
-// smallest conditional variance last, so the search (which starts at the last index) starts from
-// the best determined ones. The reduction then applies integer Gauss transformations (|L(i,j)| <=
-// 1/2 for i > j) and permutations of neighbours j, j+1 while that lowers d(j+1)
-// (d(j) + L(j+1,j)^2 d(j+1) < d(j+1)), so the d's end as close to ascending from the back as the
-// lattice allows. Every operation is unimodular: Z (integer, det +-1) gives z = Z' a,
-// Q_z = Z' Q Z = L' diag(d) L, and maps back exactly, a = Z^-T z, with no linear solve. Z is
-// kept as its sequence of elementary operations (unimodular_transform.hpp).
+// i+1..n-1 (docs/algorithms/ambiguity-resolution.md#ltdl-factorisation). The pivoting puts, at
+// every step, the ambiguity with the smallest conditional variance last, so the search (which
+// starts at the last index) starts from the best determined ones. The reduction then applies
+// integer Gauss transformations (|L(i,j)| <= 1/2 for i > j) and permutations of neighbours j, j+1
+// while that lowers d(j+1) (d(j) + L(j+1,j)^2 d(j+1) < d(j+1)), so the d's end as close to
+// ascending from the back as the lattice allows. Every operation is unimodular: Z (integer, det
+// +-1) gives z = Z' a, Q_z = Z' Q Z = L' diag(d) L, and maps back exactly, a = Z^-T z, with no
+// linear solve. Z is kept as its sequence of elementary operations (unimodular_transform.hpp).
 //
 // Bounded work: the number of permutations is capped (max_permutations); reaching the cap leaves
 // a valid, only less decorrelated Z (the search stays exact, it may take more steps) and is

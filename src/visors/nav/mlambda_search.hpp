@@ -1,7 +1,7 @@
 #pragma once
 // Integer least-squares search for the m best integer vectors in the decorrelated space: the
 // shrinking-ellipsoid Schnorr-Euchner enumeration of MLAMBDA (Chang, Yang & Zhou 2005, J. Geodesy
-// 79:552-565, sec. 4; navigation digest sec. 6.3).
+// 79:552-565, sec. 4; docs/algorithms/ambiguity-resolution.md#mlambda-search).
 //
 // Given Q_z = L' diag(d) L (L unit lower triangular, factorised from the back) and the float
 // z_hat, it minimises sum_i (z_hat_{i|I} - z_i)^2 / d_i = (z_hat - z)' Q_z^-1 (z_hat - z), where

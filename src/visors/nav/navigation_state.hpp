@@ -1,7 +1,8 @@
 #pragma once
 // The state of the carrier-phase differential GPS navigation filter that each spacecraft runs on
-// board, estimating both (mission paper sec. 4.2; navigation digest sec. 5.1, extended by the
-// multipath bank M): 98 states in a fixed layout, the same on both spacecraft, DSC block first:
+// board, estimating both (the 74 states of Guffanti et al., AAS 23-149, 2023, sec. 4.2, eq. (1),
+// extended by the multipath bank M; docs/algorithms/cdgps-filter.md#state): 98 states in a fixed
+// layout, the same on both spacecraft, DSC block first:
 //
 //   [ DSC: r(3) v(3) a_emp(3) c dt(1) p(3) | OSC: r(3) v(3) a_emp(3) c dt(1) p(3) |
 //     B(24): the local receiver's GRAPHIC ambiguities | N(24): SDCP ambiguities, OSC minus DSC |
@@ -18,10 +19,11 @@
 // Ambiguity slots are assigned to satellites as they rise, set and slip (nav/ambiguity_slots.hpp).
 //
 // Units: chosen so the diagonal of P spans less than ~1e10 from a converged relative solution to
-// the priors (digest sec. 5.1: in SI it spans 1e-16 (m/s^2)^2 to 1e4 m^2, beyond double
-// precision's reach in the Joseph products): velocity in mm/s, empirical acceleration in um/s^2,
-// phase-centre offset error and multipath in mm; positions, clocks and B in m, N in cycles. to_si() / from_si()
-// convert at the filter's edges; measurement partials and transitions are scaled by unit().
+// the priors (in SI it spans 1e-16 (m/s^2)^2 to 1e4 m^2, beyond double precision's reach in the
+// Joseph products; docs/algorithms/cdgps-filter.md#units-and-scaling): velocity in mm/s, empirical
+// acceleration in um/s^2, phase-centre offset error and multipath in mm; positions, clocks and B in
+// m, N in cycles. to_si() / from_si() convert at the filter's edges; measurement partials and
+// transitions are scaled by unit().
 
 #include <Eigen/Core>
 

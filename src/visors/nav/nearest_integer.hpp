@@ -1,6 +1,6 @@
 #pragma once
 // Nearest integer of a double, inlined: std::round is an out-of-line libm call on baseline x86-64
-// (no SSE4.1 roundsd), which took 15 % of a 24-ambiguity resolution (perf, 2026-11). Adding and
+// (no SSE4.1 roundsd), and the search rounds at every step. Adding and
 // subtracting 1.5 x 2^52 leaves the nearest integer (ties to even) for |x| < 2^51, exactly; larger
 // magnitudes are already integers in double precision or go to std::round.
 

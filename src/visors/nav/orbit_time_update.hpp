@@ -1,5 +1,6 @@
 #pragma once
-// The dynamic part of the filter's time update for one spacecraft (navigation digest sec. 5.2):
+// The dynamic part of the filter's time update for one spacecraft
+// (docs/algorithms/cdgps-filter.md#time-update):
 //
 // Mean: r' = v, v' = a_model(t, r, v) + R_rtn->gcrf(r, v) a_emp(t), integrated with classical RK4
 // in sub-steps of at most max_step; the on-board force model (dynamics::ForceModel, configured as
@@ -7,12 +8,13 @@
 // gives a_model, and the empirical acceleration follows its Gauss-Markov mean,
 // a_emp(t) = a_emp(t0) exp(-(t - t0)/tau), set on the model at each stage.
 //
-// Transition of (r [m], v [m/s], a_emp RTN [m/s^2]) over dt: the short-step approximation of digest
-// 5.2 (first order in the point-mass gravity gradient G = (mu/r^3)(3 e e' - I)), with G taken
-// linear between the step's two ends instead of constant at its start:
+// Transition of (r [m], v [m/s], a_emp RTN [m/s^2]) over dt: a short-step approximation, first
+// order in the point-mass gravity gradient G = (mu/r^3)(3 e e' - I)
+// (docs/algorithms/cdgps-filter.md#state-transition), with G taken linear between the step's two
+// ends instead of constant at its start:
 //   Phi_rr = I + dt^2 (G0/3 + G1/6),  Phi_rv = I dt + dt^3 (G0 + G1)/12,
 //   Phi_vr = dt (G0 + G1)/2,          Phi_vv = I + dt^2 (G0/6 + G1/3),
-// (the digest's G0 alone is off by ~1e-6 in Phi_rr over 10 s, as e turns by v dt / r; this leaves
+// (G0 held over the step is off by ~1e-6 in Phi_rr over 10 s, as e turns by v dt / r; this leaves
 // the second order, ~1e-9; tests/nav/test_orbit_time_update.cpp), and
 //   Phi_ra = R [tau dt - tau^2 (1 - E1)],  Phi_va = R tau (1 - E1),  Phi_aa = E1 I,  E1 = e^(-dt/tau),
 // with the RTN -> GCRF rotation R taken linear between the ends ((2 R0 + R1)/3 and (R0 + R1)/2: the

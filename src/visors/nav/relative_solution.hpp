@@ -1,5 +1,6 @@
 #pragma once
-// What the navigation filter hands to control and safety (mission paper sec. 4.2-4.3; the gnc
+// What the navigation filter hands to control and safety (Guffanti et al., AAS 23-149, 2023,
+// sec. 4.2-4.3; docs/algorithms/cdgps-filter.md#relative-solution; the gnc
 // layer's NavigationSolution): both spacecraft's centres of mass, the OSC's state relative to the
 // DSC in the DSC's RTN frame (core::relative_state_rtn: position, and its rate seen in the
 // rotating frame), and the 6x6 covariance of that relative state,

@@ -1,17 +1,16 @@
 #pragma once
 // Sequential scalar measurement update of the navigation filter in Joseph form, with an innovation
-// gate (navigation digest sec. 5.5 "Joseph update", "Sequential scalar updates"; sec. 5.3
-// "Editing"). The measurement noise is diagonal (one scalar per GRAPHIC and per SDCP, digest
-// sec. 5.3), so an epoch's measurements are processed one at a time: O(n^2) each, no matrix
-// inverse, and every scalar gated on its own.
+// gate (docs/algorithms/cdgps-filter.md#sequential-scalar-updates). The measurement noise is
+// diagonal (one scalar per GRAPHIC and per SDCP), so an epoch's measurements are processed one at
+// a time: O(n^2) each, no matrix inverse, and every scalar gated on its own.
 //
 // For one scalar y = h x + v, v ~ N(0, r), innovation nu = y - h(x):
 //   u = P h',  s = h u + r,  k = u / s,  x+ = x + k nu,
-//   P+ = (I - k h) P (I - k h)' + k r k'   (Joseph; Bucy & Joseph 1968, as in the digest)
+//   P+ = (I - k h) P (I - k h)' + k r k'   (Joseph; Bucy & Joseph 1968)
 // The Joseph form is the covariance of the updated error for ANY gain k, a congruence of P plus a
 // positive semidefinite term, so it stays symmetric positive semidefinite when k departs from the
 // optimum (round-off in k, a gated or consider-state gain); the short form (I - k h) P equals it
-// only for the optimal k and loses definiteness otherwise (digest sec. 5.5, 5.7-3).
+// only for the optimal k and loses definiteness otherwise (tests/nav/test_scalar_update.cpp).
 // Computed by rank-one updates in O(n^2), never forming I - k h nor a product of n x n matrices:
 //   M  = (I - k h) P        = P - k u'          (h P = u' for a symmetric P)
 //   w  = M h'               = u - (h u) k
@@ -19,11 +18,12 @@
 // as one symmetric rank-two change over the lower triangle, mirrored (exactly symmetric): about
 // n^2 multiply-adds, and u over the non-zero entries of h only (~20 of 98 for a GPS scalar).
 //
-// Gate: the update is applied only when |nu| <= gate_sigmas sqrt(s) (digest sec. 5.3: k ~ 4-5,
-// the SDCP cycle-slip detector); otherwise x and P are untouched and the normalised innovation is
-// reported. Invalid input (NaN or infinity in x, h, nu, r, gate_sigmas or the columns of P that h
-// touches, r <= 0, gate_sigmas <= 0, s <= 0 from a P that is not positive semidefinite) is
-// refused the same way: no NaN reaches x or P (one elsewhere in P stays where it is). Allocates nothing: the caller owns the workspace.
+// Gate: the update is applied only when |nu| <= gate_sigmas sqrt(s) (4-5 sigmas; for the SDCP the
+// cycle-slip detector, docs/algorithms/cdgps-filter.md#cycle-slips); otherwise x and P are
+// untouched and the normalised innovation is reported. Invalid input (NaN or infinity in x, h, nu,
+// r, gate_sigmas or the columns of P that h touches, r <= 0, gate_sigmas <= 0, s <= 0 from a P that
+// is not positive semidefinite) is refused the same way: no NaN reaches x or P (one elsewhere in P
+// stays where it is). Allocates nothing: the caller owns the workspace.
 
 #include <string_view>
 
@@ -67,7 +67,7 @@ ScalarUpdateResult scalar_update(NavVector& x, NavMatrix& P, const NavRow& h, do
 /// The same update reading and writing only the lower triangle of P (the strict upper triangle is
 /// left stale), for a run of updates: mirror_lower(P) once after the run, before anything reads
 /// the whole matrix. Mirroring after every scalar, as scalar_update does, is a strided pass over
-/// half the matrix per scalar (bench_nav filter epoch: 88 us with it, 80 us without).
+/// half the matrix per scalar, which a run of updates saves (bench/bench_nav.cpp).
 ScalarUpdateResult scalar_update_lower(NavVector& x, NavMatrix& P, const NavRow& h, double innovation, double variance,
                                        double gate_sigmas, ScalarUpdateWorkspace& workspace);
 

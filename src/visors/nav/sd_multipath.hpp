@@ -3,14 +3,14 @@
 // state per SDCP slot (bank M of nav/navigation_state.hpp, in mm), so that the filter carries the
 // multipath's correlation from one epoch to the next instead of treating it as white.
 //
-// Why: a patch antenna's carrier multipath changes as the line of sight turns in the antenna
-// frame, over tens of seconds. Weighed as white noise, N epochs of it were taken for N independent
-// ones: the relative position followed the multipath (10 mm RMS, 9 of it radial, against 1.7-5.7
-// mm without it) and the covariance was optimistic (docs/navigation-multipath.md). Inflating the
-// weight instead (sdcp_correlation_inflation) trades that for a loss of the phase's short-term
-// precision. A state per single difference is the exact model of a first-order error (state
-// augmentation for coloured measurement noise: Brown & Hwang, Introduction to Random Signals and
-// Applied Kalman Filtering, the chapter on coloured measurement noise).
+// Why: a patch antenna's carrier multipath changes as the line of sight turns in the antenna frame,
+// over tens of seconds. Weighed as white noise, N epochs of it count as N independent ones: the
+// relative position follows the multipath and the covariance is optimistic
+// (docs/navigation-multipath.md). Inflating the weight instead (sdcp_correlation_inflation) trades
+// that for a loss of the phase's short-term precision. A state per single difference is the exact
+// model of a first-order error (state augmentation for coloured measurement noise: Brown & Hwang,
+// Introduction to Random Signals and Applied Kalman Filtering, the chapter on coloured measurement
+// noise).
 //
 // Model, per slot s with SD multipath m (OSC minus DSC, the two receivers' independent errors):
 //

@@ -4,9 +4,9 @@
 // columns and integer Gauss transformations Z(:,j) -= mu Z(:,i).
 //
 // Why: the reduction of a 24-ambiguity problem does some 700-3,000 such operations. Applied to
-// an explicit n x n Z and to its inverse they were two thirds of the reduction's column work (two
-// length-n updates per operation; callgrind, 2026-11), while what every resolution needs is only
-// Z' a (once) and Z^-T z for m candidates: O(1) per operation and vector here. The matrices are
+// an explicit n x n Z and to its inverse each costs two length-n updates, while what every
+// resolution needs is only Z' a (once) and Z^-T z for m candidates: O(1) per operation and vector
+// here. The matrices are
 // formed on request (matrix(), inverse_transpose_matrix()), by the callers that need them: the
 // fixed-solution constraints of an accepted fix, tools and tests.
 //

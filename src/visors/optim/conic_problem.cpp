@@ -11,7 +11,7 @@ std::string size_text(Eigen::Index rows, Eigen::Index cols) {
 }
 
 // Takes any dense expression by reference: a `const MatrixXd&` parameter would copy every vector
-// passed to it (one heap allocation each; issue 13).
+// passed to it (one heap allocation each, which solve() must not make).
 template <typename Derived>
 bool all_finite(const Eigen::DenseBase<Derived>& m) {
   return m.size() == 0 || m.allFinite();

@@ -29,9 +29,8 @@ struct ConicSettings {
   double dynamic_delta = 1e-7;
   /// Maximum iterative refinement steps against the unregularised, unreduced KKT system (a solve
   /// stops early once the relative residual is below refinement_tolerance or a step no longer
-  /// halves it). 1e-12 saves 6 % of the instructions of 1e-13 with margin: 1e-10 still keeps the
-  /// CVXOPT agreement of all 320 oracle instances but breaks a restricted dual SOCP of the
-  /// reachable-set planner (numerical_error in the closed-loop MPC test); 1e-8 loses the oracle.
+  /// halves it). 1e-12 keeps the CVXOPT agreement of tests/optim/test_conic_oracle.cpp and the
+  /// reachable-set planner's restricted dual SOCPs (closed-loop MPC test) with margin.
   int refinement_steps = 10;
   double refinement_tolerance = 1e-12;
   /// Ruiz equilibration passes over [A; G] (0 disables it).

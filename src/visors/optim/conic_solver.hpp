@@ -19,7 +19,7 @@
 //   W_k squared near the optimum; there the dense LU fallback becomes rare.
 // - When every column is separable (the planners' minimum-fuel problems), the whole KKT solve is
 //   the p x p Schur complement of separable_kkt.hpp, unregularised and exact.
-// Stopping tests and tolerances: conic_settings.hpp.
+// Stopping tests and tolerances: conic_settings.hpp. Notes: docs/algorithms/control.md#conic-solver.
 //
 // All storage is sized by create(); solve() allocates nothing on accepted data (a rejected input
 // builds its error message), and may be called again with new data of the same dimensions.

@@ -23,9 +23,10 @@ std::string delta_v_figure(const RunData& run);
 /// The true differential along-track drag and the active spacecraft's on-board estimate of it.
 std::string drag_figure(const RunData& run);
 std::string mode_figure(const RunData& run);
-/// The mission paper's navigation figures (on-board navigation runs; empty otherwise): each
-/// filter's relative antenna position and velocity errors in RTN, the empirical accelerations
-/// it estimates, and the fraction of its epochs fixed, with the observations marked.
+/// The navigation figures of Guffanti et al., AAS 23-149, 2023, sec. 5 (on-board navigation runs;
+/// empty otherwise): each filter's relative antenna position and velocity errors in RTN, the
+/// empirical accelerations it estimates, and the fraction of its epochs fixed, with the
+/// observations marked.
 std::string navigation_figure(const RunData& run);
 
 /// All eight, in order.

@@ -1,8 +1,9 @@
 #pragma once
-// Single-impulse escape maneuver (digest sec. 6.3; issue: "a single impulse, as soon as allowed
-// after the trigger, reaching RN-plane separation from the e/i-vector conditions and a relative
-// semi-major axis giving a prescribed along-track drift, with the 3-sigma uncertainty accounted
-// for (5 m of a*da drifts 47 m per orbit)").
+// Single-impulse escape maneuver (Guffanti et al., AAS 23-149, 2023, sec. 4.3, Algorithm #4;
+// docs/algorithms/safety.md#escape-maneuver): a single impulse, as soon as allowed after the
+// trigger, reaching RN-plane separation from the e/i-vector conditions (Koenig & D'Amico, JGCD
+// 41(8) 2018) and a relative semi-major axis giving a prescribed along-track drift, with the
+// 3-sigma uncertainty accounted for (5 m of a*da drifts 47 m per orbit).
 //
 // Conditions imposed on the mean ROE just after the burn (all linear in dv_rtn through the
 // eccentric control input matrix Gamma of astro::control_input_matrix at the burn):
@@ -21,15 +22,17 @@
 // first one passing (iii) is kept. The burn time is the first time t_earliest + k time_step
 // (within search_window_orbits) at which a candidate passes: "as soon as allowed".
 //
-// Digest sec. 6.3 checks (tests/safety/test_escape_maneuver.cpp): the near-circular relations
-// dv_T = (n/2)(a da_target - a da), dv_R/n = -(d x de')/(d x e_R), dv_N/n = -(d x di)/(d x e_N)
-// are the e = 0 limit of the system above (this code uses the eccentric Gamma instead). Test 6-b's
-// "no R or N component is needed" holds only to the 0.38 deg by which the science de and di are
-// apart: exact parallelism costs dv_R = -0.26 mm/s (dv_T = -1.319 mm/s; |a de| 37.22 m as the
-// digest says). Its "RN min 18.66 m" is the near-circular static value; the eccentric J2 model
-// over 1.5 orbits gives 18.53 m. The digest's J2 drift -(1.5 n + 3.5 kappa E P) T a da = 46.98 m
-// is the da term only; the STM's dix coupling (-kappa F S tau dix) brings the science escape to
-// 46.82 m/orbit (numerical J2 propagation: 46.83 m/orbit).
+// The near-circular relations dv_T = (n/2)(a da_target - a da), dv_R/n = -(d x de')/(d x e_R),
+// dv_N/n = -(d x di)/(d x e_N) are the e = 0 limit of the system above (this code uses the
+// eccentric Gamma instead; docs/algorithms/safety.md#escape-maneuver). Escape from the science
+// orbit (worked example in docs/algorithms/safety.md#worked-example-escape-from-the-science-orbit;
+// tests/safety/test_escape_maneuver.cpp): the tangential burn at u = phi_e + pi needs no R or N
+// component only up to the 0.38 deg by which the science de and di are apart: exact parallelism
+// costs dv_R = -0.26 mm/s (dv_T = -1.319 mm/s; |a de| 37.22 m). The RN minimum after the burn is
+// 18.53 m in the eccentric J2 model over 1.5 orbits (18.66 m near-circular, static). The da term
+// of the J2 drift, (1.5 n + 3.5 kappa E P) T a da, is 46.98 m per orbit; the STM's dix coupling
+// (-kappa F S tau dix) brings the science escape to 46.82 m/orbit (numerical J2 propagation:
+// 46.83 m/orbit).
 
 #include <Eigen/Core>
 

@@ -1,7 +1,8 @@
 #pragma once
-// Passive-safety evaluation of a relative orbit given by its MEAN quasi-nonsingular ROE (mission
-// paper, Guffanti et al. 2023: the separation in the radial-normal plane, or in 3D, must stay
-// above epsilon at q sigma over a horizon of T chief orbits).
+// Passive-safety evaluation of a relative orbit given by its MEAN quasi-nonsingular ROE
+// (Guffanti et al., AAS 23-149, 2023, sec. 2, safety requirements: the separation in the
+// radial-normal plane, or in 3D, must stay above epsilon at q sigma over a horizon of T chief
+// orbits; docs/algorithms/safety.md).
 //
 // Model. For t in [0, T]: roe(t) = Phi_J2(chief_mean_t0, t) roe0 (KGD17 eq. A6, always evaluated
 // from t0, never chained), chief(t) = secular-J2 mean propagation of the chief, and the relative
@@ -26,13 +27,13 @@
 //
 // No heap allocation per call (fixed-size Eigen only); invalid input returns an Error.
 //
-// Digest cross-checks (tests/safety/test_passive_safety.cpp): the sec. 6.1 closed form is right
-// (re-derived below; equals 2e6-point sampling to 5e-10 m); its Test 6-a numbers reproduce
-// (18.91598 m closed form, 18.827 m near-circular sampling with a da = -2.62 m). The full model
-// here gives 18.734 m for the science orbit over 1.5 orbits (eccentric map + J2 + da) and
-// 199.20 m for the 200 m standby orbit. Note: the brief's "unsafe orbit (parallel e/i vectors)"
-// is inverted: parallel e/i is the passively safe (DM06) geometry; PERPENDICULAR e/i vectors
-// make the radial and normal separations vanish together.
+// Checks (tests/safety/test_passive_safety.cpp): the closed form below (re-derived there) equals
+// 2e6-point sampling to 5e-10 m; for the science orbit it gives 18.91598 m, and near-circular
+// sampling with a da = -2.62 m gives 18.827 m (worked example in
+// docs/algorithms/safety.md#worked-example-the-science-orbit). The full model here gives 18.734 m
+// for the science orbit over 1.5 orbits (eccentric map + J2 + da) and 199.20 m for the 200 m
+// standby orbit. Parallel e/i vectors are the passively safe geometry (D'Amico & Montenbruck
+// 2006); PERPENDICULAR e/i vectors make the radial and normal separations vanish together.
 
 #include <Eigen/Core>
 
@@ -56,7 +57,7 @@ struct SafetyAssessment {
 };
 
 /// Closed-form minimum RN separation of a near-circular relative orbit with da = 0 and constant
-/// ROE (D'Amico & Montenbruck 2006; digest sec. 6.1):
+/// ROE (D'Amico & Montenbruck 2006; docs/algorithms/safety.md#closed-form-rn-minimum):
 ///   a sqrt(2) |de . di| / sqrt(|de|^2 + |di|^2 + |de + di| |de - di|)   [m],
 /// with de = (dex, dey), di = (dix, diy) and `a` the chief semi-major axis [m]. Derivation check:
 /// r_R = -a|de| cos(u - phi), r_N = a|di| sin(u - theta) give min |r|^2 = (S - D)/2 with

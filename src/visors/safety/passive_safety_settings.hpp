@@ -1,7 +1,9 @@
 #pragma once
-// Configuration of the passive-safety check and the escape decision (mission paper: checked every
-// 10 s over a 1.5-orbit horizon at 3 sigma, epsilon 5 m, RN plane). Every value is a parameter
-// with this documented default.
+// Configuration of the passive-safety check and the escape decision (Guffanti et al., AAS 23-149,
+// 2023, Tables 3 and 5: checked every 10 s at 3 sigma, epsilon 5 m, RN plane; its Table 5 gives a
+// horizon of 1.5 h, this default is 1.5 chief orbits, the longer and more conservative reading;
+// docs/algorithms/safety.md#mission-settings). Every value is a parameter with this documented
+// default.
 
 #include "visors/core/status.hpp"
 
@@ -16,8 +18,8 @@ struct PassiveSafetySettings {
   SafetyPlane plane = SafetyPlane::kRadialNormal;
   double check_period_s = 10.0;    // how often the flight component runs the check [s]
   // Grid of the minimum search (each grid minimum refined by golden section) [per chief orbit].
-  // 120 (3 deg): the separation's minima are half an orbit apart; over the default campaign the
-  // margins equal those of a 360 grid to 1e-13 m (15,082 checks compared), at half the cost.
+  // 120 (3 deg): the separation's minima are about half an orbit apart, so every lobe has grid
+  // points and the refinement finds its minimum (docs/algorithms/safety.md#horizon-evaluation).
   int samples_per_orbit = 120;
 };
 

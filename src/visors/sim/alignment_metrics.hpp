@@ -1,10 +1,10 @@
 #pragma once
-// Observation alignment metrics (mission paper, requirements; docs/conventions.md "Alignment"),
-// from the TRUE positions and velocities of the payload reference points (photon-sieve centre on
-// the OSC, detector aperture centre on the DSC) over the observation window. With s the unit
-// apparent direction of the commanded target from the DSC (sim/sky_truth.hpp: light time,
-// aberration by the DSC's velocity, the offset on the solar disc), d = p_OSC - p_DSC and
-// w = v_OSC - v_DSC (inertial):
+// Observation alignment metrics (Guffanti et al., AAS 23-149, 2023, sec. 2;
+// docs/requirements.md#science-alignment-requirements), from the TRUE positions and velocities of
+// the payload reference points (photon-sieve centre on the OSC, detector aperture centre on the
+// DSC) over the observation window. With s the unit apparent direction of the commanded target
+// from the DSC (sim/sky_truth.hpp: light time, aberration by the DSC's velocity, the offset on the
+// solar disc), d = p_OSC - p_DSC and w = v_OSC - v_DSC (inertial):
 //   lateral error     |d - (d.s) s|        <= 18 mm
 //   focus error       | d.s - 40 m |       <= 15 mm
 //   lateral velocity  |w - (w.s) s|        <= 0.2 mm/s

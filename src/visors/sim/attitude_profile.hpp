@@ -67,9 +67,11 @@ struct CalibrationYaw {
   double margin_s = 300.0;    // [s] clearance from observation windows
 };
 
+/// Defaults (docs/requirements.md#gps-receiver-and-sensors): the slew rate of
+/// Guffanti et al., AAS 23-149, 2023 ("paper"), sec. 5; the settling time is this project's.
 struct AttitudeSettings {
-  double slew_rate_radps = 1.5 * core::kDegToRad;  // eigen-axis slew rate [rad/s] (issue default)
-  double settling_s = 30.0;                        // settling time after a slew [s] (issue default)
+  double slew_rate_radps = 1.5 * core::kDegToRad;  // eigen-axis slew rate [rad/s] (paper, sec. 5)
+  double settling_s = 30.0;                        // settling time after a slew [s] (project choice)
   CalibrationYaw calibration{};                    // none by default
 
   /// Ok, or the offending field by name.

@@ -1,10 +1,10 @@
 #pragma once
-// The mission-campaign scenario of `visors run` (TOML; data/scenarios/campaign.toml is the
-// default, the mission paper's test case): the chief orbit, the initial formation, the campaign
-// timeline (standby, then science with N attempts, then back to standby), navigation, propulsion,
-// crosslink, the two spacecraft, the truth forces, faults and outputs. Every key is optional
-// (defaults below and in the structs they fill); unknown keys and out-of-range values are errors
-// naming the dotted key.
+// The mission-campaign scenario of `visors run` (TOML; data/scenarios/campaign.toml is the default,
+// the test case of Guffanti et al., AAS 23-149, 2023, Table 5): the chief orbit, the initial
+// formation, the campaign timeline (standby, then science with N attempts, then back to standby),
+// navigation, propulsion, crosslink, the two spacecraft, the truth forces, faults and outputs.
+// Every key is optional (defaults below and in the structs they fill); unknown keys and
+// out-of-range values are errors naming the dotted key.
 
 #include <cstdint>
 #include <string>
@@ -32,8 +32,8 @@ enum class NavigationMode {
 };
 
 struct NavigationErrorSettings {
-  /// 3D 1-sigma errors of the ideal navigation (issue 6 defaults: relative 1 cm, 50 um/s;
-  /// absolute 5 m, 1 cm/s; the DiGiTaL IAR-on figures of the mission paper's table).
+  /// 3D 1-sigma errors of the ideal navigation (defaults: relative 1 cm, 50 um/s; absolute 5 m,
+  /// 1 cm/s: the DiGiTaL IAR-on figures of Guffanti et al., AAS 23-149, 2023, Table 3).
   double relative_position_m = 0.01;
   double relative_velocity_mps = 5e-5;
   double absolute_position_m = 5.0;
@@ -96,11 +96,13 @@ struct FaultSettings {
   double impulse_t_s = -1.0;
   Eigen::Vector3d impulse_dv_rtn_mps = Eigen::Vector3d::Zero();
   /// A non-GNC fault reported to the host application at this time (e.g. a bus safe mode of the
-  /// passive spacecraft); disabled when < 0. The host's response (mission paper, FDIR): transfer
+  /// passive spacecraft); disabled when < 0. The host's response (Guffanti et al., AAS 23-149,
+  /// 2023, sec. 4.1, FDIR): transfer
   /// to standby when the formation is in science or transfer, otherwise a role switch.
   double non_gnc_fault_t_s = -1.0;
-  // Faults of issue 16 (each handled by the host's FDIR as sim/campaign_simulation.hpp says); the
-  // spacecraft concerned is the one active when the window opens.
+  // The fault windows of the fault scenarios (data/scenarios/faults; each handled by the host's
+  // FDIR as sim/campaign_simulation.hpp says); the spacecraft concerned is the one active when the
+  // window opens.
   FaultWindow gps_outage;      // its receiver delivers nothing; every satellite re-acquired after
   FaultWindow crosslink_loss;  // every crosslink message lost, both ways
   FaultWindow safe_mode;       // its bus in safe mode: its component is not stepped

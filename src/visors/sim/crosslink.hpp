@@ -18,9 +18,12 @@
 
 namespace visors::sim {
 
+/// Defaults (docs/requirements.md#gps-receiver-and-sensors): the delay of
+/// Guffanti et al., AAS 23-149, 2023 ("paper"), sec. 5; no loss nominally, the faults' scenarios
+/// set one.
 struct CrosslinkSettings {
-  double delay_s = 0.5;           // transport delay [s] (issue default)
-  double drop_probability = 0.0;  // probability that a message is lost [-] (issue default)
+  double delay_s = 0.5;           // transport delay [s] (paper, sec. 5)
+  double drop_probability = 0.0;  // probability that a message is lost [-] (project choice)
 
   /// Ok, or the offending field by name.
   [[nodiscard]] core::Result<bool> validate() const {

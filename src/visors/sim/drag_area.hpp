@@ -8,8 +8,9 @@
 // faces); shadowing of one plate by another is ignored (the area is an upper bound when panels
 // hide the body).
 //
-// Default geometry (visors_6u()): a stand-in sized to reproduce the envelope of
-// 0.15 .. 0.55 m^2 (docs/conventions.md "area 0.15-0.55 m2 by attitude"), not the flight CAD:
+// Default geometry (visors_6u()): a stand-in sized to reproduce the envelope of 0.15 .. 0.55 m^2
+// of Guffanti et al., AAS 23-149, 2023, Table 4 (area by attitude, interpolated from CAD there),
+// not the flight CAD:
 //   body 6U, 0.366 m (X) x 0.2263 m (Y) x 0.100 m (Z):
 //     X faces 0.2263 x 0.100 = 0.02263 m^2, Y faces 0.366 x 0.100 = 0.0366 m^2,
 //     Z faces 0.366 x 0.2263 = 0.0828258 m^2;

@@ -4,8 +4,9 @@
 // receiver gives them to the flight computer (gnss::GpsMeasurementEpoch), with the truth behind
 // every number for tests and the truth file.
 //
-// Measurement model (navigation-and-dynamics.md 4.3-4.7; RINEX sign conventions), at the epoch's
-// time tag t:
+// Measurement model (the standard undifferenced observation equations, e.g. Teunissen &
+// Montenbruck (eds.), Springer Handbook of Global Navigation Satellite Systems, 2017; RINEX 3 sign
+// conventions), at the epoch's time tag t:
 //   P   = rho + c (dt_r - dt^j) + I + e_P,                                    e_P ~ N(0, code_sigma_m)
 //   Phi = (rho + c (dt_r - dt^j) - I) / lambda + N + phi_r - phi^j + e_Phi / lambda,  e_Phi ~ N(0, phase_sigma_m)
 //   D   = -(d/dt)(rho + c dt_r - c dt^j - I) / lambda + e_D,                 e_D ~ N(0, doppler_sigma_hz)
@@ -63,6 +64,9 @@
 // Not modelled: carrier phase wind-up (both spacecraft fly the same attitude profile),
 // (options off) C/N0 = 35 + 15 sin(elevation above the antenna plane) dB-Hz is reported,
 // relativistic path delay (Shapiro, < 2 cm, common to both spacecraft).
+// Defaults and their sources: docs/requirements.md#gps-receiver-and-sensors ("paper" below:
+// Guffanti et al., AAS 23-149, 2023; sec. 5 is its navigation test set-up, Table 1(a) its
+// geometry uncertainties).
 
 #include <array>
 #include <cstdint>
@@ -81,17 +85,17 @@
 namespace visors::sim {
 
 struct GpsReceiverSettings {
-  double elevation_mask_rad = 5.0 * core::kDegToRad;  // above the antenna plane (issue)
-  int channels = 12;                                  // (issue), at most gnss::kMaxGpsChannels
-  double code_sigma_m = 0.20;                         // pseudorange thermal noise (issue) [m]
-  double phase_sigma_m = 0.002;                       // carrier-phase thermal noise (issue) [m]
+  double elevation_mask_rad = 5.0 * core::kDegToRad;  // above the antenna plane (paper, sec. 5)
+  int channels = 12;                                  // project choice, at most gnss::kMaxGpsChannels
+  double code_sigma_m = 0.20;                         // pseudorange thermal noise (paper, sec. 5) [m]
+  double phase_sigma_m = 0.002;                       // carrier-phase thermal noise (paper, sec. 5) [m]
   double doppler_sigma_hz = 0.05;                     // [Hz]
-  double clock_step_sigma_m = 1.0;                    // receiver clock random walk per epoch (issue) [m]
+  double clock_step_sigma_m = 1.0;                    // receiver clock random walk per epoch (paper, sec. 5) [m]
   double epoch_interval_s = 1.0;                      // nominal epoch interval, for the clock's rate
                                                       // (gnss-sim: time.step_s) [s]
   double initial_clock_sigma_m = 300.0;               // initial receiver clock offset, 1 us [m]
-  double phase_center_offset_m = 0.0854;              // along the boresight (issue) [m]
-  double mounting_sigma_rad = 30.0 * core::kArcsecToRad;  // boresight tilt per axis (issue)
+  double phase_center_offset_m = 0.0854;              // along the boresight (paper, Table 1(a)) [m]
+  double mounting_sigma_rad = 30.0 * core::kArcsecToRad;  // boresight tilt per axis (paper, Table 1(a))
   Eigen::Vector3d antenna_body_m = Eigen::Vector3d(0.0, 0.0, 0.1);  // antenna reference point [m]
   /// The true phase centre's error against its calibration, body frame [m]: drawn per run with
   /// the spacecraft's geometry (not a scenario key; zero by default).

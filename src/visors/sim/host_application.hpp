@@ -1,12 +1,13 @@
 #pragma once
-// The host application of both spacecraft as the campaign emulates it (the mission paper's
-// hosted software app around GNC): one GNC flight component per spacecraft behind its binary
-// channels, the ground timeline, the crosslink between the two, the commands and telemetry it
-// queues for the next step, the fault windows the scenario injects, and the host's FDIR.
+// The host application of both spacecraft as the campaign emulates it (the hosted software app
+// around GNC of Guffanti et al., AAS 23-149, 2023, sec. 4.1): one GNC flight component per
+// spacecraft behind its binary channels, the ground timeline, the crosslink between the two, the
+// commands and telemetry it queues for the next step, the fault windows the scenario injects, and
+// the host's FDIR.
 //
-// FDIR policy (mission paper, FDIR), one table (kFdirPolicy): a trigger of the active spacecraft
-// and its response, which may depend on whether the formation is in science (science or the
-// transfer to it) at the trigger:
+// FDIR policy (the same paper, sec. 4.1, FDIR; docs/architecture.md#fdir), one table (kFdirPolicy):
+// a trigger of the active spacecraft and its response, which may depend on whether the formation is
+// in science (science or the transfer to it) at the trigger:
 //   passive-safety violation reported           -> escape (whatever the mode);
 //   GNC incapable for 60 s (600 s before it     -> role switch;
 //   was first capable), the other capable
@@ -40,9 +41,9 @@ namespace visors::sim {
 /// the spacecraft has been capable, 600 s before. A cold start is not a fault: both spacecraft are
 /// incapable until their first solution (the real sky's first fix comes 70-150 s after the
 /// receivers start, the broadcast ephemerides being decoded 18-36 s after lock), and the one that
-/// is first capable by a few seconds is no better a choice than the active one (with 60 s, four
-/// of the seeds 1-10 switched roles at the cold start). A receiver that never delivers still
-/// hands over, after 600 s.
+/// is first capable by a few seconds is no better a choice than the active one (docs/decisions.md,
+/// "GNC incapable at the cold start"). A receiver that never delivers still hands over, after
+/// 600 s.
 struct GncIncapablePersistence {
   static constexpr double kAfterCapable_s = 60.0;
   static constexpr double kBeforeCapable_s = 600.0;

@@ -1,8 +1,8 @@
 #pragma once
-// Ideal navigation (issue 6): the navigation solution is the truth plus errors of a configured
-// size, for control-only studies. The errors are first-order Gauss-Markov processes (a filter's
-// error is correlated in time, not white), per axis with the 3D 1-sigma split evenly over the
-// three axes (sigma_axis = sigma_3d / sqrt(3)):
+// Ideal navigation: the navigation solution is the truth plus errors of a configured size, for
+// control-only studies (defaults: docs/requirements.md#navigation-defaults). The errors are
+// first-order Gauss-Markov processes (a filter's error is correlated in time, not white), per axis
+// with the 3D 1-sigma split evenly over the three axes (sigma_axis = sigma_3d / sqrt(3)):
 //   e(t + dt) = phi e(t) + sigma_axis sqrt(1 - phi^2) w,  phi = exp(-dt / tau),  w ~ N(0, 1),
 // started from the stationary distribution, so e has the configured sigma at every time.
 // Absolute errors perturb the chief (DSC) state in GCRF; relative errors perturb the deputy's

@@ -1,8 +1,8 @@
 #pragma once
 // The on-board navigation of a closed-loop run (`[navigation] mode = "cdgps"`) scored against the
 // truth, per spacecraft: the errors of the solution each component uses at every step, the
-// integer ambiguity resolution's fix and wrong-fix rates and its time to first fix (the mission
-// paper's navigation figures: always reported together).
+// integer ambiguity resolution's fix and wrong-fix rates and its time to first fix (the
+// navigation figures of Guffanti et al., AAS 23-149, 2023, sec. 5: always reported together).
 //
 // Errors of a solution at step t (truth at t, the chief's RTN axes of the truth):
 //  - relative position: estimated deputy minus chief centre of mass, minus the truth's: what the
@@ -22,7 +22,8 @@
 // results and goes once the callers read the records.
 // Only the solutions the component uses (valid: OnboardNavigation::valid()) are scored; the steps
 // with a solution not yet (or no longer) valid are counted. The statistics leave out the slews to and from the observations (the satellites in view change
-// at 1.5 deg/s) where the issue asks so ("outside the slews"), and report them whole too.
+// at 1.5 deg/s) where an acceptance figure is stated outside the slews
+// (docs/requirements.md#navigation-acceptance-figures), and report them whole too.
 // A fix is wrong when a double difference of the fixed SDCP ambiguities of a processed epoch
 // differs from the truth's (the receivers' integer ambiguities and phase offsets of that epoch)
 // by more than half a cycle; each processed epoch is scored once. From the record: a full fix's

@@ -1,10 +1,11 @@
 #pragma once
 // Truth model of one spacecraft's cold-gas propulsion (ground side of the simulator).
 //
-// Actuator (mission paper, propulsion table; docs/conventions.md "Mission defaults"): six nozzles
-// on the body axes, impulse 1e-3 .. 2.2e-2 N s quantised in steps of 6e-5 N s, one impulse every
-// 46.5 s (plenum refill), specific impulse 44 s. The spacing check allows 1 ns of round-off (the
-// project's time resolution) so that impulses planned exactly 46.5 s apart are accepted.
+// Actuator (Guffanti et al., AAS 23-149, 2023, sec. 2 and its propulsion table, Table 1(b);
+// docs/requirements.md#propulsion): six nozzles on the body axes, impulse 1e-3 .. 2.2e-2 N s
+// quantised in steps of 6e-5 N s, one impulse every 46.5 s (plenum refill), specific impulse 44 s.
+// The spacing check allows 1 ns of round-off (the project's time resolution) so that impulses
+// planned exactly 46.5 s apart are accepted.
 //
 // What one execute() does, in order:
 //   1. rejects a non-finite time or command, and a time earlier than `spacing_s` after the previous
@@ -19,7 +20,7 @@
 //   4. applies the errors: first each nozzle's bias (drawn once per run at creation, after the
 //      specific impulse: six numbers N(0, magnitude_bias_sigma) for the +X, +Y, +Z, -X, -Y, -Z
 //      nozzles, whatever the sigma), scaling each body component of the command by 1 + b of the
-//      nozzle that fires it (the mission paper names thruster biases the real risk: a random
+//      nozzle that fires it (the same paper, sec. 5, stresses calibrating thruster biases: a random
 //      error averages out over the pieces of a burn, a bias does not); then, per impulse, the
 //      magnitude J_q (1 + e_m) |c_b| / |c|, c_b the biased command, e_m ~ N(0, magnitude_sigma), clamped at zero
 //      (a nozzle cannot push backwards; matters only for sigmas near 0.5); direction: the commanded
@@ -121,8 +122,8 @@ class Propulsion {
   std::optional<double> last_impulse_t_;
 };
 
-/// The delta-v budget metric of the mission paper: the L1 norm |x| + |y| + |z| of a velocity
-/// change in the thrusters' (body) frame [m/s].
+/// The delta-v budget metric of Guffanti et al., AAS 23-149, 2023, appendix: the L1 norm
+/// |x| + |y| + |z| of a velocity change in the thrusters' (body) frame [m/s].
 double thruster_l1_norm(const Eigen::Vector3d& dv_body);
 
 }  // namespace visors::sim

@@ -14,13 +14,16 @@
 // coordinate axis least aligned with it). The true axis is the nominal one rotated by the rotation
 // vector t1 e1 + t2 e2: a per-axis 1-sigma tilt, so the total misalignment has RMS sqrt(2) sigma.
 // Eight numbers are drawn whatever the sigmas, so zero-sigma runs keep the stream aligned. Then
-// the static error in the knowledge of the centre of mass (mission paper, sensitivity figure: the
+// the static error in the knowledge of the centre of mass (Guffanti et al., AAS 23-149, 2023,
+// sec. 5, "Monte Carlo alignment performances", the swept centre-of-mass knowledge error: the
 // on-board centre of mass is off the true one by this much, whatever its variation): a vector of
 // length com_knowledge_error_m along a uniformly random direction (three more normal draws,
 // normalised; drawn whatever the length), added to the true centre of mass. Last, the error of
 // the GPS antenna's phase centre (x, y, z), each N(0, phase_center_knowledge_sigma_m): the true
 // phase centre is the nominal one (antenna reference point + the calibrated offset along the true
 // boresight, sim/gps_receiver.hpp) plus this vector; the flight software knows the nominal one only.
+// Defaults and their sources: docs/requirements.md#internal-geometry ("the paper" below:
+// Guffanti et al., AAS 23-149, 2023, whose Table 1(a) gives the 1-sigma geometry uncertainties).
 
 #include <Eigen/Core>
 
@@ -32,15 +35,16 @@ namespace visors::sim {
 
 struct GeometrySettings {
   Eigen::Vector3d com_nominal_body_m = Eigen::Vector3d::Zero();  // known centre of mass [m]
-  double com_sigma_m = 3.0e-3;  // 1-sigma centre-of-mass variation per axis [m] (issue)
+  double com_sigma_m = 3.0e-3;  // 1-sigma centre-of-mass variation per axis [m] (paper, Table 1(a))
   double com_knowledge_error_m = 0.0;  // length of the centre-of-mass knowledge error [m] (3D)
-  /// Known payload reference point [m]; default on the +X face (issue).
+  /// Known payload reference point [m]; default on the +X face (project choice: the paper gives
+  /// no payload position; docs/requirements.md#internal-geometry).
   Eigen::Vector3d payload_nominal_body_m = Eigen::Vector3d(0.15, 0.0, 0.0);
-  double payload_position_sigma_m = 0.5e-3;  // 1-sigma mounting error per axis [m] (issue)
+  double payload_position_sigma_m = 0.5e-3;  // 1-sigma mounting error per axis [m] (paper, Table 1(a))
   Eigen::Vector3d payload_axis_nominal_body = Eigen::Vector3d::UnitX();  // known line of sight (unit)
-  double payload_pointing_sigma_rad = 30.0 * core::kArcsecToRad;  // 1-sigma tilt per axis [rad] (issue)
+  double payload_pointing_sigma_rad = 30.0 * core::kArcsecToRad;  // 1-sigma tilt per axis [rad] (paper, Table 1(a))
   /// 1-sigma error per axis of the GPS antenna phase centre against its calibration [m]. The
-  /// mission paper lists the phase-centre offset among the uncertain internal components and
+  /// paper lists the phase-centre offset among the uncertain internal components and
   /// estimates it on board; 5 mm is larger than the 3 mm centre-of-mass variation, as the paper
   /// expects of an uncalibrated CubeSat patch antenna (docs/truth-and-knowledge.md).
   double phase_center_knowledge_sigma_m = 5.0e-3;

@@ -54,7 +54,8 @@ std::optional<int> parse_int(std::string_view token) {
   return value;
 }
 
-// Normalisation factor N_nm = sqrt((2 - δ_0m)(2n+1)(n-m)!/(n+m)!) of the digest §2.1, so that
+// Normalisation factor N_nm = sqrt((2 - δ_0m)(2n+1)(n-m)!/(n+m)!)
+// (docs/algorithms/dynamics.md#potential-and-normalisation), so that
 // C̄ = C / N_nm. Long double keeps (n+m)!/(n-m)! in range and exact to ~1e-18 per factor.
 double inverse_normalisation(int n, int m) {
   long double ratio = 1.0L;  // (n+m)!/(n-m)!

@@ -10,11 +10,12 @@
 
 namespace visors::dynamics::files {
 
-/// Reads an ICGEM `.gfc` file (format: ICGEM "Format of the gravity field models" 2.0; quirks of
-/// the digest §2.3). `max_degree` >= 0 truncates the field to that degree (-1: the file's
-/// max_degree). Header keys before `end_of_head`: earth_gravity_constant and radius (required),
-/// max_degree (required), norm (absent = fully_normalized; `unnormalized` is converted to fully
-/// normalised), tide_system, modelname; other lines (free text such as JGM-3's `J2-DOT ...`) are
+/// Reads an ICGEM `.gfc` file (format: ICGEM "Format of the gravity field models" 2.0; the
+/// project's files' quirks: docs/algorithms/dynamics.md#reading-icgem-files). `max_degree` >= 0
+/// truncates the field to that degree (-1: the file's max_degree). Header keys before
+/// `end_of_head`: earth_gravity_constant and radius (required), max_degree (required), norm
+/// (absent = fully_normalized; `unnormalized` is converted to fully normalised), tide_system,
+/// modelname; other lines (free text such as JGM-3's `J2-DOT ...`) are
 /// tolerated. Data lines `gfc n m C S [sigmas ...]` accept e/E/d/D exponents and extra columns.
 /// Missing degree-0/1 lines mean C̄00 = 1 and zero degree-1 terms. Time-variable records
 /// (gfct, trnd, acos, asin, dot) are rejected: the static field would silently be wrong.
