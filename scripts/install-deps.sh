@@ -9,7 +9,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev libgeographiclib-dev libsqlite3-dev
   openmpi-bin libopenmpi-dev
   python3 python3-cvxopt python3-numpy universal-ctags
-  python3-dev pybind11-dev python3-pytest
+  python3-dev pybind11-dev python3-pytest doxygen
   chromium
 )
 

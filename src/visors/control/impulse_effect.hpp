@@ -32,7 +32,7 @@ astro::RelativeOrbitalElements predict_roe(const astro::KeplerianElements& chief
                                            const core::EarthGravityConstants& gravity = {});
 
 /// Checks a chief for the near-circular planners (valid elements, e < 0.1, not equatorial) and the
-/// gravity constants; the error names `chief_name`.<field> or "gravity".
+/// gravity constants; the error names a field under `chief_name` (e.g. "chief.e") or "gravity".
 core::Result<bool> validate_planner_chief(const astro::KeplerianElements& chief, const std::string& chief_name,
                                           const core::EarthGravityConstants& gravity);
 

@@ -14,8 +14,8 @@ std::string escape_html(std::string_view text);
 /// The reports' stylesheet (run and Monte Carlo reports), inlined into each page.
 std::string_view report_stylesheet();
 
-/// An <svg> element of Figure::svg as a file of its own (an image for a README): the
-/// stylesheet inlined in a <style> and a white background, so it renders outside the page.
+/// An `<svg>` element of Figure::svg as a file of its own (an image for a README): the
+/// stylesheet inlined in a `<style>` and a white background, so it renders outside the page.
 std::string standalone_svg(std::string_view svg_element);
 
 /// A number for a table cell: `decimals` after the point, or "–" for NaN/inf (a missing value).

@@ -116,7 +116,7 @@ class Figure {
   /// `columns` panels per row, each `panel_height` pixels high, across `width` pixels.
   Figure(std::string id, double width, double panel_height, int columns);
   Plot& add(Plot plot);
-  /// The <svg> element, with `id` and an accessible `description`.
+  /// The `<svg>` element, with `id` and an accessible `description`.
   [[nodiscard]] std::string svg(const std::string& description) const;
 
  private:

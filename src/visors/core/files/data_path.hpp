@@ -14,7 +14,7 @@
 namespace visors::core::files {
 
 /// The folders searched, in order: each entry of VISORS_DATA_PATH, the repository's data/, the
-/// installed data (<prefix>/share/visors/data).
+/// installed data (`<prefix>/share/visors/data`).
 std::vector<std::filesystem::path> data_search_path();
 
 /// Finds `relative` (e.g. "eop/finals2000A_2024-07-01_2025-01-31.txt") in the search path.
