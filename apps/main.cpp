@@ -1,4 +1,4 @@
-// The `visors` command-line program: one binary, subcommands. See README.md.
+// The `visors` command-line program: one binary, subcommands. One page per command in docs/cli/.
 
 #include <cstdio>
 #include <iostream>

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # RTKLIB's lambda() and visors' IntegerLeastSquares on the same IAR benchmark instances, back to
 # back on this machine, so that their ratio is measured in one session (RTKLIB's own time at n = 24
-# varies by ~1.5x between sessions: README "Performance").
+# varies by ~1.5x between sessions: docs/results.md "Performance").
 # Usage: scripts/bench_rtklib_lambda.sh RTKLIB_SOURCE_DIR [BUILD_DIR]
 #   RTKLIB_SOURCE_DIR: a checkout of RTKLIB (its src/ holds lambda.c, rtkcmn.c, rtklib.h), e.g.
-#   git clone https://github.com/tomojitakasu/RTKLIB (2.4.2 p13 was used in the README).
+#   git clone https://github.com/tomojitakasu/RTKLIB (2.4.2 p13 was used in docs/results.md).
 # Needs the build's visors_export_ambiguity_instances and visors_bench_ambiguity.
 set -euo pipefail
 rtklib=${1:?usage: $0 RTKLIB_SOURCE_DIR [BUILD_DIR]}
@@ -13,8 +13,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 [[ -f "$rtklib/src/lambda.c" ]] || { echo "error: $rtklib/src/lambda.c not found" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# RTKLIB's own optimisation level in its makefiles is -O3; -O2 is the level of the comparison the
-# README reports (README "Performance").
+# RTKLIB's own optimisation level in its makefiles is -O3; -O2 is the level of the comparison
+# docs/results.md reports ("Performance").
 gcc -O2 -I "$rtklib/src" -o "$work/driver" "$root/bench/peers/rtklib_lambda_driver.c" \
   "$rtklib/src/lambda.c" "$rtklib/src/rtkcmn.c" -lm -lpthread 2> "$work/gcc.log" || { cat "$work/gcc.log" >&2; exit 1; }
 "$build/bench/visors_export_ambiguity_instances" "$work/instances.bin"

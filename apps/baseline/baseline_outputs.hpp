@@ -18,7 +18,7 @@ struct BaselineRun {
   double wall_time_s = 0.0;  // reading, processing (not writing) [s]
 };
 
-/// The summary.json content (statistics over the epochs; see the README's field list).
+/// The summary.json content (statistics over the epochs; fields in docs/cli/baseline.md).
 nlohmann::json baseline_summary(const BaselineRun& run);
 
 /// Writes the three files into run.options.out (`summary` is baseline_summary(run)); Error names

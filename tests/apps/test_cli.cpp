@@ -1,5 +1,5 @@
 // The CLI's own contract: unknown tools and malformed JSON are rejected with exit code 2 and a
-// one-line message (the `visors tool` contract: README, "`visors tool NAME`").
+// one-line message (the `visors tool` contract: docs/cli/tool.md).
 #include <gtest/gtest.h>
 
 #include "apps/run_tool.hpp"

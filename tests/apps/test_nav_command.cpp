@@ -1,4 +1,4 @@
-// `visors nav` end to end, shortened (the README's command replays the whole orbit): a 10-minute
+// `visors nav` end to end, shortened (docs/cli/nav.md's command replays the whole orbit): a 10-minute
 // `visors gnss-sim` run of the default scenario (needs the shared data's navigation file) replayed
 // through both filters, against the navigation acceptance figures
 // (docs/requirements.md#navigation-acceptance-figures) where 5 minutes can show them; and bad input

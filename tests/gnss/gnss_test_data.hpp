@@ -20,7 +20,7 @@ inline std::filesystem::path gnss_data(const std::string& relative) {
 
 inline bool have_gnss_data(const std::string& relative) { return core::files::find_data_file("gnss/" + relative).has_value(); }
 
-/// Skips the current test when a GNSS data file is not in the data search path (README "Data files").
+/// Skips the current test when a GNSS data file is not in the data search path (data/SOURCES.md).
 #define VISORS_SKIP_WITHOUT_GNSS_DATA(relative)                                                              \
   if (!visors::test::have_gnss_data(relative))                                                            \
   GTEST_SKIP() << "gnss/" << (relative) << " not found: set VISORS_DATA_PATH to the shared data folder"

@@ -135,7 +135,7 @@ TEST(Report, ThirtyFiveOrbitsAtTenSecondsStaysSmall) {
   ASSERT_GT(run.rows(), 19000u);
   const std::string html = rendered(run);
   // measured regression bound: 554602 bytes (2026-11); bound 3 MiB. (Speed is not a unit-test
-  // property: the report's time is part of the timed `visors run` in the README's performance.)
+  // property: the report's time is part of the timed `visors run` in docs/results.md's performance.)
   EXPECT_LT(html.size(), 3u * 1024u * 1024u) << html.size();
   for (const char* id : kFigureIds) EXPECT_TRUE(test::draws_data(test::figure_svg(html, id))) << id;
 }

@@ -28,7 +28,7 @@ inline const core::GpsTime kMissionEpoch = core::GpsTime::from_week_seconds(2334
 inline constexpr const char* kMissionNavFile = "gnss/NYA100NOR_S_20241280000_01D_GN.rnx";
 
 /// Whether the navigation file of the mission constellation is in the data search path (tests
-/// skip without it, README "Data files").
+/// skip without it, data/SOURCES.md).
 inline bool have_mission_nav() { return core::files::find_data_file(kMissionNavFile).has_value(); }
 
 inline gnss::GpsConstellation mission_constellation() {

@@ -1,4 +1,4 @@
-// Shortened closed-loop system tests of `visors run` (the full campaign is a README command and a
+// Shortened closed-loop system tests of `visors run` (the full campaign is the README's main job and a
 // benchmark): a science leg from the science orbit, determinism, the escape scenario.
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>

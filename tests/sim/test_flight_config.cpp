@@ -21,7 +21,7 @@ std::string config_of(const std::string& toml) {
   return config.ok() ? config.value().dump() : "";
 }
 
-// Every truth key of the scenario (README "Scenario keys", truth tables), each moved from its
+// Every truth key of the scenario (docs/cli/run.md "Scenario keys", truth tables), each moved from its
 // default; the flight configuration is compared as text.
 class TruthKeyDispersion : public ::testing::TestWithParam<const char*> {};
 

@@ -423,7 +423,7 @@ TEST(GnssOperationsPlan, BurstPairsAreOppositeAndBothSpacecraftOppose) {
 
 // Pieces in [slew_start_s, end_s + 150 s] of a window are skipped (gnss_operations.hpp), and the
 // period is the chief's Keplerian one (2 pi sqrt(a^3 / mu), a = 6878136.3 m, mu = 3.986004415e14:
-// 5676.98 s, the README's `visors preview` line).
+// 5676.98 s, docs/cli/preview.md's `visors preview` line).
 TEST(GnssOperationsPlan, PiecesNearObservationsAreSkipped) {
   CampaignScenario s = parse(scenario(12000.0, "attitude = \"campaign\"\n",
                                       "[gnss.observations]\nfirst_start_s = 1000.0\n"

@@ -1,4 +1,4 @@
-// Shortened `visors gnss-sim` runs (the one-orbit default is a README command) and the [gnss]
+// Shortened `visors gnss-sim` runs (the one-orbit default is the command of docs/cli/gnss-sim.md) and the [gnss]
 // scenario tables.
 #include <gtest/gtest.h>
 
@@ -128,7 +128,7 @@ TEST(GnssScenario, BadValuesAreNamed) {
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "[gnss.broadcast_errors]\nalong_m = -1\n")).error().field,
             "gnss.broadcast_errors.along_m");
   EXPECT_EQ(campaign_from_toml(scenario(10.0, "attitude = \"sideways\"\n")).error().field, "gnss.attitude");
-  // the realism options (README "visors gnss-sim")
+  // the realism options (docs/cli/gnss-sim.md)
   for (const char* key : {"unflagged_slip_fraction", "half_cycle_slip_probability", "data_gap_probability"}) {
     EXPECT_EQ(campaign_from_toml(scenario(10.0, std::string("[gnss.receiver]\n") + key + " = 1.5\n")).error().field,
               std::string("gnss.receiver.") + key);
@@ -260,7 +260,7 @@ struct Csv {
 
 Eigen::Vector3d vector3(const nlohmann::json& a) { return {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()}; }
 
-// The documented instants of truth.csv (README "visors gnss-sim", gnss_simulation.hpp): the centre
+// The documented instants of truth.csv (docs/cli/gnss-sim.md, gnss_simulation.hpp): the centre
 // of mass (GCRF) and the attitude at the time tag T = t0 + t_s as true GPS time, the antenna phase
 // centre (ITRF) at the reception instant T - dt_r, dt_r = receiver_clock_m / c. For every row:
 //   apc_itrf = R(T) (r_gcrf + A(q) (phase_center_body - center_of_mass_body)) - v_apc dt_r,
@@ -308,7 +308,7 @@ TEST_F(GnssSimulation, TruthPhaseCentreIsTheCentreOfMassCarriedToTheReceptionIns
   EXPECT_GT(worst_other_instant, 1e-3);  // precondition: the test tells the instants apart
 }
 
-// The documented Doppler of the RINEX files (README "visors gnss-sim"): -lambda D1C is the rate of
+// The documented Doppler of the RINEX files (docs/cli/gnss-sim.md): -lambda D1C is the rate of
 // the phase range, the sum of the truth rates, -lambda D1C = range_rate_mps + receiver_clock_rate_mps
 // (truth.csv) - satellite_clock_rate_mps - ionosphere_rate_mps + e_D: the residual within 5 sigma
 // (sigma = lambda x 0.05 Hz = 0.00951 m/s, plus the file's 0.0005 Hz rounding x lambda = 1e-4 m/s)
@@ -389,7 +389,7 @@ TEST_F(GnssSimulation, RinexDopplerIsThePhaseRateAndTheSumOfTheTruthRates) {
 
 namespace {
 
-// The realism options end to end (README "visors gnss-sim"): the RINEX files carry LLI bit 1
+// The realism options end to end (docs/cli/gnss-sim.md): the RINEX files carry LLI bit 1
 // exactly where channels_truth.csv has a half cycle, and a receiver's file has exactly the epochs
 // its truth rows mark recorded (data gaps), the other receiver's file its own.
 TEST(GnssSimulationRealism, RinexFlagsAndGapsFollowTheTruth) {

@@ -1,4 +1,4 @@
-// The GPS receiver's realism options (sim/gps_receiver.hpp, README "visors gnss-sim"): unflagged
+// The GPS receiver's realism options (sim/gps_receiver.hpp, docs/cli/gnss-sim.md): unflagged
 // cycle slips, half-cycle ambiguities, elevation-dependent noise, Gauss-Markov multipath and data
 // gaps. Each test checks a property that breaks if the option is wrong or ignored.
 #include <algorithm>

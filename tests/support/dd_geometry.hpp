@@ -1,6 +1,6 @@
 #pragma once
 // Float ambiguity problems from a realistic double-difference (DD) geometry, shared by the nav
-// tests and benchmarks (the first benchmark family of bench/bench_ambiguity.cpp, README
+// tests and benchmarks (the first benchmark family of bench/bench_ambiguity.cpp, docs/results.md
 // "Performance": single-epoch L1/L2 short-baseline DD geometry):
 // - `satellites` satellites, azimuth uniform in [0, 2 pi), sin(elevation) uniform in
 //   [sin 10 deg, 1]; the highest is the reference;

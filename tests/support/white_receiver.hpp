@@ -2,7 +2,7 @@
 // The white-noise receiver of the earlier, friendlier truth (no elevation dependence, no
 // multipath), for the tests of machinery whose figures assume it: fault handling, RINEX round
 // trips, the closed loop's navigation plumbing. The real sky's figures (the default scenarios)
-// are measured by the README's commands; docs/truth-and-knowledge.md.
+// are measured by the commands of docs/results.md; docs/truth-and-knowledge.md.
 
 #include <string>
 #include <utility>

@@ -56,7 +56,7 @@
 // height of the segment, spherical Earth of WGS-84 equatorial radius). At most `channels`
 // satellites are tracked: a tracked satellite keeps its channel while visible; free channels take
 // the highest visible ones. Lost and re-acquired means a new ambiguity and the loss-of-lock flag.
-// Realism options (off by default; README "visors gnss-sim"): cycle slips without the LLI flag,
+// Realism options (off by default; docs/cli/gnss-sim.md): cycle slips without the LLI flag,
 // half-cycle ambiguities (LLI bit 1) at acquisition, elevation-dependent noise (sigma / sin(el),
 // el floored at 5 deg, C/N0 = 50 + 20 log10 sin(el) then, so sigma ~ 10^(-C/N0 / 20)), first-order
 // Gauss-Markov code and phase multipath per channel (scaled by the same elevation factor, restarted
