@@ -20,6 +20,9 @@
 #include "apps/tools/tool.hpp"
 #include "visors/core/files/data_path.hpp"
 #include "visors/core/files/text_file.hpp"
+#include "visors/astro/control_input_matrix.hpp"
+#include "visors/astro/keplerian_elements.hpp"
+#include "visors/control/stochastic_mpc.hpp"
 #include "visors/core/version.hpp"
 #include "visors/nav/integer_least_squares.hpp"
 #include "visors/report/report.hpp"
@@ -246,6 +249,79 @@ py::dict integer_least_squares(const Eigen::VectorXd& a, const Eigen::MatrixXd& 
   return out;
 }
 
+
+// Keplerian elements from the dict the tools also take: {a, e, i, raan, argp, M} [m, rad], each a
+// finite number, no other key; validated (the error names "<name>.<field>").
+visors::astro::KeplerianElements elements_from(const py::dict& d, const std::string& name) {
+  static const char* const kKeys[] = {"a", "e", "i", "raan", "argp", "M"};
+  for (const auto& item : d) {
+    const std::string key = py::str(item.first);
+    bool known = false;
+    for (const char* k : kKeys) known = known || key == k;
+    if (!known) throw py::value_error(name + "." + key + ": is not a recognised field");
+  }
+  double v[6];
+  for (int k = 0; k < 6; ++k) {
+    if (!d.contains(kKeys[k])) throw py::value_error(name + "." + kKeys[k] + ": is required but missing");
+    try {
+      v[k] = py::cast<double>(d[kKeys[k]]);
+    } catch (const py::cast_error&) {
+      throw py::value_error(name + "." + kKeys[k] + ": must be a number");
+    }
+  }
+  const visors::astro::KeplerianElements elements{v[0], v[1], v[2], v[3], v[4], v[5]};
+  const auto valid = visors::astro::validate_keplerian(elements);
+  if (!valid.ok()) throw py::value_error(name + "." + valid.error().describe());
+  return valid.value();
+}
+
+template <typename T>
+T value_or_raise(visors::core::Result<T> result) {
+  if (!result.ok()) throw py::value_error(result.error().describe());
+  return std::move(result).value();
+}
+
+visors::astro::RelativeOrbitalElements finite_roe(const Eigen::Matrix<double, 6, 1>& roe, const std::string& name) {
+  if (!roe.allFinite()) throw py::value_error(name + ": must be finite");
+  return roe;
+}
+
+// The stochastic MPC (control/stochastic_mpc.hpp) for Python: dimensionless mean ROE, times in
+// seconds on the caller's clock, the plan's impulses as (t, dv_rtn) pairs.
+class PyStochasticMpc {
+ public:
+  PyStochasticMpc(double mahalanobis_threshold, double execution_sigma_fraction, double execution_sigma_floor_mps,
+                  double freeze_time_s, double burn_latency_s) {
+    visors::control::StochasticMpcSettings settings;
+    settings.mahalanobis_threshold = mahalanobis_threshold;
+    settings.execution_sigma_fraction = execution_sigma_fraction;
+    settings.execution_sigma_floor_mps = execution_sigma_floor_mps;
+    settings.freeze_time_s = freeze_time_s;
+    settings.burn_latency_s = burn_latency_s;
+    mpc_ = std::make_unique<visors::control::StochasticMpc>(value_or_raise(visors::control::StochasticMpc::create(settings)));
+  }
+  void set_target(const Eigen::Matrix<double, 6, 1>& roe_target, double tf) {
+    (void)value_or_raise(mpc_->set_target(finite_roe(roe_target, "roe_target"), tf));
+  }
+  py::dict step(double t, const py::dict& chief_mean, const Eigen::Matrix<double, 6, 1>& roe_estimate,
+                const Eigen::Matrix<double, 6, 6>& covariance) {
+    const auto chief = elements_from(chief_mean, "chief_mean");
+    const auto result = value_or_raise(mpc_->step(t, chief, roe_estimate, covariance));
+    py::list impulses;
+    for (const auto& impulse : result.remaining) impulses.append(py::make_tuple(impulse.t, Eigen::Vector3d(impulse.dv_rtn)));
+    py::dict out;
+    out["replanned"] = result.replanned;
+    out["mahalanobis"] = result.mahalanobis;
+    out["remaining"] = impulses;
+    out["roe_final_predicted"] = Eigen::Matrix<double, 6, 1>(result.roe_final_predicted);
+    return out;
+  }
+  int replan_count() const { return mpc_->replan_count(); }
+
+ private:
+  std::unique_ptr<visors::control::StochasticMpc> mpc_;
+};
+
 }  // namespace
 
 PYBIND11_MODULE(_visors, m) {
@@ -287,4 +363,15 @@ PYBIND11_MODULE(_visors, m) {
   m.def("tool", &tool, py::arg("name"), py::arg("request_json"));
   m.def("tool_names", &tool_names);
   m.def("integer_least_squares", &integer_least_squares, py::arg("a"), py::arg("Q"), py::arg("candidates"));
+  m.def("control_input_matrix", [](const py::dict& chief, double mu) {
+    return Eigen::Matrix<double, 6, 3>(visors::astro::control_input_matrix(elements_from(chief, "chief"), mu));
+  }, py::arg("chief"), py::arg("mu"));
+  py::class_<PyStochasticMpc>(m, "StochasticMpc")
+      .def(py::init<double, double, double, double, double>(), py::arg("mahalanobis_threshold"),
+           py::arg("execution_sigma_fraction"), py::arg("execution_sigma_floor_mps"), py::arg("freeze_time_s"),
+           py::arg("burn_latency_s"))
+      .def("set_target", &PyStochasticMpc::set_target, py::arg("roe_target"), py::arg("tf"))
+      .def("step", &PyStochasticMpc::step, py::arg("t"), py::arg("chief_mean"), py::arg("roe_estimate"),
+           py::arg("covariance"))
+      .def_property_readonly("replan_count", &PyStochasticMpc::replan_count);
 }

@@ -29,7 +29,10 @@ from . import _visors
 __version__: str = _visors.__version__
 
 __all__ = ["__version__", "tool", "tool_names", "run", "gnss_sim", "nav_replay", "mc", "read_run",
-           "read_csv", "read_store", "find_data_file", "integer_least_squares"]
+           "read_csv", "read_store", "find_data_file", "integer_least_squares", "control_input_matrix",
+           "StochasticMpc", "MU_EARTH"]
+
+MU_EARTH = 3.986004418e14  # [m^3/s^2], the project's default (core::EarthGravityConstants)
 
 DEFAULT_SCENARIO = "scenarios/campaign.toml"
 
@@ -300,3 +303,59 @@ def integer_least_squares(a: Any, Q: Any, candidates: int = 2) -> dict:
     if isinstance(candidates, bool) or not isinstance(candidates, (int, np.integer)) or candidates < 1:
         raise ValueError(f"candidates: must be a positive integer, not {candidates!r}")
     return _visors.integer_least_squares(a, Q, int(candidates))
+
+
+def _array(value: Any, shape: tuple[int, ...], field: str) -> np.ndarray:
+    try:
+        array = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{field}: must be an array of numbers") from None
+    if array.shape != shape:
+        raise ValueError(f"{field}: must have shape {shape}, not {array.shape}")
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{field}: must be finite")
+    return array
+
+
+def _elements(value: Any, field: str) -> dict:
+    if not isinstance(value, Mapping):
+        raise ValueError(f"{field}: must be a dict {{a, e, i, raan, argp, M}} [m, rad]")
+    return {str(k): (float(v) if isinstance(v, (np.floating, np.integer)) else v) for k, v in value.items()}
+
+
+def control_input_matrix(chief: Mapping[str, float], mu: float = MU_EARTH) -> np.ndarray:
+    """Gamma (6 x 3, [s/m]): d(roe) = Gamma dv_rtn for an impulse dv_rtn [m/s] in the chief's RTN frame
+    at the burn, the chief's Keplerian elements {a, e, i, raan, argp, M} [m, rad] at that time
+    (Gauss variational equations, eccentric form; docs/algorithms/relative-motion.md#control-input-matrix)."""
+    return _visors.control_input_matrix(_elements(chief, "chief"), _number(mu, "mu", minimum=1.0))
+
+
+class StochasticMpc:
+    """The stochastic model predictive control of the science approach (control/stochastic_mpc.hpp,
+    docs/algorithms/control.md): at each navigation update, the plan is kept while the Mahalanobis
+    distance of its predicted terminal error stays below the threshold, else replanned with the
+    reachable-set planner. Dimensionless mean ROE; times [s] on the caller's clock."""
+
+    def __init__(self, *, mahalanobis_threshold: float = 4.100, execution_sigma_fraction: float = 0.01,
+                 execution_sigma_floor_mps: float = 1e-4, freeze_time_s: float = 851.0,
+                 burn_latency_s: float = 10.0):
+        self._mpc = _visors.StochasticMpc(
+            _number(mahalanobis_threshold, "mahalanobis_threshold"),
+            _number(execution_sigma_fraction, "execution_sigma_fraction"),
+            _number(execution_sigma_floor_mps, "execution_sigma_floor_mps"),
+            _number(freeze_time_s, "freeze_time_s"), _number(burn_latency_s, "burn_latency_s"))
+
+    def set_target(self, roe_target: Any, tf: float) -> None:
+        """New goal: the mean ROE ``roe_target`` (6, dimensionless) at time ``tf`` [s]; clears the plan."""
+        self._mpc.set_target(_array(roe_target, (6,), "roe_target"), _number(tf, "tf"))
+
+    def step(self, t: float, chief_mean: Mapping[str, float], roe_estimate: Any, covariance: Any) -> dict:
+        """One navigation update at ``t`` [s]: the chief's mean elements at t, the estimated mean ROE
+        (6) and its covariance (6 x 6). Returns ``replanned``, ``mahalanobis``, ``remaining`` (the
+        impulses still to execute, (t [s], dv_rtn [m/s]) pairs) and ``roe_final_predicted``."""
+        return self._mpc.step(_number(t, "t"), _elements(chief_mean, "chief_mean"),
+                              _array(roe_estimate, (6,), "roe_estimate"), _array(covariance, (6, 6), "covariance"))
+
+    @property
+    def replan_count(self) -> int:
+        return self._mpc.replan_count
