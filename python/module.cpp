@@ -168,28 +168,26 @@ std::pair<std::string, std::string> gnss_sim(const std::string& path, const std:
   return {result->summary.dump(), result->dir.string()};
 }
 
-void nav_replay(const visors::nav_app::NavOptions& options) {
+// A command of the program run in-process without the GIL, its stderr kept for the exception.
+template <typename Command>
+void run_command(const char* name, Command command) {
   int code = 0;
   std::string errors;
   {
     py::gil_scoped_release release;
     CapturedStderr captured;
-    code = visors::nav_app::run_nav_command(options);
+    code = command();
     errors = captured.restore();
   }
-  raise_on_exit_code(code, "nav_replay", errors);
+  raise_on_exit_code(code, name, errors);
+}
+
+void nav_replay(const visors::nav_app::NavOptions& options) {
+  run_command("nav_replay", [&] { return visors::nav_app::run_nav_command(options); });
 }
 
 void monte_carlo(const visors::mc_app::McOptions& options) {
-  int code = 0;
-  std::string errors;
-  {
-    py::gil_scoped_release release;
-    CapturedStderr captured;
-    code = visors::mc_app::run_mc_command(options);
-    errors = captured.restore();
-  }
-  raise_on_exit_code(code, "mc", errors);
+  run_command("mc", [&] { return visors::mc_app::run_mc_command(options); });
 }
 
 // `visors tool NAME`: the request and the answer as JSON text (the Python side converts dicts).

@@ -222,10 +222,13 @@ def read_csv(path: str | os.PathLike) -> np.ndarray:
         if len(row) != len(header):
             raise ValueError(f"{path}: line {k + 2}: {len(row)} cells, the header has {len(header)}")
     columns = list(zip(*body)) if body else [()] * len(header)
-    arrays = [_column(cells) for cells in columns]
-    dtype = [(name, array.dtype) for name, array in zip(header, arrays)]
-    table = np.empty(len(body), dtype=dtype)
-    for name, array in zip(header, arrays):
+    return _structured(header, [_column(cells) for cells in columns], len(body))
+
+
+def _structured(names: list[str], arrays: list[np.ndarray], rows: int) -> np.ndarray:
+    """One structured array of equally long columns."""
+    table = np.empty(rows, dtype=[(name, array.dtype) for name, array in zip(names, arrays)])
+    for name, array in zip(names, arrays):
         table[name] = array
     return table
 
@@ -283,10 +286,7 @@ def _sql_table(connection: sqlite3.Connection, name: str) -> np.ndarray:
             arrays.append(np.array([math.nan if c is None else float(c) for c in cells], dtype=np.float64))
         else:
             arrays.append(np.array(["" if c is None else str(c) for c in cells], dtype=str))
-    table = np.empty(len(rows), dtype=[(h, a.dtype) for h, a in zip(header, arrays)])
-    for h, a in zip(header, arrays):
-        table[h] = a
-    return table
+    return _structured(header, arrays, len(rows))
 
 
 def integer_least_squares(a: Any, Q: Any, candidates: int = 2) -> dict:
