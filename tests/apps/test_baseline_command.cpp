@@ -26,7 +26,7 @@ std::string gsi_args(const std::string& extra) {
 }
 
 TEST(BaselineCommand, WritesCsvSummaryAndPage) {
-  if (!have_gsi()) GTEST_SKIP() << "gnss/gsi-2005-04-02 not found: set VISORS_DATA_PATH to the shared data folder";
+  if (!have_gsi()) GTEST_FAIL() << "gnss/gsi-2005-04-02 not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
   const TempDir dir;
   const auto run = run_visors(gsi_args("--out " + dir.path().string()));
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -68,7 +68,7 @@ TEST(BaselineCommand, MissingObservationFileIsNamed) {
 }
 
 TEST(BaselineCommand, MalformedObservationFileNamesTheLine) {
-  if (!have_gsi()) GTEST_SKIP() << "gnss/gsi-2005-04-02 not found: set VISORS_DATA_PATH to the shared data folder";
+  if (!have_gsi()) GTEST_FAIL() << "gnss/gsi-2005-04-02 not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
   const TempDir dir;
   const auto original = core::files::find_data_file(kDir + "07590920.05o").value();
   std::istringstream in(file_text(original));

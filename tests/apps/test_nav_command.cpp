@@ -54,7 +54,7 @@ class NavReplay : public ::testing::Test {
     delete dir;
   }
   void SetUp() override {
-    if (!have_navigation_file()) GTEST_SKIP() << "shared data not found: set VISORS_DATA_PATH to the shared data folder";
+    if (!have_navigation_file()) GTEST_FAIL() << "a data file of data/ not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
     ASSERT_EQ(nav->exit_code, 0) << nav->err;
     ASSERT_EQ(faulty->exit_code, 0) << faulty->err;
   }

@@ -88,7 +88,7 @@ class NavFiles : public ::testing::Test {
   }
   static void TearDownTestSuite() { delete dir; }
   void SetUp() override {
-    if (!have_navigation_file()) GTEST_SKIP() << "shared data not found: set VISORS_DATA_PATH to the shared data folder";
+    if (!have_navigation_file()) GTEST_FAIL() << "a data file of data/ not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
     ASSERT_FALSE(summary.is_null());
   }
   static std::filesystem::path run() { return dir->path() / "run"; }

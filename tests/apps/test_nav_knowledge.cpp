@@ -157,7 +157,7 @@ class NavKnowledge : public ::testing::Test {
   }
   static void TearDownTestSuite() { delete dir; }
   void SetUp() override {
-    if (!have_navigation_file()) GTEST_SKIP() << "shared data not found: set VISORS_DATA_PATH to the shared data folder";
+    if (!have_navigation_file()) GTEST_FAIL() << "a data file of data/ not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
     ASSERT_NE(prn, 0) << "no PRN of the DSC's early and late fixes decoded at the start";
   }
   static CsvTable nav(const std::string& out, const std::string& file) { return read_csv_table(dir->path() / out / file); }

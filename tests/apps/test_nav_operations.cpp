@@ -74,7 +74,7 @@ class NavOperations : public ::testing::Test {
   }
   static void TearDownTestSuite() { delete dir; }
   void SetUp() override {
-    if (!have_navigation_file()) GTEST_SKIP() << "shared data not found: set VISORS_DATA_PATH to the shared data folder";
+    if (!have_navigation_file()) GTEST_FAIL() << "a data file of data/ not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
     ASSERT_FALSE(nominal.is_null());
     ASSERT_FALSE(delayed.is_null());
     ASSERT_FALSE(with_laser.is_null());

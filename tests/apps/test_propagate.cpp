@@ -132,7 +132,7 @@ TEST_F(Propagate, OemHasTheCcsdsKeywordsAndKilometreUnits) {
   EXPECT_NEAR(std::sqrt(x * x + y * y + z * z), 6650.0, 1e-6);
 }
 
-// The default scenario (truth forces) shortened to 10 minutes: runs with the shared data.
+// The default scenario (truth forces) shortened to 10 minutes: runs with the data of data/.
 TEST_F(Propagate, TruthScenarioRuns) {
   std::ifstream in(std::string(VISORS_SOURCE_DIR) + "/data/scenarios/propagate_chief.toml");
   std::stringstream text;

@@ -92,7 +92,7 @@ class RangeModelAgainstGnssSim : public ::testing::Test {
   }
   static void TearDownTestSuite() { delete run; }
   void SetUp() override {
-    if (run == nullptr) GTEST_SKIP() << "shared data not found: set VISORS_DATA_PATH to the shared data folder";
+    if (run == nullptr) GTEST_FAIL() << "a data file of data/ not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
   }
   static SimulatedRun* run;
 };

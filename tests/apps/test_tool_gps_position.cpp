@@ -20,7 +20,7 @@ std::string request(int prn, const char* time) {
 // flagged unhealthy (63) in this file, so the tool refuses it; G12 (healthy, IODE from line 1817)
 // is the positive case.
 TEST(ToolGpsPosition, G12MatchesRtklib) {
-  if (!visors::core::files::find_data_file(kNav)) GTEST_SKIP() << kNav << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNav)) GTEST_FAIL() << kNav << " not found: set VISORS_DATA_PATH";
   const auto run = visors::test::run_tool("gps-position", request(12, "2010-07-01T12:00:00"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = run.json();
@@ -36,7 +36,7 @@ TEST(ToolGpsPosition, G12MatchesRtklib) {
 }
 
 TEST(ToolGpsPosition, UnhealthyPrnIsAnErrorWithTheReason) {
-  if (!visors::core::files::find_data_file(kNav)) GTEST_SKIP() << kNav << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNav)) GTEST_FAIL() << kNav << " not found: set VISORS_DATA_PATH";
   const auto run = visors::test::run_tool("gps-position", request(1, "2010-07-01T12:00:00"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("prn"), std::string::npos) << run.err;
@@ -45,14 +45,14 @@ TEST(ToolGpsPosition, UnhealthyPrnIsAnErrorWithTheReason) {
 
 // The corrupt healthy-flagged record (line 937, t_oe 06:00) is named as inconsistent.
 TEST(ToolGpsPosition, CorruptRecordIsNamed) {
-  if (!visors::core::files::find_data_file(kNav)) GTEST_SKIP() << kNav << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNav)) GTEST_FAIL() << kNav << " not found: set VISORS_DATA_PATH";
   const auto run = visors::test::run_tool("gps-position", request(1, "2010-07-01T06:00:00"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("line 937 inconsistent"), std::string::npos) << run.err;
 }
 
 TEST(ToolGpsPosition, OutsideTheFileIsAnError) {
-  if (!visors::core::files::find_data_file(kNav)) GTEST_SKIP() << kNav << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNav)) GTEST_FAIL() << kNav << " not found: set VISORS_DATA_PATH";
   const auto run = visors::test::run_tool("gps-position", request(12, "2010-07-05T12:00:00"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("no usable record"), std::string::npos) << run.err;

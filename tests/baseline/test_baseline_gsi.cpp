@@ -52,10 +52,10 @@ int count(const BaselineResult& r, SolutionStatus status) {
 }
 
 #define SKIP_WITHOUT_GSI_DATA()                          \
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi0759Obs);      \
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi3040Obs);      \
-  VISORS_SKIP_WITHOUT_GNSS_DATA(kGsi0759Nav);               \
-  VISORS_SKIP_WITHOUT_GNSS_DATA(kGsi3040Nav)
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi0759Obs);      \
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi3040Obs);      \
+  VISORS_REQUIRE_GNSS_DATA(kGsi0759Nav);               \
+  VISORS_REQUIRE_GNSS_DATA(kGsi3040Nav)
 
 TEST(BaselineGsi, EveryEpochIsPaired) {
   SKIP_WITHOUT_GSI_DATA();

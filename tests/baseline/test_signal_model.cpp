@@ -22,8 +22,8 @@ namespace {
 
 
 TEST(SignalModel, BasePseudorangeResidualsShareOneClockOffset) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi3040Obs);
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi3040Nav);
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi3040Obs);
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi3040Nav);
   const auto obs = extract_observables(gnss::files::read_rinex_observations(test::gnss_data(test::kGsi3040Obs)).value(), "base").value();
   const auto nav = gnss::files::read_rinex_navigation(test::gnss_data(test::kGsi3040Nav)).value();
   const auto ephemerides = gnss::EphemerisSet::screen(nav.records);

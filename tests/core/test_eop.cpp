@@ -67,7 +67,7 @@ class EopFile : public ::testing::Test {
   void SetUp() override {
     lines_ = real_lines();
     if (lines_.empty()) {
-      GTEST_SKIP() << kFinals << " not found: set VISORS_DATA_PATH to the shared data folder";
+      GTEST_FAIL() << kFinals << " not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
     }
   }
   std::vector<std::string> lines_;

@@ -149,7 +149,7 @@ TEST(ForceModel, CountsDaysOutsideTheSpaceWeatherTable) {
   const core::StateVector x = mission_chief(forces.gm());
   for (double dt : {0.0, 3600.0, 5 * 3600.0, 86400.0 + 10.0}) (void)forces.acceleration(outside + dt, x);
   if (const auto missing = missing_files(ForceModelConfig::truth()); !missing.empty()) {
-    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+    GTEST_FAIL() << "not found (set VISORS_DATA_PATH):" << missing;
   }
   EXPECT_EQ(forces.space_weather_misses(), 2);
   EXPECT_EQ(forces.ap_history_misses(), 0);
@@ -159,7 +159,7 @@ TEST(ForceModel, CountsDaysOutsideTheSpaceWeatherTable) {
 // of ap history, so those 3-hour intervals run NRLMSISE-00 in its daily-Ap mode and are counted.
 TEST(ForceModel, CountsIntervalsWithoutApHistory) {
   if (const auto missing = missing_files(ForceModelConfig::truth()); !missing.empty()) {
-    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+    GTEST_FAIL() << "not found (set VISORS_DATA_PATH):" << missing;
   }
   ForceModel forces = make(ForceModelConfig::truth());
   const GpsTime day2 = GpsTime::parse("2024-07-02T00:00:00", core::TimeScale::kUtc).value();
@@ -178,7 +178,7 @@ TEST(ForceModel, CountsIntervalsWithoutApHistory) {
 TEST(ForceModel, TruthDensityIsNrlmsise00WithTheObservedApHistory) {
   const ForceModelConfig truth = ForceModelConfig::truth();
   if (const auto missing = missing_files(truth); !missing.empty()) {
-    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+    GTEST_FAIL() << "not found (set VISORS_DATA_PATH):" << missing;
   }
   ForceModel forces = make(truth);
   ASSERT_TRUE(forces.warnings().empty()) << forces.warnings().front();
@@ -213,7 +213,7 @@ TEST(ForceModel, TruthDensityIsNrlmsise00WithTheObservedApHistory) {
 TEST(ForceModel, TruthDensityAtFiveHundredKilometresInOctober2024IsPlausible) {
   const ForceModelConfig truth = ForceModelConfig::truth();
   if (const auto missing = missing_files(truth); !missing.empty()) {
-    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+    GTEST_FAIL() << "not found (set VISORS_DATA_PATH):" << missing;
   }
   ForceModel forces = make(truth);
   // One orbit, every 60 s (the state rotated along the orbit by the mean motion is enough here).
@@ -336,7 +336,7 @@ Eigen::Vector3d mismatch_after_one_orbit(ForceModelConfig truth_config, ForceMod
 // activity is the configured mean, the on-board level).
 TEST(ForceModel, TruthAndOnboardModelsDifferByTheDragMismatchOverOneOrbit) {
   if (const auto missing = missing_files(ForceModelConfig::truth()); !missing.empty()) {
-    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+    GTEST_FAIL() << "not found (set VISORS_DATA_PATH):" << missing;
   }
   const Eigen::Vector3d d_rtn = mismatch_after_one_orbit(ForceModelConfig::truth(), ForceModelConfig::onboard());
   std::printf("truth vs on-board after one orbit: |dr| %.3f m, RTN (%.3f, %.3f, %.3f) m\n", d_rtn.norm(),
@@ -353,7 +353,7 @@ TEST(ForceModel, TruthAndOnboardModelsWithoutDragDifferByMetres) {
   ForceModelConfig truth = ForceModelConfig::truth();
   ForceModelConfig onboard = ForceModelConfig::onboard();
   if (const auto missing = missing_files(truth) + missing_files(onboard); !missing.empty()) {
-    GTEST_SKIP() << "not found (set VISORS_DATA_PATH):" << missing;
+    GTEST_FAIL() << "not found (set VISORS_DATA_PATH):" << missing;
   }
   truth.drag.enabled = false;
   onboard.drag.enabled = false;

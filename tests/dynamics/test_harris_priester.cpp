@@ -71,7 +71,7 @@ class SharedTable : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto path = visors::core::files::find_data_file(kTableFile);
-    if (!path) GTEST_SKIP() << kTableFile << " not found: set VISORS_DATA_PATH to the shared data folder";
+    if (!path) GTEST_FAIL() << kTableFile << " not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
     auto table = read_harris_priester_table(*path, 150.0);
     ASSERT_TRUE(table.ok()) << table.error().describe();
     table_ = std::move(table).value();

@@ -29,7 +29,7 @@ class SpaceWeatherFile : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto path = visors::core::files::find_data_file(kFile);
-    if (!path) GTEST_SKIP() << kFile << " not found: set VISORS_DATA_PATH to the shared data folder";
+    if (!path) GTEST_FAIL() << kFile << " not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
     auto table = read_space_weather_file(*path);
     ASSERT_TRUE(table.ok()) << table.error().describe();
     table_ = std::move(table).value();

@@ -21,9 +21,9 @@ inline std::filesystem::path gnss_data(const std::string& relative) {
 inline bool have_gnss_data(const std::string& relative) { return core::files::find_data_file("gnss/" + relative).has_value(); }
 
 /// Skips the current test when a GNSS data file is not in the data search path (data/SOURCES.md).
-#define VISORS_SKIP_WITHOUT_GNSS_DATA(relative)                                                              \
+#define VISORS_REQUIRE_GNSS_DATA(relative)                                                              \
   if (!visors::test::have_gnss_data(relative))                                                            \
-  GTEST_SKIP() << "gnss/" << (relative) << " not found: set VISORS_DATA_PATH to the shared data folder"
+  GTEST_FAIL() << "gnss/" << (relative) << " not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)"
 
 inline constexpr const char* kBrdc20100701 = "igs-2010-07-01/brdc1820.10n";
 inline constexpr const char* kSp320100701 = "igs-2010-07-01/igs15904.sp3";
@@ -69,7 +69,7 @@ template <const char* const& Name>
 class MalformedCopy : public ::testing::Test {
  protected:
   void SetUp() override {
-    VISORS_SKIP_WITHOUT_GNSS_DATA(Name);
+    VISORS_REQUIRE_GNSS_DATA(Name);
     text_ = file_text(gnss_data(Name));
   }
   [[nodiscard]] std::string with_line(std::size_t number, const std::string& replacement) const {

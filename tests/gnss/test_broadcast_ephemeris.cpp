@@ -21,7 +21,7 @@ class BroadcastEphemerisTest : public ::testing::Test {
     nav_ = new files::NavigationFile(std::move(file).value());
   }
   static void TearDownTestSuite() { delete nav_; }
-  void SetUp() override { VISORS_SKIP_WITHOUT_GNSS_DATA(test::kBrdc20100701); }
+  void SetUp() override { VISORS_REQUIRE_GNSS_DATA(test::kBrdc20100701); }
 
   // The record of `prn` with t_oe = `toe` (file order).
   static const BroadcastEphemeris& record(int prn, const char* toe) {

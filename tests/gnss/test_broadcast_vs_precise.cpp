@@ -82,7 +82,7 @@ Comparison compare(const char* nav_name, const char* sp3_name) {
 // the per-satellite mean radial offsets (-1.6 to +0.2 m). The same numbers came out of an
 // independent Python evaluation of Table 20-IV on the same files.
 TEST(BroadcastVsPrecise, IgsDay20100701) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kSp320100701);
+  VISORS_REQUIRE_GNSS_DATA(test::kSp320100701);
   const Comparison c = compare(test::kBrdc20100701, test::kSp320100701);
   EXPECT_EQ(c.satellites, 30);
   EXPECT_EQ(c.samples, 2880);
@@ -95,7 +95,7 @@ TEST(BroadcastVsPrecise, IgsDay20100701) {
 // The next day, a second independent data set: measured 1.803 m 3D RMS (1.506 m without the radial
 // offsets), 30 satellites, worst G09 3.04 m.
 TEST(BroadcastVsPrecise, IgsDay20100702) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kSp320100702);
+  VISORS_REQUIRE_GNSS_DATA(test::kSp320100702);
   const Comparison c = compare(test::kBrdc20100702, test::kSp320100702);
   EXPECT_GE(c.satellites, 29);
   EXPECT_LT(c.rms_3d_m, 2.5);

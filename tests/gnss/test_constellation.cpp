@@ -21,7 +21,7 @@ EphemerisSet screened(const char* name) {
 
 // A zero move is the identity (up to the node/anomaly wrap) within the fit interval.
 TEST(Constellation, ZeroMoveKeepsTheOrbit) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kNya2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kNya2024);
   const auto set = screened(test::kNya2024);
   const core::GpsTime t = gps("2024-05-07T12:00:00");
   const BroadcastEphemeris* record = set.select(5, t);
@@ -36,7 +36,7 @@ TEST(Constellation, ZeroMoveKeepsTheOrbit) {
 // secular model), up to IDOT (set to 0 by the move; IDOT * 1 week ~ 1e-10 * 6e5 = 6e-5 rad...)
 // so compare with a copy of the record whose IDOT is zeroed.
 TEST(Constellation, MoveIsTheRecordsOwnSecularPropagation) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kNya2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kNya2024);
   const auto set = screened(test::kNya2024);
   BroadcastEphemeris record = *set.select(7, gps("2024-05-07T12:00:00"));
   record.idot_radps = 0.0;
@@ -51,8 +51,8 @@ TEST(Constellation, MoveIsTheRecordsOwnSecularPropagation) {
 // moved to each usable record of NYA1 (2024-05-07) and compared at that record's t_oe. Measured:
 // 152 records, 74 km RMS, 166 km worst (constellation.hpp). The bounds leave ~30 % margin.
 TEST(Constellation, ThirtySixDayMoveErrorOnRealFiles) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kHert2024);
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kNya2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kHert2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kNya2024);
   const auto source = screened(test::kHert2024);
   const auto target = screened(test::kNya2024);
   double sum_squares = 0.0, worst = 0.0;
@@ -74,7 +74,7 @@ TEST(Constellation, ThirtySixDayMoveErrorOnRealFiles) {
 }
 
 TEST(Constellation, MissionEpochFromTheNyaFile) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kNya2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kNya2024);
   const auto set = screened(test::kNya2024);
   const auto constellation = GpsConstellation::from_broadcast(set, gps("2024-05-07T12:00:00"), gps("2024-10-01T00:00:00"));
   ASSERT_TRUE(constellation.ok()) << constellation.error().describe();
@@ -96,7 +96,7 @@ TEST(Constellation, NoUsableRecordIsAnError) {
 }
 
 TEST(Constellation, DuplicatePrnIsRejected) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kNya2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kNya2024);
   const auto set = screened(test::kNya2024);
   const BroadcastEphemeris g5 = *set.select(5, gps("2024-05-07T12:00:00"));
   const BroadcastEphemeris records[] = {g5, g5};

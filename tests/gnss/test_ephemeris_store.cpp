@@ -23,7 +23,7 @@ class EphemerisStoreTest : public ::testing::Test {
     nav_ = new files::NavigationFile(std::move(file).value());
   }
   static void TearDownTestSuite() { delete nav_; }
-  void SetUp() override { VISORS_SKIP_WITHOUT_GNSS_DATA(test::kBrdc20100701); }
+  void SetUp() override { VISORS_REQUIRE_GNSS_DATA(test::kBrdc20100701); }
 
   // A healthy record of PRN 12 (its first in the file).
   static BroadcastEphemeris healthy() {

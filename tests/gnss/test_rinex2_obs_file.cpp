@@ -41,7 +41,7 @@ std::vector<int> prns(const ObservationEpoch& e) {
 //           17 + 120 + 948 + 6 = 1091 and 17 + 120 + 1039 + 2 = 1178 lines, what wc -l reports.
 
 TEST(Rinex2Obs, GsiStation0759Header) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi0759Obs);
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi0759Obs);
   const auto obs = read_rinex_observations(test::gnss_data(test::kGsi0759Obs));
   ASSERT_TRUE(obs.ok()) << obs.error().describe();
   const ObservationHeader& h = obs->header;
@@ -66,7 +66,7 @@ TEST(Rinex2Obs, GsiStation0759Header) {
 }
 
 TEST(Rinex2Obs, GsiStation0759Epochs) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi0759Obs);
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi0759Obs);
   const auto obs = read_rinex_observations(test::gnss_data(test::kGsi0759Obs));
   ASSERT_TRUE(obs.ok()) << obs.error().describe();
   ASSERT_EQ(obs->epochs.size(), 120u);          // file comment: grep of the epoch lines
@@ -109,7 +109,7 @@ TEST(Rinex2Obs, GsiStation0759Epochs) {
 // and 924 L2 values, 10 L1 values with LLI 1 (loss of lock), 9 L2 values with LLI 5 (loss of
 // lock + anti-spoofing).
 TEST(Rinex2Obs, GsiStation0759Counts) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi0759Obs);
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi0759Obs);
   const auto obs = read_rinex_observations(test::gnss_data(test::kGsi0759Obs));
   ASSERT_TRUE(obs.ok()) << obs.error().describe();
   std::size_t l1 = 0, l2 = 0, l1_slips = 0, l2_slips = 0;
@@ -128,7 +128,7 @@ TEST(Rinex2Obs, GsiStation0759Counts) {
 }
 
 TEST(Rinex2Obs, GsiStation3040) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kGsi3040Obs);
+  VISORS_REQUIRE_GNSS_DATA(test::kGsi3040Obs);
   const auto obs = read_rinex_observations(test::gnss_data(test::kGsi3040Obs));
   ASSERT_TRUE(obs.ok()) << obs.error().describe();
   // line 9 "APPROX POSITION XYZ"

@@ -16,7 +16,7 @@ core::GpsTime gps(const char* iso) { return core::GpsTime::parse(iso, core::Time
 
 // Reference: the header and first record of brdc1820.10n (lines 4-16, quoted values).
 TEST(RinexNav, Rinex2HeaderAndFirstRecord) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kBrdc20100701);
+  VISORS_REQUIRE_GNSS_DATA(test::kBrdc20100701);
   const auto nav = read_rinex_navigation(test::gnss_data(test::kBrdc20100701));
   ASSERT_TRUE(nav.ok()) << nav.error().describe();
   EXPECT_DOUBLE_EQ(nav->version, 2.0);
@@ -41,7 +41,7 @@ TEST(RinexNav, Rinex2HeaderAndFirstRecord) {
 // Reference: SOURCES.md section 4 (231 records, G01-G32; HERT mixes D and E exponents) and the
 // file's header lines 3-6.
 TEST(RinexNav, Rinex304HertFile) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kHert2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kHert2024);
   const auto nav = read_rinex_navigation(test::gnss_data(test::kHert2024));
   ASSERT_TRUE(nav.ok()) << nav.error().describe();
   EXPECT_DOUBLE_EQ(nav->version, 3.04);
@@ -59,7 +59,7 @@ TEST(RinexNav, Rinex304HertFile) {
 }
 
 TEST(RinexNav, Rinex305NyaFile) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kNya2024);
+  VISORS_REQUIRE_GNSS_DATA(test::kNya2024);
   const auto nav = read_rinex_navigation(test::gnss_data(test::kNya2024));
   ASSERT_TRUE(nav.ok()) << nav.error().describe();
   EXPECT_EQ(nav->records.size(), 216u);  // SOURCES.md: 216 records, 31 PRNs, G01 absent
@@ -138,7 +138,7 @@ namespace {
 // Writing brdc1820.10n as RINEX 3.05 and reading it back gives every record again, to the
 // 12-digit mantissa of the format (relative 5e-13) and exactly for the integers and times.
 TEST(RinexNav, Rinex3WriteReadRoundTrip) {
-  VISORS_SKIP_WITHOUT_GNSS_DATA(test::kBrdc20100701);
+  VISORS_REQUIRE_GNSS_DATA(test::kBrdc20100701);
   const auto original = read_rinex_navigation(test::gnss_data(test::kBrdc20100701));
   ASSERT_TRUE(original.ok());
   test::TempFile file("", ".rnx");

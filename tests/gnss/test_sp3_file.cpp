@@ -22,7 +22,7 @@ class Sp3File : public ::testing::Test {
     orbit_ = new Sp3Orbit(std::move(orbit).value());
   }
   static void TearDownTestSuite() { delete orbit_; }
-  void SetUp() override { VISORS_SKIP_WITHOUT_GNSS_DATA(test::kSp320100701); }
+  void SetUp() override { VISORS_REQUIRE_GNSS_DATA(test::kSp320100701); }
   static inline Sp3Orbit* orbit_ = nullptr;
 };
 

@@ -115,7 +115,7 @@ class GpsReceiverWorld : public ::testing::Test {
     constellation_.reset();
   }
   void SetUp() override {
-    if (!have_mission_nav()) GTEST_SKIP() << kMissionNavFile << " not found: set VISORS_DATA_PATH";
+    if (!have_mission_nav()) GTEST_FAIL() << kMissionNavFile << " not found: set VISORS_DATA_PATH";
   }
   static sim::GpsReceiverSettings settings() {
     sim::GpsReceiverSettings s;

@@ -241,7 +241,7 @@ class ScienceLegWithGps : public ::testing::Test {
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
   void SetUp() override {
-    if (!have_gps_constellation()) GTEST_SKIP() << "the GPS navigation file is not in the data search path (VISORS_DATA_PATH)";
+    if (!have_gps_constellation()) GTEST_FAIL() << "the GPS navigation file is not in the data search path (VISORS_DATA_PATH)";
   }
   static const nlohmann::json& nav(const char* craft) { return summary_["navigation"][craft]; }
   static inline std::filesystem::path dir_;
@@ -304,7 +304,7 @@ TEST_F(ScienceLegWithGps, WritesTheNavigationTimeSeries) {
 // Same seed, same bits, with the receivers and the filters in the loop, and whether the two flight
 // components step side by side on two threads (run a) or in turn on one (run b).
 TEST(CampaignRunWithGps, SameSeedSameResultsBitForBitOnOneOrTwoThreads) {
-  if (!have_gps_constellation()) GTEST_SKIP() << "the GPS navigation file is not in the data search path";
+  if (!have_gps_constellation()) GTEST_FAIL() << "the GPS navigation file is not in the data search path";
   constexpr const char* kShort = R"(
 [campaign]
 standby_s = 0.0

@@ -51,7 +51,7 @@ FaultRun run(const std::string& name) {
 class FaultScenario : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!core::files::find_data_file(GnssSettings{}.nav_file)) GTEST_SKIP() << "the GPS navigation file is not in the data search path";
+    if (!core::files::find_data_file(GnssSettings{}.nav_file)) GTEST_FAIL() << "the GPS navigation file is not in the data search path";
   }
   static void expect_safe(const FaultRun& r) {
     EXPECT_EQ(r.summary["safety_violations"].get<int>(), 0);

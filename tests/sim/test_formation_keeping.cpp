@@ -230,7 +230,7 @@ std::pair<double, double> run_and_measure(bool keeping) {
 // the separation at the alignment point, not the envelope; the random pairs (8 mm/s per burst,
 // 1/3 orbit apart) swing dlambda by up to ~45 m between bursts. Both runs ~7 s each.
 TEST(FormationKeepingRun, TwelveHoursStayOnTheScienceFormationOnlyWithKeeping) {
-  if (!visors::core::files::find_data_file(kNavFile)) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNavFile)) GTEST_FAIL() << kNavFile << " not found: set VISORS_DATA_PATH";
   const auto [on_min, on_max] = run_and_measure(true);
   const auto [off_min, off_max] = run_and_measure(false);
   std::printf("keeping: separation %.2f .. %.2f m; without: %.2f .. %.2f m\n", on_min, on_max, off_min, off_max);

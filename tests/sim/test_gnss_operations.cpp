@@ -138,7 +138,7 @@ class GnssCampaignRun : public ::testing::Test {
     truth_ = new std::map<std::string, std::vector<TruthRow>>(read_truth(run_->dir));
   }
   void SetUp() override {
-    if (run_ == nullptr) GTEST_SKIP() << kNavFile << " not found (VISORS_DATA_PATH) or the run failed";
+    if (run_ == nullptr) GTEST_FAIL() << kNavFile << " not found (VISORS_DATA_PATH) or the run failed";
   }
   static void TearDownTestSuite() {
     if (run_ != nullptr) std::filesystem::remove_all(run_->dir);
@@ -305,7 +305,7 @@ class GnssManeuverRun : public ::testing::Test {
     }
   }
   void SetUp() override {
-    if (with_ == nullptr) GTEST_SKIP() << kNavFile << " not found (VISORS_DATA_PATH) or the runs failed";
+    if (with_ == nullptr) GTEST_FAIL() << kNavFile << " not found (VISORS_DATA_PATH) or the runs failed";
   }
   static void TearDownTestSuite() {
     for (SimRun* r : {with_, without_}) {
@@ -465,7 +465,7 @@ TEST(GnssOperationsPlan, LrfEpochsFollowTheWindows) {
 // direction; propulsion.hpp), both spacecraft, many pieces: 27 bursts x 4 pieces x 2 in 5000 s.
 
 TEST(GnssManeuverErrors, ExecutionErrorsHaveTheMissionSpread) {
-  if (!have_data()) GTEST_SKIP() << kNavFile << " not found (VISORS_DATA_PATH)";
+  if (!have_data()) GTEST_FAIL() << kNavFile << " not found (VISORS_DATA_PATH)";
   const CampaignScenario s = parse(scenario(5000.0, "", "[gnss.maneuvers]\nspacecraft = \"both\"\nbursts_per_orbit = 30\n"
                                                         "dv_mps = 0.0015\nfirst_burst_s = 10.0\n"));
   SimRun r;
@@ -499,7 +499,7 @@ TEST(GnssManeuverErrors, ExecutionErrorsHaveTheMissionSpread) {
 // propulsion's 0.022 N s maximum (propulsion.hpp): an error naming gnss.maneuvers.dv_mps before
 // the run.
 TEST(GnssManeuverErrors, UnexecutableDvIsNamed) {
-  if (!have_data()) GTEST_SKIP() << kNavFile << " not found (VISORS_DATA_PATH)";
+  if (!have_data()) GTEST_FAIL() << kNavFile << " not found (VISORS_DATA_PATH)";
   const CampaignScenario s = parse(scenario(100.0, "", "[gnss.maneuvers]\nspacecraft = \"dsc\"\n"));
   SimRun r;
   const auto dir = out_dir("dsc_dv");

@@ -67,7 +67,7 @@ class GnssSimulation : public ::testing::Test {
     summary_ = new nlohmann::json(result->summary);
   }
   void SetUp() override {
-    if (summary_ == nullptr) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH to the shared data folder";
+    if (summary_ == nullptr) GTEST_FAIL() << kNavFile << " not found in data/ nor VISORS_DATA_PATH (data/SOURCES.md)";
   }
   static void TearDownTestSuite() {
     std::filesystem::remove_all(*dir_);
@@ -155,7 +155,7 @@ TEST(GnssScenario, MissingNavigationFileIsNamed) {
 
 // Same seed, same measurements (deterministic random streams per model).
 TEST(GnssScenario, SameSeedSameTruth) {
-  if (!visors::core::files::find_data_file(kNavFile)) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNavFile)) GTEST_FAIL() << kNavFile << " not found: set VISORS_DATA_PATH";
   const auto s = campaign_from_toml(scenario(20.0, "rinex = false\n")).value();
   const auto a = out_dir("a"), b = out_dir("b");
   ASSERT_TRUE(run_gnss_simulation(s, a).ok());
@@ -393,7 +393,7 @@ namespace {
 // exactly where channels_truth.csv has a half cycle, and a receiver's file has exactly the epochs
 // its truth rows mark recorded (data gaps), the other receiver's file its own.
 TEST(GnssSimulationRealism, RinexFlagsAndGapsFollowTheTruth) {
-  if (!visors::core::files::find_data_file(kNavFile)) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNavFile)) GTEST_FAIL() << kNavFile << " not found: set VISORS_DATA_PATH";
   const auto dir = out_dir("realism");
   const std::string receiver =
       "[gnss.receiver]\nhalf_cycle_slip_probability = 0.5\nhalf_cycle_resolve_s = 20\ndata_gap_probability = 0.02\n"
@@ -531,7 +531,7 @@ namespace {
 // after a frame start (35 s from a lock at a whole epoch: subframe 1 at 30-36, 2 at 36-42, 3 at
 // 12-18 s of the frame), data sets every 600 s (the second from 300 s).
 TEST(GnssSimulationDecoding, EachReceiverDecodesEachDataSetOnceByTheFrameRule) {
-  if (!visors::core::files::find_data_file(kNavFile)) GTEST_SKIP() << kNavFile << " not found: set VISORS_DATA_PATH";
+  if (!visors::core::files::find_data_file(kNavFile)) GTEST_FAIL() << kNavFile << " not found: set VISORS_DATA_PATH";
   const auto dir = out_dir("decoding");
   const std::string text = scenario(420.0, visors::test::kWhiteReceiverToml +
                                                 "[gnss.broadcast_errors]\nrefresh_s = 600.0\n[time]\nstart_gps = \"2024-10-01T00:00:07\"\n");

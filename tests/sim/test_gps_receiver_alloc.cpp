@@ -10,7 +10,7 @@ namespace visors::sim {
 namespace {
 
 TEST(GpsReceiverAlloc, MeasureAllocatesNothing) {
-  if (!test::have_mission_nav()) GTEST_SKIP() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
+  if (!test::have_mission_nav()) GTEST_FAIL() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
   const gnss::GpsConstellation constellation = test::mission_constellation();
   const auto truth = GpsSatelliteTruth::create(constellation, {}, RandomStream(7, "gps.satellites")).value();
   GpsReceiverSettings settings;
@@ -39,7 +39,7 @@ namespace {
 // 40 m apart on the test world's circular orbit; the broadcast records are loaded before the
 // counted steps.
 TEST(OnboardNavigationAlloc, StepAllocatesNothing) {
-  if (!test::have_mission_nav()) GTEST_SKIP() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
+  if (!test::have_mission_nav()) GTEST_FAIL() << test::kMissionNavFile << " not found: set VISORS_DATA_PATH";
   const gnss::GpsConstellation constellation = test::mission_constellation();
   const auto truth = GpsSatelliteTruth::create(constellation, {}, RandomStream(7, "gps.satellites")).value();
   GpsReceiverSettings settings;

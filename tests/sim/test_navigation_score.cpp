@@ -97,7 +97,7 @@ class RecordScoreReplay : public ::testing::Test {
   }
   static void TearDownTestSuite() { world_.reset(); }
   void SetUp() override {
-    if (!have_gps_constellation()) GTEST_SKIP() << "the GPS navigation file is not in the data search path (VISORS_DATA_PATH)";
+    if (!have_gps_constellation()) GTEST_FAIL() << "the GPS navigation file is not in the data search path (VISORS_DATA_PATH)";
   }
 
   static Craft make_craft(gnc::Spacecraft id, const core::StateVector& x) {
