@@ -125,7 +125,9 @@ visors::sim::CampaignScenario scenario_from(const std::string& path, const std::
   } else {
     const auto found = visors::core::files::find_data_file(path);
     if (!found) throw py::value_error("scenario: '" + path + "' not found (nor in VISORS_DATA_PATH or data/)");
-    text = visors::core::files::read_text_file(*found).value_or("");
+    auto content = visors::core::files::read_text_file(*found);
+    if (!content) throw py::value_error("scenario: " + found->string() + ": cannot be read");
+    text = std::move(*content);
     source = found->string();
   }
   auto scenario = visors::sim::campaign_from_toml(text);

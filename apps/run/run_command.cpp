@@ -42,7 +42,12 @@ std::optional<sim::CampaignScenario> load_scenario(const std::string& scenario_p
     fmt::print(stderr, "{}: scenario: '{}' not found (nor in VISORS_DATA_PATH or data/)\n", command, scenario_path);
     return std::nullopt;
   }
-  auto scenario = sim::campaign_from_toml(core::files::read_text_file(*path).value_or(""));
+  const auto text = core::files::read_text_file(*path);
+  if (!text) {
+    fmt::print(stderr, "{}: {}: cannot be read\n", command, path->string());
+    return std::nullopt;
+  }
+  auto scenario = sim::campaign_from_toml(*text);
   if (!scenario.ok()) {
     fmt::print(stderr, "{}: {}: {}\n", command, path->string(), scenario.error().describe());
     return std::nullopt;

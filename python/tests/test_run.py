@@ -93,3 +93,4 @@ def test_negative_seed_is_refused():
 def test_scenario_of_the_wrong_type_is_refused():
     with pytest.raises(ValueError, match=r"^scenario: must be a path or a dict"):
         visors.run(42)
+
