@@ -80,19 +80,24 @@ void raise_on_exit_code(int code, const std::string& command, const std::string&
 
 // JSON (the scenario given as a dict, serialised by the Python side) -> a TOML table.
 toml::table to_toml_table(const Json& object, const std::string& path);
+toml::array to_toml_array(const Json& array, const std::string& path);
+
+// Passes `add` the TOML value of one JSON value (tables and arrays converted recursively).
+template <typename Add>
+void add_toml_value(const Json& v, const std::string& field, Add add) {
+  if (v.is_object()) add(to_toml_table(v, field));
+  else if (v.is_array()) add(to_toml_array(v, field));
+  else if (v.is_boolean()) add(v.get<bool>());
+  else if (v.is_number_integer()) add(v.get<std::int64_t>());
+  else if (v.is_number()) add(v.get<double>());
+  else if (v.is_string()) add(v.get<std::string>());
+  else throw py::value_error(field + ": must be a number, a string, a bool, a list or a dict");
+}
 
 toml::array to_toml_array(const Json& array, const std::string& path) {
   toml::array out;
   for (std::size_t k = 0; k < array.size(); ++k) {
-    const Json& v = array[k];
-    const std::string field = path + "[" + std::to_string(k) + "]";
-    if (v.is_object()) out.push_back(to_toml_table(v, field));
-    else if (v.is_array()) out.push_back(to_toml_array(v, field));
-    else if (v.is_boolean()) out.push_back(v.get<bool>());
-    else if (v.is_number_integer()) out.push_back(v.get<std::int64_t>());
-    else if (v.is_number()) out.push_back(v.get<double>());
-    else if (v.is_string()) out.push_back(v.get<std::string>());
-    else throw py::value_error(field + ": must be a number, a string, a bool, a list or a dict");
+    add_toml_value(array[k], path + "[" + std::to_string(k) + "]", [&](auto&& value) { out.push_back(std::move(value)); });
   }
   return out;
 }
@@ -100,14 +105,7 @@ toml::array to_toml_array(const Json& array, const std::string& path) {
 toml::table to_toml_table(const Json& object, const std::string& path) {
   toml::table out;
   for (const auto& [key, v] : object.items()) {
-    const std::string field = path.empty() ? key : path + "." + key;
-    if (v.is_object()) out.insert(key, to_toml_table(v, field));
-    else if (v.is_array()) out.insert(key, to_toml_array(v, field));
-    else if (v.is_boolean()) out.insert(key, v.get<bool>());
-    else if (v.is_number_integer()) out.insert(key, v.get<std::int64_t>());
-    else if (v.is_number()) out.insert(key, v.get<double>());
-    else if (v.is_string()) out.insert(key, v.get<std::string>());
-    else throw py::value_error(field + ": must be a number, a string, a bool, a list or a dict");
+    add_toml_value(v, path.empty() ? key : path + "." + key, [&](auto&& value) { out.insert(key, std::move(value)); });
   }
   return out;
 }
@@ -250,29 +248,16 @@ py::dict integer_least_squares(const Eigen::VectorXd& a, const Eigen::MatrixXd& 
 }
 
 
-// Keplerian elements from the dict the tools also take: {a, e, i, raan, argp, M} [m, rad], each a
-// finite number, no other key; validated (the error names "<name>.<field>").
-visors::astro::KeplerianElements elements_from(const py::dict& d, const std::string& name) {
-  static const char* const kKeys[] = {"a", "e", "i", "raan", "argp", "M"};
-  for (const auto& item : d) {
-    const std::string key = py::str(item.first);
-    bool known = false;
-    for (const char* k : kKeys) known = known || key == k;
-    if (!known) throw py::value_error(name + "." + key + ": is not a recognised field");
+// Keplerian elements {a, e, i, raan, argp, M} [m, rad] as JSON text (the Python side serialises
+// the dict), read and validated as the tools read them (errors name "<name>.<field>").
+visors::astro::KeplerianElements elements_from(const std::string& elements_json, const std::string& name) {
+  try {
+    return visors::tools::take(visors::astro::validate_keplerian(
+                                   visors::tools::require_keplerian(Json::parse(elements_json), name)),
+                               name);
+  } catch (const visors::tools::ToolInputError& e) {
+    throw py::value_error(e.what());
   }
-  double v[6];
-  for (int k = 0; k < 6; ++k) {
-    if (!d.contains(kKeys[k])) throw py::value_error(name + "." + kKeys[k] + ": is required but missing");
-    try {
-      v[k] = py::cast<double>(d[kKeys[k]]);
-    } catch (const py::cast_error&) {
-      throw py::value_error(name + "." + kKeys[k] + ": must be a number");
-    }
-  }
-  const visors::astro::KeplerianElements elements{v[0], v[1], v[2], v[3], v[4], v[5]};
-  const auto valid = visors::astro::validate_keplerian(elements);
-  if (!valid.ok()) throw py::value_error(name + "." + valid.error().describe());
-  return valid.value();
 }
 
 template <typename T>
@@ -303,7 +288,7 @@ class PyStochasticMpc {
   void set_target(const Eigen::Matrix<double, 6, 1>& roe_target, double tf) {
     (void)value_or_raise(mpc_->set_target(finite_roe(roe_target, "roe_target"), tf));
   }
-  py::dict step(double t, const py::dict& chief_mean, const Eigen::Matrix<double, 6, 1>& roe_estimate,
+  py::dict step(double t, const std::string& chief_mean, const Eigen::Matrix<double, 6, 1>& roe_estimate,
                 const Eigen::Matrix<double, 6, 6>& covariance) {
     const auto chief = elements_from(chief_mean, "chief_mean");
     const auto result = value_or_raise(mpc_->step(t, chief, roe_estimate, covariance));
@@ -363,7 +348,7 @@ PYBIND11_MODULE(_visors, m) {
   m.def("tool", &tool, py::arg("name"), py::arg("request_json"));
   m.def("tool_names", &tool_names);
   m.def("integer_least_squares", &integer_least_squares, py::arg("a"), py::arg("Q"), py::arg("candidates"));
-  m.def("control_input_matrix", [](const py::dict& chief, double mu) {
+  m.def("control_input_matrix", [](const std::string& chief, double mu) {
     return Eigen::Matrix<double, 6, 3>(visors::astro::control_input_matrix(elements_from(chief, "chief"), mu));
   }, py::arg("chief"), py::arg("mu"));
   py::class_<PyStochasticMpc>(m, "StochasticMpc")

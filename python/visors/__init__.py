@@ -79,12 +79,16 @@ def _scenario_arguments(scenario: str | os.PathLike | Mapping[str, Any]) -> tupl
     raise ValueError(f"scenario: must be a path or a dict, not {type(scenario).__name__}")
 
 
+def _integer(value: Any, field: str, minimum: int) -> int:
+    """An integer >= minimum (0 or 1), named `field` in the error."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
+        kind = "non-negative" if minimum == 0 else "positive"
+        raise ValueError(f"{field}: must be a {kind} integer, not {value!r}")
+    return int(value)
+
+
 def _seed(seed: int | None) -> int | None:
-    if seed is None:
-        return None
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise ValueError(f"seed: must be a non-negative integer, not {seed!r}")
-    return int(seed)
+    return None if seed is None else _integer(seed, "seed", 0)
 
 
 @contextlib.contextmanager
@@ -169,9 +173,7 @@ def mc(campaign: str | os.PathLike, out: str | os.PathLike | None = None, *, thr
     options = _visors.McOptions()
     options.campaign = os.fspath(campaign)
     options.out = "" if out is None else os.fspath(out)
-    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 0:
-        raise ValueError(f"threads: must be a non-negative integer, not {threads!r}")
-    options.threads = int(threads)
+    options.threads = _integer(threads, "threads", 0)
     options.resume = bool(resume)
     options.keep_runs = bool(keep_runs)
     _visors.mc(options)
@@ -300,9 +302,7 @@ def integer_least_squares(a: Any, Q: Any, candidates: int = 2) -> dict:
         raise ValueError(f"a: must be a vector, not of shape {a.shape}")
     if Q.shape != (a.size, a.size):
         raise ValueError(f"Q: must be {a.size} x {a.size} (the size of a), not {Q.shape}")
-    if isinstance(candidates, bool) or not isinstance(candidates, (int, np.integer)) or candidates < 1:
-        raise ValueError(f"candidates: must be a positive integer, not {candidates!r}")
-    return _visors.integer_least_squares(a, Q, int(candidates))
+    return _visors.integer_least_squares(a, Q, _integer(candidates, "candidates", 1))
 
 
 def _array(value: Any, shape: tuple[int, ...], field: str) -> np.ndarray:
@@ -317,10 +317,11 @@ def _array(value: Any, shape: tuple[int, ...], field: str) -> np.ndarray:
     return array
 
 
-def _elements(value: Any, field: str) -> dict:
+def _elements(value: Any, field: str) -> str:
+    """Keplerian elements {a, e, i, raan, argp, M} [m, rad] as the JSON the C++ side reads."""
     if not isinstance(value, Mapping):
         raise ValueError(f"{field}: must be a dict {{a, e, i, raan, argp, M}} [m, rad]")
-    return {str(k): (float(v) if isinstance(v, (np.floating, np.integer)) else v) for k, v in value.items()}
+    return _to_json(value, field)
 
 
 def control_input_matrix(chief: Mapping[str, float], mu: float = MU_EARTH) -> np.ndarray:
