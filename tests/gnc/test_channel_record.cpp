@@ -229,7 +229,7 @@ TEST(ChannelRecord, GroundCommandLayoutByHand) {
   RecordBuffer buffer{};
   const GroundCommand m{core::GpsTime::from_nanoseconds(0x0102030405060708), GroundCommand::Kind::kEscape, -2};
   ASSERT_EQ(encode(m, 0xA0B0C0D0u, buffer), 32u);
-  const std::vector<std::uint8_t> expected = bytes({'V', 'G', 4, 1, 32, 0, 0, 0,                  // magic, channel, version, size, reserved
+  const std::vector<std::uint8_t> expected = bytes({'V', 'G', 4, 2, 32, 0, 0, 0,                  // magic, channel, version, size, reserved
                                                     0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01,  // time tag
                                                     0xD0, 0xC0, 0xB0, 0xA0,                          // sequence
                                                     4, 0, 0, 0, 0xFE, 0xFF, 0xFF, 0xFF});          // kind, padding, -2
@@ -401,7 +401,7 @@ TEST(ChannelRecord, NavigationTelemetryRoundTrip) {
   RecordHeader h;
   const NavigationTelemetry in = navigation_telemetry();
   const NavigationTelemetry out = round_trip(in, Channel::kNavigationTelemetry, 19, h);
-  EXPECT_EQ(record_size(Channel::kNavigationTelemetry), 648u);
+  EXPECT_EQ(record_size(Channel::kNavigationTelemetry), 1264u);  // 20 + 1240 + 4 (the layout in channel_record.hpp)
   EXPECT_EQ(out.t, in.t);
   EXPECT_EQ(h.sequence, 19u);
   EXPECT_EQ(out.has_solution, in.has_solution);
@@ -441,6 +441,30 @@ TEST(ChannelRecord, NavigationTelemetryRoundTrip) {
   EXPECT_EQ(a.ephemerides, b.ephemerides);
 }
 
+// A partial fix of two integer combinations of the three double differences: each combination's
+// coefficients (negative and beyond 16 bits too) and integer come back.
+NavigationTelemetry partial_fix_telemetry() {
+  NavigationTelemetry m = navigation_telemetry();
+  m.full_fix = false;
+  for (FixedDoubleDifference& d : m.dd) d.integer_cycles = 0;
+  m.combination_count = 2;
+  m.combinations[0] = FixedCombination{{1, -1, 0}, -19};
+  m.combinations[1] = FixedCombination{{-70000, 3, 2}, 840002469134};
+  return m;
+}
+
+TEST(ChannelRecord, NavigationTelemetryOfAPartialFixRoundTrip) {
+  RecordHeader h;
+  const NavigationTelemetry in = partial_fix_telemetry();
+  const NavigationTelemetry out = round_trip(in, Channel::kNavigationTelemetry, 21, h);
+  EXPECT_FALSE(out.full_fix);
+  ASSERT_EQ(out.combination_count, 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(out.combinations[i].dd_coefficients, in.combinations[i].dd_coefficients) << i;
+    EXPECT_EQ(out.combinations[i].integer_cycles, in.combinations[i].integer_cycles) << i;
+  }
+}
+
 // Before the cold start: no solution, no fix, every double difference unused (all 0 bytes).
 TEST(ChannelRecord, NavigationTelemetryWithoutSolutionRoundTrip) {
   NavigationTelemetry in;
@@ -451,6 +475,7 @@ TEST(ChannelRecord, NavigationTelemetryWithoutSolutionRoundTrip) {
   EXPECT_FALSE(out.has_solution);
   EXPECT_FALSE(out.fix_applied);
   EXPECT_EQ(out.dd_count, 0);
+  EXPECT_EQ(out.combination_count, 0);
   EXPECT_EQ(out.counters.ephemerides[0], 9);
 }
 
@@ -525,7 +550,7 @@ RecordStatus resealed(const Message& m, std::size_t offset, std::uint8_t value) 
   return decode(std::span(buffer).first(n), out, h);
 }
 
-TEST(ChannelRecord, AnotherVersionIsNamed) { EXPECT_EQ(resealed(tone(), 3, 2), RecordStatus::kBadVersion); }
+TEST(ChannelRecord, AnotherVersionIsNamed) { EXPECT_EQ(resealed(tone(), 3, 1), RecordStatus::kBadVersion); }  // the former layout
 
 TEST(ChannelRecord, AnUnknownChannelIsNamed) { EXPECT_EQ(resealed(tone(), 2, 12), RecordStatus::kUnknownChannel); }
 
@@ -563,7 +588,7 @@ TEST(ChannelRecord, ACorruptedNavigationTelemetryIsRefused) {
   constexpr std::size_t kDd = kHeaderBytes + 232;  // the first double difference
   EXPECT_EQ(resealed(m, kHeaderBytes + 5, 12), RecordStatus::kBadEnumeration);  // 12 > 11 double differences
   EXPECT_EQ(resealed(m, kHeaderBytes + 4, 2), RecordStatus::kBadEnumeration);   // full_fix = 2
-  EXPECT_EQ(resealed(m, kHeaderBytes + 7, 1), RecordStatus::kBadPadding);
+  EXPECT_EQ(resealed(m, kHeaderBytes + 7, 4), RecordStatus::kBadEnumeration);  // 4 combinations > 3 double differences
   EXPECT_EQ(resealed(m, kDd + 3 * 24 + 8, 1), RecordStatus::kBadPadding);        // the 4th of 3: unused
   EXPECT_EQ(resealed(m, kDd + 1, 1), RecordStatus::kBadPadding);                 // the 1st's padding
   EXPECT_EQ(resealed(m, kDd + 8, 99), RecordStatus::kAccepted);                  // an integer: any value
@@ -575,6 +600,19 @@ TEST(ChannelRecord, ACorruptedNavigationTelemetryIsRefused) {
   RecordHeader h;
   EXPECT_EQ(decode(std::span(buffer).first(n), out, h), RecordStatus::kBadChecksum);
   EXPECT_EQ(out.dd_count, -1);
+}
+
+// The combinations of a partial fix corrupted and re-sealed: a coefficient beyond the record's
+// double differences, the padding after the coefficients, an unused combination.
+TEST(ChannelRecord, ACorruptedFixedCombinationIsRefused) {
+  const NavigationTelemetry m = partial_fix_telemetry();
+  constexpr std::size_t kCombinations = kHeaderBytes + 232 + 11 * 24;  // the first combination
+  constexpr std::size_t kCombinationBytes = 11 * 4 + 4 + 8;
+  EXPECT_EQ(resealed(m, kCombinations + 3 * 4, 1), RecordStatus::kBadPadding);       // coefficient of a 4th DD
+  EXPECT_EQ(resealed(m, kCombinations + 11 * 4, 1), RecordStatus::kBadPadding);      // the padding
+  EXPECT_EQ(resealed(m, kCombinations + 2 * kCombinationBytes, 1), RecordStatus::kBadPadding);  // the 3rd of 2: unused
+  EXPECT_EQ(resealed(m, kCombinations + 2 * 4, 5), RecordStatus::kAccepted);         // a coefficient: any value
+  EXPECT_EQ(resealed(m, kCombinations + 11 * 4 + 4, 5), RecordStatus::kAccepted);    // an integer: any value
 }
 
 TEST(ChannelRecord, AnUnknownModeIsNamed) { EXPECT_EQ(resealed(crosslink(), kHeaderBytes + 1, 6), RecordStatus::kBadEnumeration); }

@@ -24,6 +24,7 @@
 #include "visors/dynamics/force_model.hpp"
 #include "visors/dynamics/gravity_field.hpp"
 #include "visors/gnc/record_interface.hpp"
+#include "visors/nav/ambiguity_acceptance.hpp"
 #include "visors/nav/orbit_time_update.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 #include "visors/sim/flight_config.hpp"
@@ -82,13 +83,14 @@ class RecordScoreReplay : public ::testing::Test {
     if (!have_gps_constellation()) return;
     scenario_ = default_campaign();
     // On the half-cycle sky (make_craft) the filter of the former defaults (no multipath states,
-    // inflation 12, code as white): its wrong fixes there are what the comparison needs. (The
-    // defaults never become valid in the 480 s on that sky's 5 mm phase; told the 5 mm, they make
-    // no wrong fix.)
+    // inflation 12, code as white) with a loose acceptance (success rate 0.9, ratio 1.5): its
+    // wrong fixes there, full and partial, are what the comparison needs. (The defaults never
+    // become valid in the 480 s on that sky's 5 mm phase; told the 5 mm, they make no wrong fix;
+    // the former defaults with the default acceptance, none either.)
     if (kSky == Sky::kHalfCycles) {
       scenario_.nav_toml =
           "[nav]\nsdcp_multipath_sigma_m = 0.0\nsdcp_correlation_inflation = 12.0\nempirical_along_track_sigma_mps2 = -1.0\n"
-          "code_multipath_sigma_m = 0.0\n";
+          "code_multipath_sigma_m = 0.0\n[nav.acceptance]\nmin_success_rate = 0.9\nmin_ratio = 1.5\n";
     }
     auto world = load_gps_world(scenario_, kSteps + 60.0);
     ASSERT_TRUE(world.ok()) << world.error().describe();
@@ -198,6 +200,19 @@ class RecordScoreReplay : public ::testing::Test {
         }
       }
       partial_fixes_ += r.fix_applied && !r.full_fix ? 1 : 0;
+      if (r.fix_applied && !r.full_fix) check_combinations(r);
+    }
+  }
+
+  // A partial fix's combinations against its own fixed solution, which the fix conditions on
+  // them: sum_j c_j DD_j of the record's fixed-solution double differences equals each integer.
+  static void check_combinations(const gnc::NavigationTelemetry& r) {
+    for (int i = 0; i < r.combination_count; ++i) {
+      const gnc::FixedCombination& c = r.combinations[static_cast<std::size_t>(i)];
+      double sum = 0.0;
+      for (int j = 0; j < r.dd_count; ++j) sum += c.dd_coefficients[static_cast<std::size_t>(j)] * r.dd[static_cast<std::size_t>(j)].fixed_cycles;
+      largest_combination_residual_ = std::max(largest_combination_residual_, std::abs(sum - static_cast<double>(c.integer_cycles)));
+      ++partial_combinations_;
     }
   }
 
@@ -240,7 +255,8 @@ class RecordScoreReplay : public ::testing::Test {
   static inline std::optional<GpsWorld> world_;
   static inline NavigationScore from_component_, from_records_;
   static inline double largest_difference_ = 0.0;
-  static inline int differing_flags_ = 0, valid_samples_ = 0, partial_fixes_ = 0;
+  static inline int differing_flags_ = 0, valid_samples_ = 0, partial_fixes_ = 0, partial_combinations_ = 0;
+  static inline double largest_combination_residual_ = 0.0;
   static inline std::optional<gnc::NavigationTelemetry> planted_;
   static inline std::array<GpsReceiverEpoch, 2> planted_epochs_{};
 };
@@ -272,19 +288,28 @@ TEST_F(ScoreFromRecordsWithHalfCycles, EverySampleIsTheComponentsBitForBit) {
   EXPECT_EQ(largest_difference_, 0.0);
 }
 
-// The wrong fixes and the partial ones, judged from the records (the integers, the fixed
-// solution's values) as from the component's fixed solution.
+// The wrong fixes and the partial ones, judged from the records (a full fix's integers, a
+// partial fix's combinations) as from the component's report and fixed solution.
 TEST_F(ScoreFromRecordsWithHalfCycles, TheWrongFixesAreTheComponents) {
   const nlohmann::json a = from_component_.summary(), b = from_records_.summary();
   EXPECT_EQ(a, b) << a.dump(1) << "\n" << b.dump(1);
-  // there to be compared: measured 18 wrong-fix epochs (the OSC's) and 2 partial fixes (2026-11)
+  // there to be compared: measured 73 wrong-fix epochs (the OSC's) and 28 partial-fix records (2026-11-28)
   EXPECT_GT(b["dsc"]["wrong_fix_epochs"].get<int>() + b["osc"]["wrong_fix_epochs"].get<int>(), 0);
   EXPECT_GT(partial_fixes_, 0);
 }
 
+// Each partial fix carries its integer combinations, at least the fewest a partial fix may have
+// (nav::AcceptanceSettings::min_partial), and its fixed solution satisfies them.
+TEST_F(ScoreFromRecordsWithHalfCycles, APartialFixCarriesTheCombinationsItsSolutionSatisfies) {
+  EXPECT_GE(partial_combinations_, nav::AcceptanceSettings{}.min_partial * partial_fixes_);
+  EXPECT_LT(largest_combination_residual_, 1e-6);
+}
+
 // The same fixed epoch judged from its record (a fresh score with that epoch's phase truth): as
-// sent, no wrong fix; with one integer off by a cycle (through the record's codec), one wrong fix;
-// as a partial fix, its fixed-solution value off by a cycle, one too.
+// sent, no wrong fix; with one integer off by a cycle (through the record's codec), one wrong fix.
+// As a partial fix of two combinations of its double differences (nav/fix_truth.hpp): right
+// combinations, no wrong fix even with a fixed-solution value a cycle off (an unfixed direction);
+// one combination's integer off by a cycle, one wrong fix.
 TEST_F(ScoreFromRecords, APlantedWrongIntegerIsCounted) {
   ASSERT_TRUE(planted_.has_value());
   const auto wrong_fixes = [](const gnc::NavigationTelemetry& record) {
@@ -303,10 +328,17 @@ TEST_F(ScoreFromRecords, APlantedWrongIntegerIsCounted) {
   gnc::NavigationTelemetry wrong = *planted_;
   wrong.dd[static_cast<std::size_t>(wrong.dd_count - 1)].integer_cycles += 1;
   EXPECT_EQ(wrong_fixes(wrong), 1);
+  ASSERT_GE(planted_->dd_count, 2);
   gnc::NavigationTelemetry partial = *planted_;
   partial.full_fix = false;
-  EXPECT_EQ(wrong_fixes(partial), 0);
+  const std::int64_t dd0 = planted_->dd[0].integer_cycles, dd1 = planted_->dd[1].integer_cycles;
+  partial.combination_count = 2;
+  partial.combinations[0] = gnc::FixedCombination{{1, -1}, dd0 - dd1};
+  partial.combinations[1] = gnc::FixedCombination{{2, 3}, 2 * dd0 + 3 * dd1};
+  for (gnc::FixedDoubleDifference& d : partial.dd) d.integer_cycles = 0;
   partial.dd[0].fixed_cycles -= 1.0;
+  EXPECT_EQ(wrong_fixes(partial), 0);
+  partial.combinations[1].integer_cycles += 1;
   EXPECT_EQ(wrong_fixes(partial), 1);
 }
 

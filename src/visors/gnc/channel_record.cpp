@@ -422,6 +422,21 @@ void write_double_differences(Writer& w, const NavigationTelemetry& m, int count
   }
 }
 
+constexpr std::size_t kCombinationBytes = 4 * kTelemetryDoubleDifferences + 4 + 8;
+
+void write_combinations(Writer& w, const NavigationTelemetry& m, int dd_count, int count) {
+  for (int i = 0; i < kTelemetryDoubleDifferences; ++i) {
+    if (i >= count) {
+      w.zeros(kCombinationBytes);
+      continue;
+    }
+    const FixedCombination& c = m.combinations[static_cast<std::size_t>(i)];
+    for (int j = 0; j < kTelemetryDoubleDifferences; ++j) w.i32(j < dd_count ? c.dd_coefficients[static_cast<std::size_t>(j)] : 0);
+    w.zeros(4);
+    w.i64(c.integer_cycles);
+  }
+}
+
 }  // namespace
 
 std::size_t encode(const NavigationTelemetry& m, std::uint32_t sequence, std::span<std::uint8_t> out) {
@@ -430,7 +445,8 @@ std::size_t encode(const NavigationTelemetry& m, std::uint32_t sequence, std::sp
     for (bool b : {m.has_solution, m.valid, m.fixed, m.fix_applied, m.full_fix}) w.u8(b ? 1 : 0);
     w.u8(static_cast<std::uint8_t>(count));
     w.u8(static_cast<std::uint8_t>(m.dd_reference_prn));
-    w.zeros(1);
+    const int combinations = std::clamp(m.combination_count, 0, count);
+    w.u8(static_cast<std::uint8_t>(combinations));
     w.time(m.update_t);
     for (const core::StateVector* x : {&m.dsc_gcrf, &m.osc_gcrf}) {
       w.vector3(x->r);
@@ -441,6 +457,7 @@ std::size_t encode(const NavigationTelemetry& m, std::uint32_t sequence, std::sp
       w.vector3(*v);
     }
     write_double_differences(w, m, count);
+    write_combinations(w, m, count, combinations);
     write_counters(w, m.counters);
   });
 }
@@ -635,6 +652,25 @@ RecordStatus read_double_differences(Reader& r, NavigationTelemetry& m) {
   return RecordStatus::kAccepted;
 }
 
+// The combinations after the first `combination_count`, and each one's coefficients after the
+// first dd_count, must be all 0.
+RecordStatus read_combinations(Reader& r, NavigationTelemetry& m) {
+  for (int i = 0; i < kTelemetryDoubleDifferences; ++i) {
+    if (i >= m.combination_count) {
+      if (!r.zeros(kCombinationBytes)) return RecordStatus::kBadPadding;
+      continue;
+    }
+    FixedCombination& c = m.combinations[static_cast<std::size_t>(i)];
+    for (int j = 0; j < kTelemetryDoubleDifferences; ++j) {
+      c.dd_coefficients[static_cast<std::size_t>(j)] = r.i32();
+      if (j >= m.dd_count && c.dd_coefficients[static_cast<std::size_t>(j)] != 0) return RecordStatus::kBadPadding;
+    }
+    if (!r.zeros(4)) return RecordStatus::kBadPadding;
+    c.integer_cycles = r.i64();
+  }
+  return RecordStatus::kAccepted;
+}
+
 }  // namespace
 
 RecordStatus decode(std::span<const std::uint8_t> in, NavigationTelemetry& message, RecordHeader& header) {
@@ -645,7 +681,8 @@ RecordStatus decode(std::span<const std::uint8_t> in, NavigationTelemetry& messa
     m.dd_count = r.u8();
     if (m.dd_count > kTelemetryDoubleDifferences) return RecordStatus::kBadEnumeration;
     m.dd_reference_prn = r.u8();
-    if (!r.zeros(1)) return RecordStatus::kBadPadding;
+    m.combination_count = r.u8();
+    if (m.combination_count > m.dd_count) return RecordStatus::kBadEnumeration;
     m.update_t = r.time();
     for (core::StateVector* x : {&m.dsc_gcrf, &m.osc_gcrf}) {
       x->r = r.vector3();
@@ -656,6 +693,7 @@ RecordStatus decode(std::span<const std::uint8_t> in, NavigationTelemetry& messa
       *v = r.vector3();
     }
     if (const RecordStatus s = read_double_differences(r, m); s != RecordStatus::kAccepted) return s;
+    if (const RecordStatus s = read_combinations(r, m); s != RecordStatus::kAccepted) return s;
     read_counters(r, m.counters);
     return RecordStatus::kAccepted;
   });

@@ -40,13 +40,14 @@
 //                  navigation_fixed, drag_valid (3 u8), 5 bytes 0, navigation_update
 //                  (i64 ns), differential drag (f64)                                    304
 //   navigation     has_solution, valid, fixed, fix_applied, full_fix (5 u8), dd_count,
-//   telemetry      dd_reference_prn (2 u8), 1 byte 0; update_t (i64 ns); DSC r, v; OSC r, v
-//                  (GCRF; 12 f64); p DSC, p OSC (body; 6 f64); empirical DSC, OSC (RTN;
-//                  6 f64); relative sigma RTN (3 f64); 11 double differences of prn (u8),
-//                  7 bytes 0, integer_cycles (i64), fixed_cycles (f64) (unused all 0);
-//                  counters: epochs joint, alone, refused, fixed, wrong fixes refused,
-//                  impulses applied, late, laser used, rejected, clock jumps (10 i64),
-//                  ephemerides by status (6 i64)                                          624
+//   telemetry      dd_reference_prn, combination_count (3 u8); update_t (i64 ns); DSC r, v;
+//                  OSC r, v (GCRF; 12 f64); p DSC, p OSC (body; 6 f64); empirical DSC, OSC
+//                  (RTN; 6 f64); relative sigma RTN (3 f64); 11 double differences of prn
+//                  (u8), 7 bytes 0, integer_cycles (i64), fixed_cycles (f64) (unused all 0);
+//                  11 fixed combinations of 11 dd_coefficients (i32; 0 beyond dd_count),
+//                  4 bytes 0, integer_cycles (i64) (unused all 0); counters: epochs joint,
+//                  alone, refused, fixed, wrong fixes refused, impulses applied, late, laser
+//                  used, rejected, clock jumps (10 i64), ephemerides by status (6 i64)      1240
 // The crosslink's payload goes on after its 40 bytes above with the navigation part
 // (CrosslinkNavigation): has_epoch, impulse_count, has_range, epoch count (4 u8), 4 bytes 0;
 // epoch time tag (i64 ns); 12 observations of prn, flags (2 u8), 6 bytes 0, code, phase (2 f64)
@@ -94,7 +95,7 @@ enum class Channel : std::uint8_t {
   kNavigationTelemetry = 11,  // with on-board navigation (NavigationTelemetry)
 };
 inline constexpr int kChannels = 11;
-inline constexpr std::uint8_t kRecordVersion = 1;
+inline constexpr std::uint8_t kRecordVersion = 2;  // 2: the navigation telemetry's fixed combinations
 inline constexpr std::size_t kHeaderBytes = 20;
 inline constexpr std::size_t kChecksumBytes = 4;
 
@@ -125,7 +126,7 @@ struct RecordHeader {
 
 /// The whole record's size of a channel [bytes].
 [[nodiscard]] constexpr std::size_t record_size(Channel channel) {
-  constexpr std::size_t kPayload[] = {0, 32, 264, 456, 8, 40, 792, 8, 48, 32, 304, 624};
+  constexpr std::size_t kPayload[] = {0, 32, 264, 456, 8, 40, 792, 8, 48, 32, 304, 1240};
   static_assert(std::size(kPayload) == kChannels + 1, "one payload size per channel");
   return kHeaderBytes + kPayload[static_cast<std::size_t>(channel)] + kChecksumBytes;
 }

@@ -223,6 +223,14 @@ struct FixedDoubleDifference {
   double fixed_cycles = 0.0;
 };
 
+/// One integer combination a partial fix constrains:
+///   sum over j < dd_count of dd_coefficients[j] DD_j = integer_cycles [cycles],
+/// DD_j the double difference of NavigationTelemetry::dd[j] (nav::CdgpsEpochReport::fixed_combinations).
+struct FixedCombination {
+  std::array<std::int32_t, kTelemetryDoubleDifferences> dd_coefficients{};  // 0 beyond dd_count
+  std::int64_t integer_cycles = 0;
+};
+
 /// Navigation telemetry (1 Hz, on-board navigation only): what a ground team needs to score the
 /// navigation against its own truth or reference (the solution in use, its phase-centre and
 /// empirical-acceleration estimates, the last epoch's fix and its integers, the counters), so
@@ -248,6 +256,10 @@ struct NavigationTelemetry {
   int dd_reference_prn = 0;        // the double differences' reference satellite (0 without a fix)
   int dd_count = 0;                // double differences of the fix, 0..kTelemetryDoubleDifferences
   std::array<FixedDoubleDifference, kTelemetryDoubleDifferences> dd{};
+  /// The integer combinations of a partial fix (0 otherwise, and when the epoch had more double
+  /// differences than the record holds), 0..dd_count.
+  int combination_count = 0;
+  std::array<FixedCombination, kTelemetryDoubleDifferences> combinations{};
   NavigationCounters counters;
 };
 

@@ -31,6 +31,23 @@ Eigen::Matrix<double, 6, 6> relative_covariance_rtn(const nav::NavMatrix& P, con
   return 0.5 * (out + out.transpose());
 }
 
+// A partial fix's integer combinations (messages.hpp FixedCombination), when all its double
+// differences fit the record.
+void fixed_combinations(const nav::CdgpsEpochReport& report, NavigationTelemetry& out) {
+  out.combination_count = 0;
+  if (report.double_differences > kTelemetryDoubleDifferences) return;
+  const int count = std::clamp(report.fixed_combinations, 0, out.dd_count);
+  for (int i = 0; i < count; ++i) {
+    FixedCombination& c = out.combinations[static_cast<std::size_t>(i)];
+    const auto& coefficients = report.combination_coefficients[static_cast<std::size_t>(i)];
+    for (int j = 1; j <= out.dd_count; ++j) {
+      c.dd_coefficients[static_cast<std::size_t>(j - 1)] = coefficients[static_cast<std::size_t>(j)];
+    }
+    c.integer_cycles = report.combination_integers[static_cast<std::size_t>(i)];
+  }
+  out.combination_count = count;
+}
+
 // The double differences of `report`'s fix (its reference, then the others), each with the
 // full fix's integer and the fixed solution's value from the filter's SDCP slots (messages.hpp
 // FixedDoubleDifference).
@@ -52,6 +69,7 @@ void fixed_double_differences(const nav::CdgpsFilter& filter, const nav::CdgpsEp
     d.integer_cycles = out.full_fix ? report.dd_integer_cycles[static_cast<std::size_t>(j)] : 0;
     d.fixed_cycles = fixed_sd(d.prn) - reference;
   }
+  fixed_combinations(report, out);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -136,6 +138,7 @@ struct CdgpsFilter::Impl {
   void update_sd_code(const CdgpsSettings& s, CdgpsEpochReport& report);
   void resolve(const CdgpsSettings& s, CdgpsEpochReport& report);
   Eigen::Index rows_to_hold(Eigen::Index k, double hold_variance);
+  void record_fixed_combinations(Eigen::Index k, CdgpsEpochReport& report) const;
 };
 
 core::Result<CdgpsFilter> CdgpsFilter::create(const CdgpsSettings& settings, dynamics::ForceModel dsc_model,
@@ -767,12 +770,31 @@ void CdgpsFilter::Impl::resolve(const CdgpsSettings& s, CdgpsEpochReport& report
     for (Eigen::Index r = 0; r < dd.size(); ++r) {
       report.dd_integer_cycles[static_cast<std::size_t>(r + 1)] = std::llround(integers(r, 0));
     }
+  } else {
+    record_fixed_combinations(k, report);
   }
   if (s.hold && report.fix.outcome == FixOutcome::kFixed) {
     const Eigen::Index held = rows_to_hold(k, s.hold_variance_cycles2);
     report.held = held > 0 && fixer.apply(x, P, C.topRows(held), z_fixed.head(held), s.hold_variance_cycles2, workspace.gain_mask) ==
                                   FixedSolutionUpdate::Status::kOk;
   }
+}
+
+// A partial fix's k combinations Z(:, n-k..n-1) and their integers, in the DD space of the
+// report's dd_prns (CdgpsEpochReport::fixed_combinations).
+void CdgpsFilter::Impl::record_fixed_combinations(Eigen::Index k, CdgpsEpochReport& report) const {
+  const AmbiguityMatrix& Z = ils.transformation();
+  const Eigen::Index n = dd.size();
+  constexpr double kLargest = std::numeric_limits<std::int32_t>::max();
+  if (k > n || Z.rows() != n || (Z.rightCols(k).array().abs() > kLargest).any()) return;
+  for (Eigen::Index i = 0; i < k; ++i) {
+    auto& coefficients = report.combination_coefficients[static_cast<std::size_t>(i)];
+    for (Eigen::Index r = 0; r < n; ++r) {
+      coefficients[static_cast<std::size_t>(r + 1)] = static_cast<std::int32_t>(std::llround(Z(r, n - k + i)));
+    }
+    report.combination_integers[static_cast<std::size_t>(i)] = std::llround(z_fixed(i));
+  }
+  report.fixed_combinations = static_cast<int>(k);
 }
 
 // The fixed combinations the hold still has to constrain, moved to the top k' rows of C and z:

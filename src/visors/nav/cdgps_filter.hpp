@@ -109,6 +109,17 @@ struct CdgpsEpochReport {
   /// j = 1..double_differences. Set when a full fix is applied (fix.outcome kFixed and
   /// fix_applied), else 0: a partial fix constrains integer combinations, not single DDs.
   std::array<std::int64_t, kGpsSlots> dd_integer_cycles{};
+  /// The integer combinations a partial fix constrains (fix.outcome kPartial and fix_applied,
+  /// else fixed_combinations = 0), in the double-difference space of dd_prns, so that a ground
+  /// tool can judge them against its truth: combination i is
+  ///   sum over j = 1..double_differences of combination_coefficients[i][j] DD_j = combination_integers[i]
+  /// [cycles], DD_j the double difference of dd_prns[j] (element 0 unused), i = 0..fixed_combinations-1.
+  /// The coefficients are the columns of the decorrelating transformation Z the fix searched
+  /// (nav/integer_least_squares.hpp); a combination with a coefficient outside the int32 range
+  /// (never met) leaves fixed_combinations at 0: that partial fix is then not judged.
+  int fixed_combinations = 0;
+  std::array<std::array<std::int32_t, kGpsSlots>, kGpsSlots> combination_coefficients{};
+  std::array<std::int64_t, kGpsSlots> combination_integers{};
   AmbiguityFix fix{};
   bool fix_applied = false;    // the fixed solution is valid for this epoch (x_fixed())
   bool wrong_fix_refused = false;

@@ -1,6 +1,7 @@
 #include "visors/sim/navigation_score.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -76,20 +77,33 @@ bool NavigationScore::wrong_fix(const gnc::OnboardNavigation& navigation, core::
   return nav::wrong_fix(navigation.filter(), navigation.last_report(), [&](int prn) { return true_sd(*dsc, *osc, prn); });
 }
 
-// The record's double differences against the truth's of its epoch: a full fix's integers, a
-// partial fix's fixed-solution values (file comment); one NaN (a satellite the truth or the
-// filter lacks) leaves its double difference unjudged, as nav::wrong_fix does.
+// The record's fix against the truth of its epoch: a full fix's integers, a partial fix's
+// combinations (file comment); a NaN (a satellite the truth or the filter lacks) leaves what
+// needs it unjudged, as nav::wrong_fix does.
 bool NavigationScore::wrong_fix(const gnc::NavigationTelemetry& record) const {
   const PhaseTruth* dsc = phase_truth(gnc::Spacecraft::kDsc, record.update_t);
   const PhaseTruth* osc = phase_truth(gnc::Spacecraft::kOsc, record.update_t);
   if (dsc == nullptr || osc == nullptr) return false;
   const double reference = true_sd(*dsc, *osc, record.dd_reference_prn);
   const int count = std::clamp(record.dd_count, 0, gnc::kTelemetryDoubleDifferences);
+  std::array<double, gnc::kTelemetryDoubleDifferences> true_dd{};
   for (int j = 0; j < count; ++j) {
-    const gnc::FixedDoubleDifference& d = record.dd[static_cast<std::size_t>(j)];
-    const double estimated = record.full_fix ? static_cast<double>(d.integer_cycles) : d.fixed_cycles;
-    const double expected = true_sd(*dsc, *osc, d.prn) - reference;
-    if (std::isfinite(expected) && std::abs(estimated - expected) > 0.5) return true;
+    true_dd[static_cast<std::size_t>(j)] = true_sd(*dsc, *osc, record.dd[static_cast<std::size_t>(j)].prn) - reference;
+  }
+  if (!record.full_fix) {
+    for (int i = 0; i < std::clamp(record.combination_count, 0, count); ++i) {
+      const gnc::FixedCombination& c = record.combinations[static_cast<std::size_t>(i)];
+      const auto coefficient = [&c](int j) { return c.dd_coefficients[static_cast<std::size_t>(j)]; };
+      const auto dd = [&true_dd](int j) { return true_dd[static_cast<std::size_t>(j)]; };
+      if (nav::wrong_combination(c.integer_cycles, 0, count - 1, coefficient, dd)) return true;
+    }
+    return false;
+  }
+  for (int j = 0; j < count; ++j) {
+    const double expected = true_dd[static_cast<std::size_t>(j)];
+    if (std::isfinite(expected) && std::abs(static_cast<double>(record.dd[static_cast<std::size_t>(j)].integer_cycles) - expected) > 0.5) {
+      return true;
+    }
   }
   return false;
 }

@@ -24,12 +24,11 @@
 // with a solution not yet (or no longer) valid are counted. The statistics leave out the slews to and from the observations (the satellites in view change
 // at 1.5 deg/s) where an acceptance figure is stated outside the slews
 // (docs/requirements.md#navigation-acceptance-figures), and report them whole too.
-// A fix is wrong when a double difference of the fixed SDCP ambiguities of a processed epoch
-// differs from the truth's (the receivers' integer ambiguities and phase offsets of that epoch)
-// by more than half a cycle; each processed epoch is scored once. From the record: a full fix's
-// integers, a partial fix's fixed-solution double differences (it fixes integer combinations,
-// not single double differences), the values nav::wrong_fix reads from the component's fixed
-// solution. The summary carries the counters of the last record. fix_rate counts every processed
+// A fix is wrong (nav/fix_truth.hpp) when a double difference of a full fix, or an integer
+// combination of double differences a partial fix constrains, differs from the truth's (the
+// receivers' integer ambiguities and phase offsets of that epoch) by more than half a cycle; each
+// processed epoch is scored once. From the record: a full fix's integers, a partial fix's
+// combinations, what nav::wrong_fix reads from the component's report and fixed solution. The summary carries the counters of the last record. fix_rate counts every processed
 // epoch, fix_rate_after_first_fix those from the first fixed one on (the float time after the cold
 // start is time_to_first_fix_s). fix_rate_all_epochs counts every receiver time tag after the cold
 // start (receiver_time_tags): the receiver measures at every step (CampaignSimulation), so these
