@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs the build and test dependencies of the project from Debian 12 packages.
+# Installs the build and test dependencies of the project from Debian 12 packages, and the extra
+# packages given as arguments (scripts/cross_test.sh: a cross compiler, qemu-user).
 # Idempotent: packages already present are skipped. Run as root (or with sudo available).
+# Usage: scripts/install-deps.sh [extra packages...]
 set -euo pipefail
 
 PACKAGES=(
@@ -11,6 +13,7 @@ PACKAGES=(
   python3 python3-cvxopt python3-numpy universal-ctags
   python3-dev pybind11-dev python3-pytest doxygen
   chromium
+  "$@"
 )
 
 missing=()
