@@ -105,6 +105,15 @@ int main(int argc, char** argv) {
                   "1: step the two flight components one after the other; 2: side by side (same results)")
       ->check(CLI::Range(1, 2))
       ->capture_default_str();
+  visors::run::FswOptions run_fsw;
+  run->add_option("--fsw", run_fsw.mode,
+                  "in-process: the flight components in this program; process: each a visors-fsw process behind "
+                  "its records (same results)")
+      ->check(CLI::IsMember({"in-process", "process"}))
+      ->capture_default_str();
+  run->add_option("--fsw-command", run_fsw.command,
+                  "with --fsw process: the command that starts one (default: the visors-fsw beside this program; "
+                  "e.g. \"qemu-arm -L /usr/arm-linux-gnueabihf build-cross/armhf/apps/fsw/visors-fsw\")");
 
   std::string gnss_scenario = "scenarios/gnss_sim.toml";
   std::string gnss_out = "out/gnss";
@@ -195,7 +204,7 @@ int main(int argc, char** argv) {
   if (propagate->parsed()) {
     return visors::propagate::run_propagate_command(propagate_scenario, propagate_out);
   }
-  if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out, run_threads);
+  if (run->parsed()) return visors::run::run_campaign_command(run_scenario, run_out, run_threads, run_fsw);
   if (mc_rerun->parsed()) return visors::mc_app::run_mc_rerun_command(mc_database, mc_run, mc_out);
   if (mc_report->parsed()) return visors::mc_app::run_mc_report_command(mc_report_database, mc_report_out);
   if (mc->parsed()) {

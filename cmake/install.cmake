@@ -2,7 +2,7 @@
 #   <prefix>/include/visors/<layer>/*.hpp    the headers (#include <visors/nav/cdgps_filter.hpp>)
 #   <prefix>/lib/libvisors_*.a                the libraries, targets visors::<layer>
 #   <prefix>/lib/cmake/visors/                visorsConfig.cmake, its version file, the targets
-#   <prefix>/bin/visors                       the program
+#   <prefix>/bin/visors, visors-fsw           the program, the flight software as a process
 #   <prefix>/share/visors/data/               the reference data (data/SOURCES.md), on the data
 #                                             search path of the installed libraries
 include(CMakePackageConfigHelpers)
@@ -12,7 +12,7 @@ install(TARGETS ${visors_libraries} EXPORT visorsTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(TARGETS visors RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS visors visors-fsw RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/visors/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/visors
   FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_BINARY_DIR}/generated/visors/core/version.hpp

@@ -143,7 +143,8 @@ std::pair<std::string, std::string> run_campaign(const std::string& path, const 
   visors::core::Result<visors::sim::RunResult> result = visors::core::Error{"", ""};
   {
     py::gil_scoped_release release;
-    result = visors::sim::run_campaign(scenario, out, {}, visors::sim::RunOptions{.parallel_components = parallel});
+    const visors::sim::RunOptions options{.parallel_components = parallel, .fsw_command = {}};
+    result = visors::sim::run_campaign(scenario, out, {}, options);
     if (result.ok() && report) {
       if (auto written = visors::report::write_report(result->dir); !written.ok()) result = written.error();
     }

@@ -206,7 +206,7 @@ int run_mc_rerun_command(const std::string& database, std::int64_t run, const st
   }
   const std::string out = out_dir.empty() ? fmt::format("out/mc-rerun/run{:06d}", run) : out_dir;
   fmt::print("visors mc rerun: run {} of {} (seed {})\n", run, campaign->name, spec.seed);
-  auto result = sim::run_campaign(*scenario, out, {}, sim::RunOptions{.parallel_components = true});
+  auto result = sim::run_campaign(*scenario, out, {}, sim::RunOptions{.parallel_components = true, .fsw_command = {}});
   if (!result.ok()) {
     fmt::print(stderr, "visors mc rerun: {}\n", result.error().describe());
     return kExitFailed;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 #include <unistd.h>
@@ -32,6 +33,21 @@ void show_progress(const sim::RunProgress& p) {
   const double eta = speed > 0.0 ? (p.total_s - p.simulated_s) / speed : 0.0;
   fmt::print(stderr, "\r  simulated {:8.0f} s ({:5.1f} h)   {:7.0f}x real time   ETA {:5.0f} s   ", p.simulated_s,
              p.simulated_s / 3600.0, speed, eta);
+}
+
+// The command that starts a flight software process: `command` split at spaces, or the
+// visors-fsw beside this program.
+std::vector<std::string> fsw_process_command(const FswOptions& fsw) {
+  if (fsw.mode != "process") return {};
+  std::vector<std::string> words;
+  std::istringstream in(fsw.command);
+  for (std::string word; in >> word;) words.push_back(word);
+  if (words.empty()) {
+    std::error_code error;
+    const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+    words.push_back(error ? std::string("visors-fsw") : (self.parent_path() / "visors-fsw").string());
+  }
+  return words;
 }
 
 }  // namespace
@@ -72,13 +88,13 @@ void print_warnings(const std::filesystem::path& dir) {
   }
 }
 
-int run_campaign_command(const std::string& scenario_path, const std::string& out_dir, int threads) {
+int run_campaign_command(const std::string& scenario_path, const std::string& out_dir, int threads, const FswOptions& fsw) {
   const auto scenario = load_scenario(scenario_path, "visors run");
   if (!scenario) return kExitBadInput;
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   auto result = sim::run_campaign(*scenario, out_dir, terminal ? std::function<void(const sim::RunProgress&)>(show_progress)
                                                                : std::function<void(const sim::RunProgress&)>(),
-                                 sim::RunOptions{.parallel_components = threads >= 2});
+                                 sim::RunOptions{.parallel_components = threads >= 2, .fsw_command = fsw_process_command(fsw)});
   if (terminal) fmt::print(stderr, "\n");
   if (!result.ok()) {
     fmt::print(stderr, "visors run: {}\n", result.error().describe());

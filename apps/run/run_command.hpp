@@ -16,8 +16,15 @@ std::optional<sim::CampaignScenario> load_scenario(const std::string& scenario_p
 /// `visors gnss-sim [SCENARIO.toml] [--out DIR]`: sim/gnss_simulation.hpp. Exit codes as below.
 int run_gnss_sim_command(const std::string& scenario_path, const std::string& out_dir);
 
+/// Where the flight software runs (`--fsw`, `--fsw-command`; docs/flight-software-process.md).
+struct FswOptions {
+  std::string mode = "in-process";  // or "process"
+  std::string command;  // split at spaces; empty: the visors-fsw beside this program
+};
+
 /// Returns the process exit code: 0 on success, 2 on bad input, 1 when the simulation fails.
 /// threads: 2 steps the two flight components side by side (sim::RunOptions), 1 in turn.
-int run_campaign_command(const std::string& scenario_path, const std::string& out_dir, int threads = 2);
+int run_campaign_command(const std::string& scenario_path, const std::string& out_dir, int threads = 2,
+                         const FswOptions& fsw = {});
 
 }  // namespace visors::run

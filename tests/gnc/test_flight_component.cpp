@@ -5,9 +5,13 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <random>
+#include <span>
+#include <vector>
 
 #include "formation_harness.hpp"
 #include "visors/gnc/channel_record.hpp"
+#include "visors/gnss/ephemeris_store.hpp"
 #include "visors/gnc/flight_component.hpp"
 #include "visors/gnc/record_interface.hpp"
 #include "support/allocation_counter.hpp"
@@ -216,6 +220,138 @@ TEST(FlightComponent, RecordInterfaceStepAllocatesNothing) {
   });
   EXPECT_EQ(allocations, 0);
   EXPECT_EQ(gnc.component().mode(), Mode::kStandby);
+}
+
+// 25 steps whose records are refused for every reason a record can be refused (the garbage
+// fault's case, every step of a burst), beside each step's valid time at tone and navigation:
+// random bytes behind a valid header on every channel (bad checksum), an output channel's record
+// as input (wrong channel), a truncated record, a replayed one (out of order), and intact records
+// whose values validation refuses on every input channel (NaN attitude, position, mass,
+// pseudorange and range; an invalid command; a negative count in the crosslink; a stale range).
+// Step 0 holds the valid ones only.
+struct RefusedRecordSteps {
+  static constexpr int kSteps = 25;
+  std::vector<std::vector<RecordBuffer>> buffers = std::vector<std::vector<RecordBuffer>>(kSteps + 1);
+  std::vector<std::vector<RecordView>> views = std::vector<std::vector<RecordView>>(kSteps + 1);
+
+  RefusedRecordSteps() {
+    test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+    std::mt19937 random(7);
+    for (int k = 0; k <= kSteps; ++k) {
+      auto& b = buffers[static_cast<std::size_t>(k)];
+      auto& v = views[static_cast<std::size_t>(k)];
+      b.resize(26);
+      const auto add = [&](std::size_t size) { v.emplace_back(b[v.size()].data(), size); };
+      const auto next = [&] { return std::span(b[v.size()]); };
+      const GncInputs in = h.inputs(k);
+      const auto seq = static_cast<std::uint32_t>(2 * k);
+      add(encode(*in.time_at_tone, seq, next()));
+      add(encode(*in.navigation, seq, next()));
+      if (k == 0) {
+        add(encode(command(0.0, GroundCommand::Kind::kToStandby), 0, next()));
+        continue;
+      }
+      for (int c = 1; c <= kChannels; ++c) add(random_bytes(static_cast<Channel>(c), random, next()));
+      add(encode(Telemetry{}, seq, next()));               // an output as input
+      add(encode(*in.time_at_tone, seq + 7, next()) / 2);  // truncated
+      add(encode(*in.navigation, seq - 1, next()));        // a replay of the last step's newest
+      add_refused_values(kT0 + static_cast<double>(k), *in.navigation, seq, add, next);
+    }
+  }
+  // A record of random bytes behind a valid header of `channel`.
+  static std::size_t random_bytes(Channel channel, std::mt19937& random, std::span<std::uint8_t> out) {
+    const std::size_t size = record_size(channel);
+    for (std::size_t j = 0; j < size; ++j) out[j] = static_cast<std::uint8_t>(random());
+    out[0] = 'V', out[1] = 'G', out[2] = static_cast<std::uint8_t>(channel), out[3] = kRecordVersion;
+    out[4] = static_cast<std::uint8_t>(size), out[5] = static_cast<std::uint8_t>(size >> 8);
+    return size;
+  }
+  // Intact records of values validation refuses, one or two per input channel.
+  template <class Add, class Next>
+  static void add_refused_values(GpsTime t, NavigationSolution navigation, std::uint32_t seq, Add add, Next next) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    add(encode(TimeAtTone{t, Eigen::Quaterniond(nan, 0.0, 0.0, 0.0)}, seq + 1, next()));
+    navigation.chief_gcrf.r.x() = nan;
+    add(encode(navigation, seq + 1, next()));
+    add(encode(GroundCommand{t, GroundCommand::Kind::kStartScience, -5}, seq, next()));
+    add(encode(PropulsionTelemetry{t, Eigen::Vector3d::Zero(), nan, true}, seq, next()));
+    GpsMessage gps;
+    gps.t = gps.epoch.t = t;
+    gps.epoch.channel_count = 1;
+    gps.epoch.channels[0].prn = 7;
+    gps.epoch.channels[0].pseudorange_m = nan;
+    add(encode(gps, seq, next()));
+    add(encode(LaserRange{t, nan}, seq, next()));
+    add(encode(LaserRange{t - 1000.0, 40.0}, seq + 1, next()));  // stale
+    CrosslinkMessage crosslink;
+    crosslink.t = t;
+    crosslink.observations_done = -1;
+    add(encode(crosslink, seq, next()));
+  }
+  // Steps 1..kSteps (step 0 before); the last step's outputs.
+  const OutputRecords* run(RecordInterface& gnc) const {
+    const OutputRecords* out = nullptr;
+    for (int k = 1; k <= kSteps; ++k) out = &gnc.step(kT0 + static_cast<double>(k), views[static_cast<std::size_t>(k)]);
+    return out;
+  }
+};
+
+TEST(FlightComponent, RefusedRecordsAllocateNothing) {
+  const RefusedRecordSteps steps;
+  RecordInterface gnc = RecordInterface::create(GncConfig{}).value();
+  (void)gnc.step(kT0, steps.views[0]);
+  const long allocations = visors::test::count_allocations([&] { (void)steps.run(gnc); });
+  EXPECT_EQ(allocations, 0);
+  EXPECT_EQ(gnc.component().mode(), Mode::kStandby);
+}
+
+// The same records counted, each by its reason: per step 7 bad checksums (the random records of
+// the 7 input channels), 5 wrong channels (those of the 4 output channels, refused by their
+// channel before their checksum, and the telemetry record), one truncated, one out of order, and
+// one refused value per input channel (two of the laser's).
+TEST(FlightComponent, RefusedRecordsAreCountedByReason) {
+  const RefusedRecordSteps steps;
+  RecordInterface gnc = RecordInterface::create(GncConfig{}).value();
+  (void)gnc.step(kT0, steps.views[0]);
+  Telemetry tm;
+  RecordHeader header;
+  ASSERT_EQ(decode(steps.run(gnc)->telemetry.view(), tm, header), RecordStatus::kAccepted);
+  const auto by = [&](RecordStatus s) { return tm.records.by_status[static_cast<std::size_t>(s)]; };
+  EXPECT_EQ(by(RecordStatus::kBadChecksum), 25 * 7);
+  EXPECT_EQ(by(RecordStatus::kWrongChannel), 25 * 5);
+  EXPECT_EQ(by(RecordStatus::kTruncated), 25);
+  EXPECT_EQ(by(RecordStatus::kOutOfOrder), 25);
+  const RejectionCounters& rejected = tm.rejected;
+  EXPECT_EQ(rejected.time_at_tone + rejected.navigation + rejected.crosslink + rejected.command + rejected.propulsion +
+                rejected.gps,
+            6 * 25);
+  EXPECT_EQ(rejected.laser_range, 2 * 25);
+}
+
+// The broadcast records a GPS message carries are checked by the on-board ephemeris store at every
+// message: a plausible record, an implausible one and one of NaN allocate nothing. (The check
+// composed its PRN message before the test, 2026-11: every record allocated, the plausible too.)
+TEST(FlightComponent, BroadcastRecordChecksAllocateNothing) {
+  visors::gnss::BroadcastEphemeris plausible;
+  plausible.prn = 7;
+  plausible.toe = plausible.toc = kT0;
+  plausible.sqrt_a = 5153.6;
+  plausible.eccentricity = 0.01;
+  plausible.i0_rad = 0.96;
+  plausible.fit_interval_h = 4.0;
+  visors::gnss::BroadcastEphemeris implausible = plausible, not_finite = plausible;
+  implausible.sqrt_a = 1.0;
+  not_finite.prn = 8;
+  not_finite.m0_rad = std::numeric_limits<double>::quiet_NaN();
+  visors::gnss::EphemerisStore store;
+  std::array<visors::gnss::EphemerisStore::AcceptStatus, 3> status{};
+  const long allocations = visors::test::count_allocations([&] {
+    status = {store.accept(plausible), store.accept(implausible), store.accept(not_finite)};
+  });
+  EXPECT_EQ(allocations, 0);
+  EXPECT_EQ(status[0], visors::gnss::EphemerisStore::AcceptStatus::kStored);
+  EXPECT_EQ(status[1], visors::gnss::EphemerisStore::AcceptStatus::kImplausible);
+  EXPECT_EQ(status[2], visors::gnss::EphemerisStore::AcceptStatus::kImplausible);
 }
 
 // A routine step (standby inside the deadband, safety check included) allocates nothing.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -176,6 +177,47 @@ TEST(RecordInterface, MutatedRecordsNeverBreakTheComponent) {
   EXPECT_GT(mutated, 2500);
   EXPECT_GT(tm.records.refused() + tm.rejected.total(), mutated / 2);
   EXPECT_EQ(tm.mode, Mode::kStandby);
+}
+
+// The tone (RecordInterface::tone): what a flight software process steps at.
+TEST(RecordInterfaceTone, IsTheTimeTagOfTheTimeAtToneRecord) {
+  const RecordInterface rif = make();
+  const auto records = std::vector<Encoded>{record(LaserRange{kT0 - 1.0, 40.0}, 0),
+                                            record(TimeAtTone{kT0 + 3.0, Eigen::Quaterniond::Identity()}, 0)};
+  EXPECT_EQ(rif.tone(views(records)), kT0 + 3.0);
+}
+
+TEST(RecordInterfaceTone, IsNoneWithoutATimeAtToneRecord) {
+  const RecordInterface rif = make();
+  EXPECT_FALSE(rif.tone(views({record(LaserRange{kT0, 40.0}, 0)})).has_value());
+}
+
+// A corrupted time-at-tone record (bad checksum) carries no time: the next intact one does.
+TEST(RecordInterfaceTone, SkipsATimeAtToneRecordThatDoesNotDecode) {
+  const RecordInterface rif = make();
+  auto records = std::vector<Encoded>{record(TimeAtTone{kT0 + 7.0, Eigen::Quaterniond::Identity()}, 0),
+                                      record(TimeAtTone{kT0 + 1.0, Eigen::Quaterniond::Identity()}, 1)};
+  records[0].bytes[kHeaderBytes] ^= 0x01;
+  EXPECT_EQ(rif.tone(views(records)), kT0 + 1.0);
+}
+
+// A replayed time-at-tone record (its sequence not after the last admitted one) is no tone.
+TEST(RecordInterfaceTone, SkipsATimeAtToneRecordTheSequenceGateRefuses) {
+  RecordInterface rif = make();
+  const auto first = std::vector<Encoded>{record(TimeAtTone{kT0, Eigen::Quaterniond::Identity()}, 5)};
+  rif.step(kT0, views(first));
+  const auto next = std::vector<Encoded>{record(TimeAtTone{kT0 + 9.0, Eigen::Quaterniond::Identity()}, 5),
+                                         record(TimeAtTone{kT0 + 1.0, Eigen::Quaterniond::Identity()}, 6)};
+  EXPECT_EQ(rif.tone(views(next)), kT0 + 1.0);
+}
+
+// The time of a record whose attitude validation refuses (the garbage fault's NaN) is still the
+// tone: the time tag is intact.
+TEST(RecordInterfaceTone, IsTheTimeOfARecordWithARefusedAttitude) {
+  const RecordInterface rif = make();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto records = std::vector<Encoded>{record(TimeAtTone{kT0 + 2.0, Eigen::Quaterniond(nan, 0.0, 0.0, 0.0)}, 0)};
+  EXPECT_EQ(rif.tone(views(records)), kT0 + 2.0);
 }
 
 }  // namespace

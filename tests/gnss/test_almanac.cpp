@@ -5,6 +5,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <string_view>
+
 #include "visors/gnss/almanac.hpp"
 #include "visors/gnss/files/almanac_file.hpp"
 #include "visors/gnss/gps_constants.hpp"
@@ -69,7 +71,7 @@ TEST(Almanac, ValidateNamesTheField) {
   GpsAlmanacEntry a = g12();
   a.eccentricity = 0.3;
   ASSERT_FALSE(validate(a).ok());
-  EXPECT_EQ(validate(a).error().field, "eccentricity");
+  EXPECT_EQ(std::string_view(validate(a).field()), "eccentricity");
 }
 
 // The same satellite in both formats (YUMA in radians; SEM in semicircles with the inclination

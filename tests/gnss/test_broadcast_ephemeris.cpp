@@ -1,6 +1,8 @@
 // The IS-GPS-200 user algorithm on real records of brdc1820.10n (IGS, 2010-07-01).
 #include <gtest/gtest.h>
 
+#include <string_view>
+
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/ephemeris_set.hpp"
 #include "visors/gnss/files/rinex_nav_file.hpp"
@@ -99,14 +101,14 @@ TEST_F(BroadcastEphemerisTest, ValidateNamesTheField) {
   EXPECT_TRUE(validate(eph).ok());
   eph.sqrt_a = 6000.0;
   ASSERT_FALSE(validate(eph).ok());
-  EXPECT_EQ(validate(eph).error().field, "sqrt_a");
+  EXPECT_EQ(std::string_view(validate(eph).field()), "sqrt_a");
   eph = record(12, "2010-07-01T12:00:00");
   eph.eccentricity = std::numeric_limits<double>::quiet_NaN();
   ASSERT_FALSE(validate(eph).ok());
-  EXPECT_EQ(validate(eph).error().field, "eccentricity");
+  EXPECT_EQ(std::string_view(validate(eph).field()), "eccentricity");
   eph = record(12, "2010-07-01T12:00:00");
   eph.prn = 33;
-  EXPECT_EQ(validate(eph).error().field, "prn");
+  EXPECT_EQ(std::string_view(validate(eph).field()), "prn");
 }
 
 // The corrupt record of brdc1820.10n: PRN 1, t_oc 06:00, health 0 (every other PRN 1 record of

@@ -315,8 +315,8 @@ mode = "cdgps"
 )";
   const auto scenario = campaign_from_toml(kShort).value();
   const auto a = run_dir("gps_det_a"), b = run_dir("gps_det_b");
-  ASSERT_TRUE(run_campaign(scenario, a, {}, visors::sim::RunOptions{.parallel_components = true}).ok());
-  ASSERT_TRUE(run_campaign(scenario, b, {}, visors::sim::RunOptions{.parallel_components = false}).ok());
+  ASSERT_TRUE(run_campaign(scenario, a, {}, visors::sim::RunOptions{.parallel_components = true, .fsw_command = {}}).ok());
+  ASSERT_TRUE(run_campaign(scenario, b, {}, visors::sim::RunOptions{.parallel_components = false, .fsw_command = {}}).ok());
   const std::string nav = read(a / "navigation.csv");
   const bool same = nav == read(b / "navigation.csv") && read(a / "timeseries.csv") == read(b / "timeseries.csv") &&
                     read(a / "events.csv") == read(b / "events.csv");

@@ -699,10 +699,15 @@ RecordStatus decode(std::span<const std::uint8_t> in, NavigationTelemetry& messa
   });
 }
 
-RecordStatus SequenceGate::admit(const RecordHeader& header) {
+bool SequenceGate::would_admit(const RecordHeader& header) const {
   const auto c = static_cast<std::size_t>(header.channel);
   // Serial-number comparison (RFC 1982): ahead when the u32 difference, read signed, is > 0.
-  if (seen_[c] && static_cast<std::int32_t>(header.sequence - last_[c]) <= 0) return RecordStatus::kOutOfOrder;
+  return !seen_[c] || static_cast<std::int32_t>(header.sequence - last_[c]) > 0;
+}
+
+RecordStatus SequenceGate::admit(const RecordHeader& header) {
+  if (!would_admit(header)) return RecordStatus::kOutOfOrder;
+  const auto c = static_cast<std::size_t>(header.channel);
   seen_[c] = true;
   last_[c] = header.sequence;
   return RecordStatus::kAccepted;

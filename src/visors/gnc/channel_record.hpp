@@ -178,6 +178,8 @@ std::optional<Channel> channel_of(std::span<const std::uint8_t> in);
 class SequenceGate {
  public:
   RecordStatus admit(const RecordHeader& header);
+  /// Whether admit() would admit it (nothing changes).
+  [[nodiscard]] bool would_admit(const RecordHeader& header) const;
 
  private:
   std::array<std::uint32_t, kChannels + 1> last_{};

@@ -39,7 +39,28 @@ FlightComponent::FlightComponent(const GncConfig& config, control::StochasticMpc
   mpc_step_.remaining.reserve(static_cast<std::size_t>(config.science.mpc.planner.max_impulses));
 }
 
-GncOutputs FlightComponent::step(const GncInputs& inputs) {
+GncOutputs FlightComponent::step(const GncInputs& inputs) { return step_validated(admit(inputs)); }
+
+GncInputs FlightComponent::admit(const GncInputs& inputs) {
+  GncInputs valid = inputs;
+  auto& rejected = telemetry_.rejected;
+  const auto keep = [&](auto& slot, std::int64_t& count) {
+    if (slot && !validate(*slot, inputs.t).ok()) {
+      slot.reset();
+      ++count;
+    }
+  };
+  keep(valid.time_at_tone, rejected.time_at_tone);
+  keep(valid.navigation, rejected.navigation);
+  keep(valid.crosslink, rejected.crosslink);
+  keep(valid.command, rejected.command);
+  keep(valid.propulsion, rejected.propulsion);
+  keep(valid.gps, rejected.gps);
+  keep(valid.laser_range, rejected.laser_range);
+  return valid;
+}
+
+GncOutputs FlightComponent::step_validated(const GncInputs& inputs) {
   GncOutputs out;
   // Nothing here can throw: the flight layers compile without exceptions (the flight profile of
   // the build) and a step allocates nothing (tests/gnc, counted at the malloc level).
@@ -88,34 +109,18 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) {
   return out;
 }
 
+// The step's valid inputs (step_validated) put to use.
 void FlightComponent::accept_inputs(const GncInputs& inputs, GncOutputs& out) {
-  auto& rejected = telemetry_.rejected;
-  if (inputs.time_at_tone) {
-    if (validate(*inputs.time_at_tone, now_).ok()) accept_attitude(*inputs.time_at_tone);
-    else ++rejected.time_at_tone;
-  }
-  if (inputs.propulsion) {
-    if (validate(*inputs.propulsion, now_).ok()) mass_kg_ = inputs.propulsion->mass_kg;
-    else ++rejected.propulsion;
-  }
-  if (inputs.command) {
-    if (validate(*inputs.command, now_).ok()) apply_command(*inputs.command);
-    else ++rejected.command;
-  }
-  bool crosslink_valid = false;
-  if (inputs.crosslink) {
-    crosslink_valid = validate(*inputs.crosslink, now_).ok();
-    if (!crosslink_valid) ++rejected.crosslink;
-    else if (!active_) follow_peer(*inputs.crosslink, out);
-  }
+  if (inputs.time_at_tone) accept_attitude(*inputs.time_at_tone);
+  if (inputs.propulsion) mass_kg_ = inputs.propulsion->mass_kg;
+  if (inputs.command) apply_command(*inputs.command);
+  if (inputs.crosslink && !active_) follow_peer(*inputs.crosslink, out);
   if (navigation_) {
     feed_navigation(inputs);
-    if (crosslink_valid) navigation_->add_peer(inputs.crosslink->navigation);
+    if (inputs.crosslink) navigation_->add_peer(inputs.crosslink->navigation);
     if (const auto solution = navigation_->solve(now_)) (void)accept_solution(*solution, navigation_->last_update());
-  } else if (inputs.navigation) {
-    if (!validate(*inputs.navigation, now_).ok() || !accept_solution(*inputs.navigation, inputs.navigation->t)) {
-      ++rejected.navigation;
-    }
+  } else if (inputs.navigation && !accept_solution(*inputs.navigation, inputs.navigation->t)) {
+    ++telemetry_.rejected.navigation;  // no estimate can be made of it
   }
 }
 
@@ -130,21 +135,17 @@ void FlightComponent::accept_attitude(const TimeAtTone& tone) {
 }
 
 void FlightComponent::feed_navigation(const GncInputs& inputs) {
-  auto& rejected = telemetry_.rejected;
   if (inputs.gps) {
-    if (validate(*inputs.gps, now_).ok() && has_attitude_) {
+    if (has_attitude_) {
       if (inputs.gps->has_ephemeris) navigation_->add_ephemeris(inputs.gps->ephemeris);
       navigation_->add_own_epoch(nav::receiver_epoch(inputs.gps->epoch), q_body_to_gcrf_);
     } else {
-      ++rejected.gps;
+      ++telemetry_.rejected.gps;  // no attitude yet to place the antenna with
     }
   }
-  if (inputs.laser_range) {
-    if (validate(*inputs.laser_range, now_).ok()) navigation_->add_laser_range(*inputs.laser_range);
-    else ++rejected.laser_range;
-  }
+  if (inputs.laser_range) navigation_->add_laser_range(*inputs.laser_range);
   const auto& p = inputs.propulsion;
-  if (p && p->executed && validate(*p, now_).ok() && has_attitude_) {
+  if (p && p->executed && has_attitude_) {
     // The body frame of the impulse is the attitude of its time (the step it fired).
     const Eigen::Quaterniond& q = p->t == previous_attitude_t_ ? q_previous_ : q_body_to_gcrf_;
     navigation_->add_own_impulse(ExecutedImpulse{p->t, q * p->dv_body_mps});

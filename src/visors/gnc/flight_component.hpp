@@ -63,8 +63,12 @@ class FlightComponent {
                                               std::optional<OnboardNavigation> navigation = std::nullopt);
 
   /// One step at inputs.t (non-decreasing between calls; an earlier time is rejected as a whole
-  /// and counted as a navigation rejection).
+  /// and counted as a navigation rejection). Each input is validated (messages.hpp validate) and
+  /// an invalid one counted by its channel (Telemetry::rejected) and not used.
   GncOutputs step(const GncInputs& inputs);
+  /// The same with inputs that are valid at inputs.t already: what RecordInterface calls, which
+  /// validates each record once, as it chooses the newest valid one of each channel.
+  GncOutputs step_validated(const GncInputs& inputs);
 
   [[nodiscard]] Mode mode() const { return mode_; }
   [[nodiscard]] bool active() const { return active_; }
@@ -76,6 +80,8 @@ class FlightComponent {
  private:
   FlightComponent(const GncConfig& config, control::StochasticMpc mpc, std::optional<OnboardNavigation> navigation);
 
+  /// `inputs` without those validation refuses (counted by channel).
+  GncInputs admit(const GncInputs& inputs);
   void accept_inputs(const GncInputs& inputs, GncOutputs& out);
   void accept_attitude(const TimeAtTone& tone);
   /// The own GPS, rangefinder and propulsion inputs into the on-board navigation.

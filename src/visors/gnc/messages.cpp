@@ -8,6 +8,8 @@ namespace visors::gnc {
 
 namespace {
 
+using core::Problem;
+
 // How old an input may be and still be used [s]: the channel rates of
 // Guffanti et al., AAS 23-149, 2023, Table 2, with margin (time at tone and GPS 2 s, navigation and
 // rangefinder 5 s, crosslink 10 s for its 0.5 s delay plus drops, weekly commands one minute after
@@ -28,54 +30,55 @@ constexpr double kMaxSpeed = 2.0e4;    // [m/s]
 constexpr double kMaxImpulseDv = 1.0;  // [m/s], far above one 2.2e-2 N s impulse
 constexpr int kMaxObservations = 1000;
 
-core::Result<bool> check_age(core::GpsTime t, core::GpsTime now, double max_age, const char* field) {
+core::Check check_age(core::GpsTime t, core::GpsTime now, double max_age, const char* field) {
   const double age = static_cast<double>(now.nanoseconds() - t.nanoseconds()) * 1e-9;
-  if (age < 0.0) return core::Error{field, "time tag is in the future"};
-  if (age > max_age) return core::Error{field, "time tag is too old"};
-  return true;
+  if (age < 0.0) return {Problem::kInTheFuture, field};
+  if (age > max_age) return {Problem::kTooOld, field};
+  return {};
 }
 
-core::Result<bool> check_state(const core::StateVector& x, const char* field) {
-  if (!x.r.allFinite() || !x.v.allFinite()) return core::Error{field, "must be finite"};
+core::Check check_state(const core::StateVector& x, const char* field) {
+  if (!x.r.allFinite() || !x.v.allFinite()) return {Problem::kNotFinite, field};
   const double r = x.r.norm();
-  if (r < kMinRadius || r > kMaxRadius) return core::Error{field, "position outside low Earth orbit"};
-  if (x.v.norm() > kMaxSpeed) return core::Error{field, "velocity too large"};
-  return true;
+  if (r < kMinRadius || r > kMaxRadius) return {Problem::kOutOfRange, field};  // not in low Earth orbit
+  if (x.v.norm() > kMaxSpeed) return {Problem::kOutOfRange, field};
+  return {};
 }
 
-core::Result<bool> check_unit(const Eigen::Quaterniond& q, const char* field) {
-  if (!q.coeffs().allFinite()) return core::Error{field, "must be finite"};
-  if (std::abs(q.norm() - 1.0) > 1e-6) return core::Error{field, "must be a unit quaternion"};
-  return true;
+core::Check check_unit(const Eigen::Quaterniond& q, const char* field) {
+  if (!q.coeffs().allFinite()) return {Problem::kNotFinite, field};
+  if (std::abs(q.norm() - 1.0) > 1e-6) return {Problem::kNotUnit, field};
+  return {};
 }
 
-// A receiver epoch's structure (nav::check) and the receiver's channel count.
-core::Result<bool> check_epoch(const nav::GpsReceiverEpoch& epoch, const char* field) {
-  if (epoch.count > gnss::kMaxGpsChannels) return core::Error{field, "more observations than receiver channels (12)"};
-  if (auto error = nav::check(epoch)) return core::Error{std::string(field) + "." + error->field, error->message};
-  return true;
+// A receiver epoch's structure (nav::check) and the receiver's channel count (12); the field is
+// the epoch's.
+core::Check check_epoch(const nav::GpsReceiverEpoch& epoch, const char* field) {
+  if (epoch.count > gnss::kMaxGpsChannels) return {Problem::kOutOfRange, field};
+  if (const core::Check structure = nav::check(epoch); !structure) return {structure.problem(), field};
+  return {};
 }
 
-core::Result<bool> check_range(double range_m, const char* field) {
-  if (!std::isfinite(range_m) || range_m <= 0.0 || range_m > kMaxLaserRange) return core::Error{field, "must be in (0, 1e4] m"};
-  return true;
+core::Check check_range(double range_m, const char* field) {
+  if (!std::isfinite(range_m) || range_m <= 0.0 || range_m > kMaxLaserRange) return {Problem::kOutOfRange, field};
+  return {};
 }
 
-core::Result<bool> check_navigation(const CrosslinkNavigation& n, core::GpsTime sent) {
+core::Check check_navigation(const CrosslinkNavigation& n, core::GpsTime sent) {
   if (n.has_epoch) {
-    if (auto ok = check_epoch(n.epoch, "crosslink.navigation.epoch"); !ok) return ok.error();
-    if (n.epoch.t > sent) return core::Error{"crosslink.navigation.epoch.t", "after the message's time tag"};
-    if (auto ok = check_unit(n.q_body_to_gcrf, "crosslink.navigation.q_body_to_gcrf"); !ok) return ok.error();
+    if (const auto ok = check_epoch(n.epoch, "crosslink.navigation.epoch"); !ok) return ok;
+    if (n.epoch.t > sent) return {Problem::kInconsistent, "crosslink.navigation.epoch.t"};  // after the message
+    if (const auto ok = check_unit(n.q_body_to_gcrf, "crosslink.navigation.q_body_to_gcrf"); !ok) return ok;
   }
-  if (n.impulse_count < 0 || n.impulse_count > kCrosslinkImpulses) return core::Error{"crosslink.navigation.impulse_count", "must be in 0..2"};
+  if (n.impulse_count < 0 || n.impulse_count > kCrosslinkImpulses) return {Problem::kOutOfRange, "crosslink.navigation.impulse_count"};
   for (int k = 0; k < n.impulse_count; ++k) {
     const ExecutedImpulse& i = n.impulses[static_cast<std::size_t>(k)];
     if (!i.dv_gcrf_mps.allFinite() || i.dv_gcrf_mps.norm() > kMaxImpulseDv || i.t > sent) {
-      return core::Error{"crosslink.navigation.impulses", "must be finite, below 1 m/s and not after the message"};
+      return {Problem::kOutOfRange, "crosslink.navigation.impulses"};  // finite, below 1 m/s, not after the message
     }
   }
   if (n.has_range) return check_range(n.range.range_m, "crosslink.navigation.range.range_m");
-  return true;
+  return {};
 }
 
 }  // namespace
@@ -101,73 +104,73 @@ std::string_view to_string(GroundCommand::Kind kind) {
   return "unknown";
 }
 
-core::Result<bool> validate(const TimeAtTone& message, core::GpsTime now) {
-  if (auto ok = check_age(message.t, now, kMaxAgeTone, "time_at_tone.t"); !ok) return ok.error();
+core::Check validate(const TimeAtTone& message, core::GpsTime now) {
+  if (const auto ok = check_age(message.t, now, kMaxAgeTone, "time_at_tone.t"); !ok) return ok;
   return check_unit(message.q_body_to_gcrf, "time_at_tone.q_body_to_gcrf");
 }
 
-core::Result<bool> validate(const NavigationSolution& message, core::GpsTime now) {
-  if (auto ok = check_age(message.t, now, kMaxAgeNavigation, "navigation.t"); !ok) return ok.error();
-  if (auto ok = check_state(message.chief_gcrf, "navigation.chief_gcrf"); !ok) return ok.error();
-  if (auto ok = check_state(message.deputy_gcrf, "navigation.deputy_gcrf"); !ok) return ok.error();
+core::Check validate(const NavigationSolution& message, core::GpsTime now) {
+  if (const auto ok = check_age(message.t, now, kMaxAgeNavigation, "navigation.t"); !ok) return ok;
+  if (const auto ok = check_state(message.chief_gcrf, "navigation.chief_gcrf"); !ok) return ok;
+  if (const auto ok = check_state(message.deputy_gcrf, "navigation.deputy_gcrf"); !ok) return ok;
   const auto& p = message.relative_covariance_rtn;
-  if (!p.allFinite()) return core::Error{"navigation.relative_covariance_rtn", "must be finite"};
+  if (!p.allFinite()) return {Problem::kNotFinite, "navigation.relative_covariance_rtn"};
   if ((p - p.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(1e-300, p.cwiseAbs().maxCoeff())) {
-    return core::Error{"navigation.relative_covariance_rtn", "must be symmetric"};
+    return {Problem::kNotSymmetric, "navigation.relative_covariance_rtn"};
   }
   if ((p.diagonal().array() < 0.0).any()) {
-    return core::Error{"navigation.relative_covariance_rtn", "diagonal must be >= 0"};
+    return {Problem::kOutOfRange, "navigation.relative_covariance_rtn"};  // a negative variance
   }
-  return true;
+  return {};
 }
 
-core::Result<bool> validate(const CrosslinkMessage& message, core::GpsTime now) {
-  if (auto ok = check_age(message.t, now, kMaxAgeCrosslink, "crosslink.t"); !ok) return ok.error();
-  if (static_cast<int>(message.sender) > 1) return core::Error{"crosslink.sender", "unknown spacecraft"};
-  if (static_cast<int>(message.mode) >= kModeCount) return core::Error{"crosslink.mode", "unknown mode"};
+core::Check validate(const CrosslinkMessage& message, core::GpsTime now) {
+  if (const auto ok = check_age(message.t, now, kMaxAgeCrosslink, "crosslink.t"); !ok) return ok;
+  if (static_cast<int>(message.sender) > 1) return {Problem::kUnknown, "crosslink.sender"};
+  if (static_cast<int>(message.mode) >= kModeCount) return {Problem::kUnknown, "crosslink.mode"};
   if (message.observations_done < 0 || message.observations_done > kMaxObservations) {
-    return core::Error{"crosslink.observations_done", "out of range"};
+    return {Problem::kOutOfRange, "crosslink.observations_done"};
   }
   if (message.observations_planned < 0 || message.observations_planned > kMaxObservations) {
-    return core::Error{"crosslink.observations_planned", "out of range"};
+    return {Problem::kOutOfRange, "crosslink.observations_planned"};
   }
   if (message.has_observation &&
       !(message.slew_start <= message.observation_start && message.observation_start <= message.observation_end)) {
-    return core::Error{"crosslink.observation_start", "window must satisfy slew_start <= start <= end"};
+    return {Problem::kInconsistent, "crosslink.observation_start"};  // slew_start <= start <= end
   }
   return check_navigation(message.navigation, message.t);
 }
 
-core::Result<bool> validate(const GroundCommand& message, core::GpsTime now) {
-  if (auto ok = check_age(message.t, now, kMaxAgeCommand, "command.t"); !ok) return ok.error();
+core::Check validate(const GroundCommand& message, core::GpsTime now) {
+  if (const auto ok = check_age(message.t, now, kMaxAgeCommand, "command.t"); !ok) return ok;
   if (static_cast<int>(message.kind) > static_cast<int>(GroundCommand::Kind::kMakePassive)) {
-    return core::Error{"command.kind", "unknown command"};
+    return {Problem::kUnknown, "command.kind"};
   }
   if (message.kind == GroundCommand::Kind::kStartScience &&
       (message.observations < 1 || message.observations > kMaxObservations)) {
-    return core::Error{"command.observations", "must be in 1..1000"};
+    return {Problem::kOutOfRange, "command.observations"};  // 1..1000
   }
-  return true;
+  return {};
 }
 
-core::Result<bool> validate(const PropulsionTelemetry& message, core::GpsTime now) {
-  if (auto ok = check_age(message.t, now, kMaxAgePropulsion, "propulsion.t"); !ok) return ok.error();
+core::Check validate(const PropulsionTelemetry& message, core::GpsTime now) {
+  if (const auto ok = check_age(message.t, now, kMaxAgePropulsion, "propulsion.t"); !ok) return ok;
   if (!message.dv_body_mps.allFinite() || message.dv_body_mps.norm() > kMaxImpulseDv) {
-    return core::Error{"propulsion.dv_body_mps", "must be finite and below 1 m/s"};
+    return {Problem::kOutOfRange, "propulsion.dv_body_mps"};  // finite and below 1 m/s
   }
-  if (!(message.mass_kg > 0.0) || !std::isfinite(message.mass_kg)) return core::Error{"propulsion.mass_kg", "must be > 0"};
-  return true;
+  if (!(message.mass_kg > 0.0) || !std::isfinite(message.mass_kg)) return {Problem::kOutOfRange, "propulsion.mass_kg"};
+  return {};
 }
 
-core::Result<bool> validate(const GpsMessage& message, core::GpsTime now) {
-  if (auto ok = check_age(message.t, now, kMaxAgeGps, "gps.t"); !ok) return ok.error();
-  if (message.epoch.t != message.t) return core::Error{"gps.epoch.t", "differs from the message's time tag"};
-  if (auto ok = gnss::validate(message.epoch); !ok) return core::Error{"gps.epoch." + ok.error().field, ok.error().message};
-  return true;
+core::Check validate(const GpsMessage& message, core::GpsTime now) {
+  if (const auto ok = check_age(message.t, now, kMaxAgeGps, "gps.t"); !ok) return ok;
+  if (message.epoch.t != message.t) return {Problem::kInconsistent, "gps.epoch.t"};
+  if (const core::Check epoch = gnss::validate(message.epoch); !epoch) return {epoch.problem(), "gps.epoch"};
+  return {};
 }
 
-core::Result<bool> validate(const LaserRange& message, core::GpsTime now) {
-  if (auto ok = check_age(message.t, now, kMaxAgeLaser, "laser_range.t"); !ok) return ok.error();
+core::Check validate(const LaserRange& message, core::GpsTime now) {
+  if (const auto ok = check_age(message.t, now, kMaxAgeLaser, "laser_range.t"); !ok) return ok;
   return check_range(message.range_m, "laser_range.range_m");
 }
 

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "visors/core/check.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
 #include "visors/core/status.hpp"
@@ -276,14 +277,15 @@ struct GncOutputs {
   std::optional<NavigationTelemetry> navigation;  // every step, with on-board navigation
 };
 
-// ---- Validation (field names in the errors; times must be within `max_age` of the step).
+// ---- Validation: ok, or the problem and the field by its name (core::Check: no allocation, so a
+// refused record costs nothing but its count); times must be within their channel's age of the step.
 
-core::Result<bool> validate(const TimeAtTone& message, core::GpsTime now);
-core::Result<bool> validate(const NavigationSolution& message, core::GpsTime now);
-core::Result<bool> validate(const CrosslinkMessage& message, core::GpsTime now);
-core::Result<bool> validate(const GroundCommand& message, core::GpsTime now);
-core::Result<bool> validate(const PropulsionTelemetry& message, core::GpsTime now);
-core::Result<bool> validate(const GpsMessage& message, core::GpsTime now);
-core::Result<bool> validate(const LaserRange& message, core::GpsTime now);
+core::Check validate(const TimeAtTone& message, core::GpsTime now);
+core::Check validate(const NavigationSolution& message, core::GpsTime now);
+core::Check validate(const CrosslinkMessage& message, core::GpsTime now);
+core::Check validate(const GroundCommand& message, core::GpsTime now);
+core::Check validate(const PropulsionTelemetry& message, core::GpsTime now);
+core::Check validate(const GpsMessage& message, core::GpsTime now);
+core::Check validate(const LaserRange& message, core::GpsTime now);
 
 }  // namespace visors::gnc

@@ -67,11 +67,21 @@ const OutputRecords& RecordInterface::step(core::GpsTime t, std::span<const Reco
   GncInputs in;
   in.t = t;
   for (const RecordView record : inputs) accept(record, in);
-  GncOutputs out = component_.step(in);
+  GncOutputs out = component_.step_validated(in);  // validated record by record above
   out.telemetry.records = refused_;
   add(out.telemetry.rejected, rejected_);
   encode_outputs(out);
   return out_;
+}
+
+std::optional<core::GpsTime> RecordInterface::tone(std::span<const RecordView> inputs) const {
+  for (const RecordView record : inputs) {
+    if (channel_of(record) != Channel::kTimeAtTone) continue;
+    TimeAtTone message;
+    RecordHeader header;
+    if (decode(record, message, header) == RecordStatus::kAccepted && gate_.would_admit(header)) return header.t;
+  }
+  return std::nullopt;
 }
 
 void RecordInterface::encode_outputs(const GncOutputs& out) {

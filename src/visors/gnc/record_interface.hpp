@@ -8,11 +8,11 @@
 // dispatched by its header's channel to its decode(); a structural failure (truncated, bad
 // checksum, unknown channel, an output channel, ...) and a record older than the last one
 // admitted on its channel (SequenceGate) are refused and counted by reason (Telemetry::records);
-// the values of an admitted record are validated here (messages.hpp validate: stale, non-finite,
-// out of range; counted by channel, Telemetry::rejected), and of several records of one channel
-// in a step the newest valid one is used, so garbage values never displace a good record.
-// Nothing crashes, nothing allocates (but an error's text when validation refuses a value),
-// nothing throws.
+// the values of an admitted record are validated here, once (messages.hpp validate: stale,
+// non-finite, out of range; counted by channel, Telemetry::rejected), and of several records of
+// one channel in a step the newest valid one is used, so garbage values never displace a good
+// record; the component takes them as valid (FlightComponent::step_validated).
+// Nothing crashes, nothing allocates (a refused record included), nothing throws.
 // Outputs: the step's maneuver, observation, crosslink, telemetry and navigation telemetry, each
 // as one record with its channel's own sequence; the telemetry record every step, the navigation
 // telemetry every step of a component with on-board navigation.
@@ -50,6 +50,12 @@ class RecordInterface {
 
   /// One step at t with the records that arrived since the last one.
   const OutputRecords& step(core::GpsTime t, std::span<const RecordView> inputs);
+
+  /// The tone of a step (a flight software process steps at it, apps/fsw/): the time tag of the
+  /// first time-at-tone record among `inputs` that decodes and that the sequence gate would
+  /// admit, whatever its values (an attitude the validation refuses still carries the time).
+  /// nullopt without one. Changes nothing.
+  [[nodiscard]] std::optional<core::GpsTime> tone(std::span<const RecordView> inputs) const;
 
   [[nodiscard]] const FlightComponent& component() const { return component_; }
   [[nodiscard]] const RecordCounters& refused() const { return refused_; }

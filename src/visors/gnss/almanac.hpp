@@ -28,7 +28,7 @@ struct GpsAlmanacEntry {
 };
 
 /// Field-named plausibility checks (as validate(BroadcastEphemeris) for the shared fields).
-core::Result<bool> validate(const GpsAlmanacEntry& entry);
+core::Check validate(const GpsAlmanacEntry& entry);
 
 /// The entry as a broadcast record with zero corrections (fit interval 240 h).
 BroadcastEphemeris to_broadcast(const GpsAlmanacEntry& entry);

@@ -7,16 +7,7 @@
 
 namespace visors::gnss {
 
-namespace {
-
-core::Result<bool> check(bool ok, const char* field, const std::string& message) {
-  if (ok) return true;
-  return core::Error{field, message};
-}
-
-}  // namespace
-
-core::Result<bool> validate(const BroadcastEphemeris& e) {
+core::Check validate(const BroadcastEphemeris& e) {
   const double deg = kGpsPi / 180.0;
   const struct {
     const char* field;
@@ -43,18 +34,13 @@ core::Result<bool> validate(const BroadcastEphemeris& e) {
       {"crs", e.crs_m, -2000.0, 2000.0},
       {"tgd", e.tgd_s, -1e-6, 1e-6},
   };
-  if (auto r = check(e.prn >= 1 && e.prn <= kMaxGpsPrn, "prn", "must be in 1..32, got " + std::to_string(e.prn)); !r) {
-    return r;
-  }
+  if (e.prn < 1 || e.prn > kMaxGpsPrn) return {core::Problem::kOutOfRange, "prn"};
   for (const auto& b : bounds) {
-    if (!std::isfinite(b.value)) return core::Error{b.field, "must be finite"};
-    if (b.value < b.low || b.value > b.high) {
-      return core::Error{b.field, std::to_string(b.value) + " outside the plausible GPS range [" + std::to_string(b.low) +
-                                      ", " + std::to_string(b.high) + "]"};
-    }
+    if (!std::isfinite(b.value)) return {core::Problem::kNotFinite, b.field};
+    if (b.value < b.low || b.value > b.high) return {core::Problem::kOutOfRange, b.field};  // not a GPS orbit or clock
   }
-  if (!(e.fit_interval_h > 0.0 && e.fit_interval_h <= 240.0)) return core::Error{"fit_interval_h", "must be in (0, 240] h"};
-  return true;
+  if (!(e.fit_interval_h > 0.0 && e.fit_interval_h <= 240.0)) return {core::Problem::kOutOfRange, "fit_interval_h"};
+  return {};
 }
 
 GpsSatelliteState broadcast_state(const BroadcastEphemeris& eph, core::GpsTime t) {

@@ -51,7 +51,7 @@ core::Result<GpsConstellation> GpsConstellation::from_records(std::span<const Br
   GpsConstellation constellation;
   for (std::size_t k = 0; k < records.size(); ++k) {
     if (auto valid = validate(records[k]); !valid) {
-      return core::Error{"records[" + std::to_string(k) + "]." + valid.error().field, valid.error().message};
+      return core::Error{"records[" + std::to_string(k) + "]." + valid.field(), std::string(core::describe(valid.problem()))};
     }
     for (const auto& other : constellation.satellites_) {
       if (other.prn == records[k].prn) return core::Error{"records[" + std::to_string(k) + "].prn", "PRN given twice"};

@@ -829,8 +829,8 @@ CdgpsEpochReport CdgpsFilter::update(const CdgpsEpochInput& input, const gnss::E
   const GpsReceiverEpoch* own = settings_.local == Craft::kDsc ? input.dsc : input.osc;
   if (!m.initialised) return refuse("not_initialised");
   if (own == nullptr || own->t != m.t) return refuse("time_tag");
-  if (input.dsc != nullptr && check(*input.dsc)) return refuse("dsc");
-  if (input.osc != nullptr && check(*input.osc)) return refuse("osc");
+  if (input.dsc != nullptr && !check(*input.dsc)) return refuse("dsc");
+  if (input.osc != nullptr && !check(*input.osc)) return refuse("osc");
   const GpsReceiverEpoch* other = settings_.local == Craft::kDsc ? input.osc : input.dsc;
   CdgpsEpochInput in = input;
   if (other != nullptr && other->t != m.t) (settings_.local == Craft::kDsc ? in.osc : in.dsc) = nullptr;  // not this epoch's

@@ -13,20 +13,16 @@ const GpsObservation* GpsReceiverEpoch::find(int prn) const {
   return nullptr;
 }
 
-std::optional<core::Error> check(const GpsReceiverEpoch& epoch) {
-  if (epoch.count < 0 || epoch.count > kGpsSlots) {
-    return core::Error{"count", "must be in [0, " + std::to_string(kGpsSlots) + "]"};
-  }
-  // The field's name is formed only for an error: a step allocates nothing on valid input.
-  const auto field = [](int i) { return "observations[" + std::to_string(i) + "].prn"; };
+core::Check check(const GpsReceiverEpoch& epoch) {
+  if (epoch.count < 0 || epoch.count > kGpsSlots) return {core::Problem::kOutOfRange, "count"};
   for (int i = 0; i < epoch.count; ++i) {
     const int prn = epoch.observations[static_cast<std::size_t>(i)].prn;
-    if (prn < 1 || prn > 32) return core::Error{field(i), "must be in [1, 32]"};
+    if (prn < 1 || prn > 32) return {core::Problem::kOutOfRange, "observations.prn"};
     for (int j = 0; j < i; ++j) {
-      if (epoch.observations[static_cast<std::size_t>(j)].prn == prn) return core::Error{field(i), "repeats an earlier one"};
+      if (epoch.observations[static_cast<std::size_t>(j)].prn == prn) return {core::Problem::kRepeated, "observations.prn"};
     }
   }
-  return std::nullopt;
+  return {};
 }
 
 bool plausible(const GpsObservation& o) {

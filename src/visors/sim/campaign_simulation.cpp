@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "visors/core/files/data_path.hpp"
+#include "visors/report/run_directory.hpp"
 #include "visors/sim/data_provenance.hpp"
 #include "visors/sim/flight_config.hpp"
 #include "visors/sim/formation_initial_state.hpp"
@@ -99,7 +100,11 @@ core::Result<CampaignSimulation> CampaignSimulation::create(const CampaignScenar
   const bool with_gps = gps.value().has_value();
   auto sensors = Sensors::create(s, truth.value(), std::move(gps).value());
   if (!sensors.ok()) return sensors.error();
-  auto host = HostApplication::create(s, recorder, with_gps, options.parallel_components);
+  auto software = FlightSoftware::create(config.value(), recorder.dir() / std::string(report::kFlightConfigFile), recorder.dir(),
+                                         FlightSoftwareOptions{.parallel_components = options.parallel_components,
+                                                               .process_command = options.fsw_command});
+  if (!software.ok()) return software.error();
+  auto host = HostApplication::create(s, recorder, with_gps, std::move(software).value());
   if (!host.ok()) return host.error();
   record_truth_draws(s, truth.value(), recorder, fallbacks);
   CampaignSimulation sim(s, recorder, std::move(truth).value(), std::move(sensors).value(), std::move(host).value());
@@ -122,7 +127,7 @@ core::Result<bool> CampaignSimulation::step() {
   const core::GpsTime t = scenario_.t0 + ts;
   truth_.update_attitude(t, ts_);
   host_.apply_ground_timeline(k_, t, ts_);
-  step_flight_components(t);
+  if (auto ok = step_flight_components(t); !ok) return ok.error();
   if (sensors_.has_gps()) metrics_.score_navigation(truth_, sensors_, host_, scenario_.flight, ts_, in_slew(ts_));
   // Per spacecraft, in order: the host routes its outputs, then applies its FDIR (the event log
   // keeps this order).
@@ -143,7 +148,7 @@ core::Result<bool> CampaignSimulation::step() {
 // The fault windows, then each component's input records (sensors, crosslink, commands: in order,
 // since the sensors share the simulator's state: the constellation's caches, the scores, the
 // events) and one step of both components side by side.
-void CampaignSimulation::step_flight_components(core::GpsTime t) {
+core::Result<bool> CampaignSimulation::step_flight_components(core::GpsTime t) {
   const EpochFrame frame = sensors_.frame(t);
   if (const auto jump = host_.open_fault_windows(k_, t, ts_)) sensors_.receiver(*jump).jump_clock(scenario_.fault.clock_jump_m);
   host_.close_fault_windows(t, ts_);
@@ -169,7 +174,7 @@ void CampaignSimulation::step_flight_components(core::GpsTime t) {
     c.command_after.reset();
     c.telemetry.reset();
   }
-  host_.step_components(t, ts_, stepped, host_records_, metrics_.step_us());
+  return host_.step_components(t, ts_, stepped, host_records_, metrics_.step_us());
 }
 
 // Spacecraft k's sensor messages of this step: the time at tone with the attitude its ADCS
@@ -315,6 +320,7 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
   summary["t0"] = {{"iso", s.t0.format(core::TimeScale::kGps, 3)}, {"week", s.t0.week()}, {"seconds_of_week", s.t0.seconds_of_week()}};
   summary["simulated_s"] = ts_;
   summary["wall_s"] = wall_s;
+  summary["flight_software"] = host_.software().describe();
   metrics_.add_to_summary(summary, {host_[0].name, host_[1].name});
   nlohmann::json files = nlohmann::json::array();
   for (const DataFileUse& f : sim::data_files_of(scenario_)) {

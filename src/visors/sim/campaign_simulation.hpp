@@ -23,6 +23,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -51,6 +52,10 @@ struct RunOptions {
   /// cores or more (`visors run --threads 2`, its default). Off by default here: the test suite
   /// and a Monte Carlo campaign run one simulation per core instead.
   bool parallel_components = false;
+  /// Run each spacecraft's flight software as a process started by this command (`visors run
+  /// --fsw process`: the visors-fsw program, or an emulator and the program;
+  /// sim/flight_software.hpp); empty: the components run in this process.
+  std::vector<std::string> fsw_command;
 };
 
 struct RunResult {
@@ -84,7 +89,7 @@ class CampaignSimulation {
                      HostApplication host);
 
   // The phases of step(), in order.
-  void step_flight_components(core::GpsTime t);
+  core::Result<bool> step_flight_components(core::GpsTime t);
   void measure(std::size_t k, const EpochFrame& frame, core::GpsTime t, HostRecords& records);
   void route_outputs(std::size_t k);
   void execute_maneuver(std::size_t k, core::GpsTime t);

@@ -2,8 +2,9 @@
 // What each flight component is created with, and its record in the run directory
 // (flight_config.json): the GNC configuration, the on-board navigation's settings (the CDGPS
 // filter's among them) and both on-board force models (their configuration and the spacecraft
-// properties the flight software is told). The simulator creates the components from these
-// functions only, so the file is the configuration as created. Nothing in it comes from a truth
+// properties the flight software is told). The simulator creates the components from this JSON
+// (gnc/files/flight_config_json.hpp: in process, or as visors-fsw processes reading the file), so
+// the file is the configuration as created. Nothing in it comes from a truth
 // key (docs/truth-and-knowledge.md): dispersing the truth leaves it byte for byte the same
 // (tests/sim/test_flight_config.cpp).
 

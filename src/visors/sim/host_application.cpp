@@ -1,6 +1,5 @@
 #include "visors/sim/host_application.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -9,8 +8,6 @@
 
 #include <fmt/format.h>
 
-#include "visors/sim/flight_config.hpp"
-#include "visors/sim/navigation_setup.hpp"
 
 namespace visors::sim {
 namespace {
@@ -18,16 +15,7 @@ namespace {
 using gnc::GroundCommand;
 using gnc::Mode;
 
-core::Result<bool> set_up_component(HostedComponent& c, const CampaignScenario& s, bool active, bool gps) {
-  std::optional<gnc::OnboardNavigation> onboard;
-  if (gps) {
-    auto made = make_onboard_navigation(s, c.id);
-    if (!made.ok()) return made.error();
-    onboard.emplace(std::move(made).value());
-  }
-  auto component = gnc::RecordInterface::create(flight_gnc_config(s, c.id, active), std::move(onboard));
-  if (!component.ok()) return core::Error{"gnc." + component.error().field, component.error().message};
-  c.gnc.emplace(std::move(component).value());
+core::Result<bool> set_up_crosslink(HostedComponent& c, const CampaignScenario& s) {
   CrosslinkSettings link;
   link.delay_s = s.crosslink_delay_s;
   link.drop_probability = s.crosslink_drop_probability;
@@ -57,7 +45,7 @@ FdirResponse fdir_response(FdirTrigger trigger, Mode mode) {
   return FdirResponse::kRoleSwitch;  // unreachable: every trigger has a rule (a test checks)
 }
 
-HostApplication::HostApplication(const CampaignScenario& s, RunRecorder& recorder, bool parallel_components)
+HostApplication::HostApplication(const CampaignScenario& s, RunRecorder& recorder, FlightSoftware software)
     : recorder_(&recorder),
       scenario_fault_(s.fault),
       step_s_(s.step_s),
@@ -65,7 +53,7 @@ HostApplication::HostApplication(const CampaignScenario& s, RunRecorder& recorde
       science_step_(static_cast<std::int64_t>(std::llround(s.standby_s / s.step_s))),
       clock_jump_step_(step_at(s.fault.clock_jump_t_s, s.step_s)),
       seed_(s.seed),
-      components_(std::make_unique<PairedWorker>(parallel_components)) {
+      software_(std::move(software)) {
   craft_[0].id = gnc::Spacecraft::kDsc;
   craft_[0].name = "dsc";
   craft_[1].id = gnc::Spacecraft::kOsc;
@@ -73,11 +61,11 @@ HostApplication::HostApplication(const CampaignScenario& s, RunRecorder& recorde
 }
 
 core::Result<HostApplication> HostApplication::create(const CampaignScenario& scenario, RunRecorder& recorder, bool gps,
-                                                      bool parallel_components) {
-  HostApplication host(scenario, recorder, parallel_components);
+                                                      FlightSoftware software) {
+  HostApplication host(scenario, recorder, std::move(software));
   host.gps_ = gps;
   for (HostedComponent& c : host.craft_) {
-    if (auto ok = set_up_component(c, scenario, scenario.active == c.name, gps); !ok) return ok.error();
+    if (auto ok = set_up_crosslink(c, scenario); !ok) return ok.error();
   }
   return host;
 }
@@ -182,24 +170,21 @@ void HostApplication::add_garbage(std::size_t k, core::GpsTime t, double t_s, Ho
   records.add(sequence, gnc::LaserRange{t, nan});
 }
 
-void HostApplication::step_components(core::GpsTime t, double t_s, const std::array<bool, 2>& stepped,
-                                      std::array<HostRecords, 2>& records, std::array<std::vector<float>, 2>& step_us) {
-  std::array<const gnc::OutputRecords*, 2> outputs{};
-  const auto step = [&](std::size_t k) {
-    if (!stepped[k]) return;
-    const auto views = records[k].views();
-    const auto start = std::chrono::steady_clock::now();
-    outputs[k] = &craft_[k].gnc->step(t, views);
-    step_us[k].push_back(static_cast<float>(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count()));
-  };
-  components_->run([&] { step(0); }, [&] { step(1); });
+core::Result<bool> HostApplication::step_components(core::GpsTime t, double t_s, const std::array<bool, 2>& stepped,
+                                                    std::array<HostRecords, 2>& records,
+                                                    std::array<std::vector<float>, 2>& step_us) {
+  const std::array<std::span<const gnc::RecordView>, 2> inputs{records[0].views(), records[1].views()};
+  std::array<float, 2> us{};
+  if (auto ok = software_.step(t, stepped, inputs, us); !ok) return ok.error();
   for (std::size_t k = 0; k < 2; ++k) {
     if (!stepped[k]) continue;
+    step_us[k].push_back(us[k]);
     const Mode before = craft_[k].out.mode;
-    read_outputs(k, *outputs[k], t_s);
+    read_outputs(k, software_.outputs(k), t_s);
     const Mode after = craft_[k].out.mode;
     if (after != before) recorder_->event(t_s, craft_[k].name, "mode", fmt::format("{} -> {}", to_string(before), to_string(after)));
   }
+  return true;
 }
 
 void HostApplication::read_outputs(std::size_t k, const gnc::OutputRecords& out, double t_s) {

@@ -31,7 +31,7 @@
 #include "visors/sim/campaign_scenario.hpp"
 #include "visors/sim/crosslink.hpp"
 #include "visors/sim/host_records.hpp"
-#include "visors/sim/paired_worker.hpp"
+#include "visors/sim/flight_software.hpp"
 #include "visors/sim/random_stream.hpp"
 #include "visors/sim/run_recorder.hpp"
 
@@ -57,7 +57,6 @@ struct GncIncapablePersistence {
 struct HostedComponent {
   gnc::Spacecraft id = gnc::Spacecraft::kDsc;
   std::string_view name;  // "dsc" or "osc"
-  std::optional<gnc::RecordInterface> gnc;  // the flight component behind its binary channels
   gnc::GncOutputs out;                       // of its last step, decoded from its output records
   gnc::OutputRecords::Record crosslink_out;  // its last step's crosslink record (size 0: none)
   HostRecords::Sequences sequence{};  // of the records the host writes, per channel
@@ -92,10 +91,10 @@ FdirResponse fdir_response(FdirTrigger trigger, gnc::Mode mode);
 
 class HostApplication {
  public:
-  /// Both flight components (`scenario.active` made active), with on-board navigation when
-  /// `gps`; the crosslink inboxes (streams "<name>.crosslink"). Errors name the scenario field.
+  /// The host of both flight components (`software`, created with on-board navigation when
+  /// `gps`); the crosslink inboxes (streams "<name>.crosslink"). Errors name the scenario field.
   static core::Result<HostApplication> create(const CampaignScenario& scenario, RunRecorder& recorder, bool gps,
-                                              bool parallel_components);
+                                              FlightSoftware software);
 
   HostedComponent& operator[](std::size_t k) { return craft_[k]; }
   const HostedComponent& operator[](std::size_t k) const { return craft_[k]; }
@@ -118,10 +117,11 @@ class HostApplication {
   void add_garbage(std::size_t k, core::GpsTime t, double t_s, HostRecords& records);
   [[nodiscard]] bool crosslink_lost(double t_s) const { return scenario_fault_.crosslink_loss.contains(t_s); }
 
-  /// Steps the components that are not in a bus safe mode with their records (side by side,
-  /// sim/paired_worker.hpp) and decodes their outputs; mode changes go to the event log. `stepped`
-  /// says which; each step's wall time goes to `step_us`.
-  void step_components(core::GpsTime t, double t_s, const std::array<bool, 2>& stepped,
+  /// Steps the components that are not in a bus safe mode with their records (side by side:
+  /// sim/flight_software.hpp) and decodes their outputs; mode changes go to the event log.
+  /// `stepped` says which; each step's wall time goes to `step_us`. Errors: a flight software
+  /// process that stopped or broke its stream.
+  core::Result<bool> step_components(core::GpsTime t, double t_s, const std::array<bool, 2>& stepped,
                        std::array<HostRecords, 2>& records, std::array<std::vector<float>, 2>& step_us);
 
   /// The host's FDIR on spacecraft k's outputs of this step (kFdirPolicy's first two triggers).
@@ -129,9 +129,10 @@ class HostApplication {
   /// A trigger of kFdirPolicy on spacecraft `victim`, the commands delivered from `deliver_at`.
   void respond(FdirTrigger trigger, std::size_t victim, core::GpsTime deliver_at, double t_s, std::string_view what);
   [[nodiscard]] int safety_violations() const { return safety_violations_; }
+  [[nodiscard]] const FlightSoftware& software() const { return software_; }
 
  private:
-  HostApplication(const CampaignScenario& scenario, RunRecorder& recorder, bool parallel_components);
+  HostApplication(const CampaignScenario& scenario, RunRecorder& recorder, FlightSoftware software);
   void read_outputs(std::size_t k, const gnc::OutputRecords& out, double t_s);
   void command(std::size_t k, gnc::GroundCommand::Kind kind, core::GpsTime at);
 
@@ -148,7 +149,7 @@ class HostApplication {
   bool gps_ = false;
   std::optional<RandomStream> garbage_rng_;
   std::uint64_t seed_ = 0;
-  std::unique_ptr<PairedWorker> components_;  // steps the two components (a pointer: movable)
+  FlightSoftware software_;  // the two components
 };
 
 }  // namespace visors::sim
