@@ -88,6 +88,24 @@ TEST(RecordInterface, GarbageIsRefusedAndCountedByReason) {
   EXPECT_TRUE(tm.estimate_valid);  // the intact records were used
 }
 
+// A host's u32 sequence numbers wrap (after 2^32 records of a channel: 136 years at 1 Hz, sooner
+// for a host that numbers all its records in one counter): steps whose records' sequences run
+// from 2^32 - 5 through 0 to 4 are all admitted (serial-number arithmetic, RFC 1982).
+TEST(RecordInterface, RecordsAreAdmittedAcrossTheSequenceWrap) {
+  RecordInterface gnc = make();
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  Telemetry tm;
+  for (int k = 0; k < 10; ++k) {
+    const GncInputs in = h.inputs(k);
+    const std::uint32_t sequence = 0xFFFFFFFBu + static_cast<std::uint32_t>(k);  // 2^32 - 5, ..., 4
+    std::vector<Encoded> records = {record(*in.time_at_tone, sequence), record(*in.navigation, sequence)};
+    if (k == 0) records.push_back(record(GroundCommand{kT0, GroundCommand::Kind::kToStandby, 0}, sequence));
+    tm = telemetry_of(gnc.step(kT0 + static_cast<double>(k), views(records)));
+  }
+  EXPECT_EQ(tm.records.refused(), 0);
+  EXPECT_TRUE(tm.estimate_valid);
+}
+
 // An output channel's record is not an input.
 TEST(RecordInterface, AnOutputRecordAsInputIsTheWrongChannel) {
   RecordInterface gnc = make();
