@@ -9,7 +9,6 @@
 namespace visors::gnc {
 namespace {
 
-constexpr std::uint8_t kMagic0 = 'V', kMagic1 = 'G';
 constexpr int kModes = 6;          // gnc_mode.hpp, kManual .. kEscape
 constexpr int kCommandKinds = 7;   // messages.hpp, kToManual .. kMakePassive
 static_assert(static_cast<int>(Mode::kEscape) == kModes - 1, "a new mode needs its code here");
@@ -82,8 +81,8 @@ std::size_t write_record(Channel channel, core::GpsTime t, std::uint32_t sequenc
   const std::size_t size = record_size(channel);
   if (out.size() < size) return 0;
   Writer w(out);
-  w.u8(kMagic0);
-  w.u8(kMagic1);
+  w.u8(kRecordMagic[0]);
+  w.u8(kRecordMagic[1]);
   w.u8(static_cast<std::uint8_t>(channel));
   w.u8(kRecordVersion);
   w.u16(static_cast<std::uint16_t>(size));
@@ -101,7 +100,7 @@ std::size_t write_record(Channel channel, core::GpsTime t, std::uint32_t sequenc
 RecordStatus read_frame(std::span<const std::uint8_t> in, Channel expected, RecordHeader& header) {
   if (in.size() < kHeaderBytes) return RecordStatus::kTruncated;
   Reader r(in, 0);
-  if (r.u8() != kMagic0 || r.u8() != kMagic1) return RecordStatus::kBadMagic;
+  if (r.u8() != kRecordMagic[0] || r.u8() != kRecordMagic[1]) return RecordStatus::kBadMagic;
   const std::uint8_t channel = r.u8();
   const std::uint8_t version = r.u8();
   const std::uint16_t size = r.u16();

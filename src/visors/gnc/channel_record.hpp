@@ -95,6 +95,8 @@ enum class Channel : std::uint8_t {
   kNavigationTelemetry = 11,  // with on-board navigation (NavigationTelemetry)
 };
 inline constexpr int kChannels = 11;
+/// The two bytes every record starts with.
+inline constexpr std::array<std::uint8_t, 2> kRecordMagic{'V', 'G'};
 inline constexpr std::uint8_t kRecordVersion = 2;  // 2: the navigation telemetry's fixed combinations
 inline constexpr std::size_t kHeaderBytes = 20;
 inline constexpr std::size_t kChecksumBytes = 4;

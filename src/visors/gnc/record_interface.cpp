@@ -44,7 +44,7 @@ void RecordInterface::accept(RecordView record, GncInputs& in) {
   RecordStatus status = RecordStatus::kUnknownChannel;
   const std::optional<Channel> channel = channel_of(record);
   if (record.size() < kHeaderBytes) status = RecordStatus::kTruncated;
-  else if (record[0] != 'V' || record[1] != 'G') status = RecordStatus::kBadMagic;
+  else if (record[0] != kRecordMagic[0] || record[1] != kRecordMagic[1]) status = RecordStatus::kBadMagic;
   else if (channel) {
     switch (*channel) {
       case Channel::kTimeAtTone: status = decode_into(record, in.t, gate_, in.time_at_tone, rejected_.time_at_tone); break;

@@ -144,8 +144,8 @@ void HostApplication::add_garbage(std::size_t k, core::GpsTime t, double t_s, Ho
     gnc::OutputRecords::Record r;
     r.size = gnc::record_size(channel);
     for (std::size_t i = 0; i < r.size; ++i) r.bytes[i] = static_cast<std::uint8_t>(rng.uniform() * 256.0);
-    r.bytes[0] = 'V';
-    r.bytes[1] = 'G';
+    r.bytes[0] = gnc::kRecordMagic[0];
+    r.bytes[1] = gnc::kRecordMagic[1];
     r.bytes[2] = static_cast<std::uint8_t>(c);
     r.bytes[3] = gnc::kRecordVersion;
     r.bytes[4] = static_cast<std::uint8_t>(r.size);
