@@ -8,7 +8,6 @@
 
 #include <fmt/format.h>
 
-
 namespace visors::sim {
 namespace {
 
