@@ -109,7 +109,7 @@ TEST(RecordInterface, RecordsAreAdmittedAcrossTheSequenceWrap) {
 // An output channel's record is not an input.
 TEST(RecordInterface, AnOutputRecordAsInputIsTheWrongChannel) {
   RecordInterface gnc = make();
-  const std::vector<Encoded> records = {record(ManeuverCommand{kT0, {}, {}}, 0)};
+  const std::vector<Encoded> records = {record(ManeuverCommand{kT0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}, 0)};
   EXPECT_EQ(refused(telemetry_of(gnc.step(kT0, views(records))), RecordStatus::kWrongChannel), 1);
 }
 
