@@ -165,8 +165,8 @@ inline CrosslinkMessage crosslink_with_navigation() {
   n.has_epoch = true;
   n.epoch.t = t0() + 2.0;
   n.epoch.count = 2;
-  n.epoch.observations[0] = nav::GpsObservation{3, 2.2e7, 1.15e8, true, false};
-  n.epoch.observations[1] = nav::GpsObservation{31, 2.3e7, 1.2e8, false, true};
+  n.epoch.observations[0] = CrosslinkObservation{3, 2.2e7, 1.15e8, true, false};
+  n.epoch.observations[1] = CrosslinkObservation{31, 2.3e7, 1.2e8, false, true};
   n.q_body_to_gcrf = Eigen::Quaterniond(0.5, 0.5, -0.5, 0.5);
   n.impulse_count = 2;
   n.impulses[0] = ExecutedImpulse{t0() + 1.0, Eigen::Vector3d(1e-3, 2e-3, -3e-4)};

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "visors/gnc/messages.hpp"
+#include "visors/gnc/onboard_navigation.hpp"
 #include "formation_harness.hpp"
 
 namespace {
@@ -59,6 +60,40 @@ TEST(Messages, UnknownModeInCrosslinkIsRejected) {
   message.t = kNow;
   message.mode = static_cast<Mode>(17);
   EXPECT_EQ(validate(message, kNow).field(), std::string_view("crosslink.mode"));
+}
+
+// A crosslinked epoch whose satellite repeats: refused with the observations' field (the rule of
+// nav::check for the filter's own epochs).
+TEST(Messages, ARepeatedSatelliteInTheCrosslinkedEpochIsRejected) {
+  CrosslinkMessage message;
+  message.t = kNow;
+  message.navigation.has_epoch = true;
+  message.navigation.epoch.t = kNow;
+  message.navigation.epoch.count = 2;
+  message.navigation.epoch.observations[0].prn = 5;
+  message.navigation.epoch.observations[1].prn = 5;
+  const visors::core::Check check = validate(message, kNow);
+  EXPECT_EQ(check.field(), std::string_view("crosslink.navigation.epoch.observations.prn"));
+}
+
+// The crosslink's epoch and the filter's are the same observations: a receiver epoch goes out
+// and comes back bit for bit (gnc/onboard_navigation.hpp's conversions at the navigation's edge).
+TEST(Messages, AReceiverEpochComesBackFromTheCrosslinkBitForBit) {
+  visors::nav::GpsReceiverEpoch epoch;
+  epoch.t = kNow;
+  epoch.count = 3;
+  epoch.observations[0] = {3, 2.2e7 + 0.1, 1.15e8 + 0.25, true, false};
+  epoch.observations[1] = {17, 2.3e7 - 0.3, -1.2e8, false, true};
+  epoch.observations[2] = {32, 2.4e7, 1.3e8 + 1e-6, true, true};
+  const visors::nav::GpsReceiverEpoch back = receiver_epoch(crosslink_epoch(epoch));
+  EXPECT_EQ(back.t, epoch.t);
+  EXPECT_EQ(back.count, 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto &a = back.observations[k], &b = epoch.observations[k];
+    EXPECT_TRUE(a.prn == b.prn && a.code_m == b.code_m && a.phase_cycles == b.phase_cycles && a.loss_of_lock == b.loss_of_lock &&
+                a.half_cycle == b.half_cycle)
+        << k;
+  }
 }
 
 TEST(Messages, PropulsionTelemetryNeedsPositiveMass) {

@@ -57,7 +57,7 @@ TEST(OnboardNavigationAlloc, StepAllocatesNothing) {
     const nav::GpsReceiverEpoch own = nav::receiver_epoch(dsc_rx.measure(pd, truth).measurement);
     gnc::CrosslinkNavigation peer;
     peer.has_epoch = true;
-    peer.epoch = nav::receiver_epoch(osc_rx.measure(po, truth).measurement);
+    peer.epoch = gnc::crosslink_epoch(nav::receiver_epoch(osc_rx.measure(po, truth).measurement));
     nav.add_own_epoch(own, Eigen::Quaterniond::Identity());
     nav.add_peer(peer);
     (void)nav.solve(own.t + 1.0);

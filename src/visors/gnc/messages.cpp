@@ -51,11 +51,18 @@ core::Check check_unit(const Eigen::Quaterniond& q, const char* field) {
   return {};
 }
 
-// A receiver epoch's structure (nav::check) and the receiver's channel count (12); the field is
-// the epoch's.
-core::Check check_epoch(const nav::GpsReceiverEpoch& epoch, const char* field) {
-  if (epoch.count > gnss::kMaxGpsChannels) return {Problem::kOutOfRange, field};
-  if (const core::Check structure = nav::check(epoch); !structure) return {structure.problem(), field};
+// The crosslinked epoch's structure: 0..12 observations of PRNs 1..32, none repeated.
+core::Check check_epoch(const CrosslinkEpoch& epoch) {
+  if (epoch.count < 0 || epoch.count > gnss::kMaxGpsChannels) return {Problem::kOutOfRange, "crosslink.navigation.epoch.count"};
+  for (int i = 0; i < epoch.count; ++i) {
+    const int prn = epoch.observations[static_cast<std::size_t>(i)].prn;
+    if (prn < 1 || prn > 32) return {Problem::kOutOfRange, "crosslink.navigation.epoch.observations.prn"};
+    for (int j = 0; j < i; ++j) {
+      if (epoch.observations[static_cast<std::size_t>(j)].prn == prn) {
+        return {Problem::kRepeated, "crosslink.navigation.epoch.observations.prn"};
+      }
+    }
+  }
   return {};
 }
 
@@ -66,7 +73,7 @@ core::Check check_range(double range_m, const char* field) {
 
 core::Check check_navigation(const CrosslinkNavigation& n, core::GpsTime sent) {
   if (n.has_epoch) {
-    if (const auto ok = check_epoch(n.epoch, "crosslink.navigation.epoch"); !ok) return ok;
+    if (const auto ok = check_epoch(n.epoch); !ok) return ok;
     if (n.epoch.t > sent) return {Problem::kInconsistent, "crosslink.navigation.epoch.t"};  // after the message
     if (const auto ok = check_unit(n.q_body_to_gcrf, "crosslink.navigation.q_body_to_gcrf"); !ok) return ok;
   }

@@ -21,7 +21,6 @@
 #include "visors/gnc/gnc_mode.hpp"
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/gps_measurement.hpp"
-#include "visors/nav/gps_observations.hpp"
 
 namespace visors::gnc {
 
@@ -97,10 +96,28 @@ struct ExecutedImpulse {
 };
 inline constexpr int kCrosslinkImpulses = 2;
 
+/// One satellite of the sender's receiver epoch: L1 C/A code and carrier phase with the
+/// receiver's two loss-of-lock bits (RINEX LLI bits 0 and 1).
+struct CrosslinkObservation {
+  int prn = 0;                // 1..32
+  double code_m = 0.0;        // pseudorange [m]
+  double phase_cycles = 0.0;  // carrier phase [cycles] (RINEX sign: grows with the range)
+  bool loss_of_lock = false;  // a slip may have occurred since the previous epoch
+  bool half_cycle = false;    // the phase may be off by half a cycle, until resolved
+};
+
+/// The sender's receiver epoch as the crosslink carries it (the filter's own form is the
+/// navigation's: gnc/onboard_navigation.hpp converts at its edge).
+struct CrosslinkEpoch {
+  core::GpsTime t;  // the receiver's time tag
+  int count = 0;    // observations, 0..gnss::kMaxGpsChannels
+  std::array<CrosslinkObservation, gnss::kMaxGpsChannels> observations{};
+};
+
 /// The navigation part of the crosslink: what the other spacecraft's filter needs of the sender.
 struct CrosslinkNavigation {
   bool has_epoch = false;
-  nav::GpsReceiverEpoch epoch;  // the sender's receiver epoch of its step (at most kMaxGpsChannels)
+  CrosslinkEpoch epoch;  // the sender's receiver epoch of its step
   Eigen::Quaterniond q_body_to_gcrf = Eigen::Quaterniond::Identity();  // the sender's attitude at epoch.t
   /// The sender's last executed impulses, newest first, repeated in every message, so that one
   /// lost message loses none (impulses are at least 46.5 s apart).

@@ -140,7 +140,7 @@ void OnboardNavigation::add_own_epoch(const nav::GpsReceiverEpoch& epoch, const 
   store(own_, epoch, body_to_gcrf);
   last_own_epoch_ = epoch.t;
   outgoing_.has_epoch = true;
-  outgoing_.epoch = epoch;
+  outgoing_.epoch = crosslink_epoch(epoch);
   outgoing_.q_body_to_gcrf = q_body_to_gcrf;
 }
 
@@ -179,7 +179,7 @@ void OnboardNavigation::add_laser_range(const LaserRange& range) {
 
 void OnboardNavigation::add_peer(const CrosslinkNavigation& peer) {
   if (peer.has_epoch && !(processed_any_ && peer.epoch.t <= last_processed_)) {
-    store(peer_, peer.epoch, peer.q_body_to_gcrf.toRotationMatrix());
+    store(peer_, receiver_epoch(peer.epoch), peer.q_body_to_gcrf.toRotationMatrix());
   }
   // Oldest first, each once (they are repeated in every message).
   for (int k = peer.impulse_count - 1; k >= 0; --k) {
@@ -371,6 +371,29 @@ NavigationTelemetry OnboardNavigation::telemetry(core::GpsTime now) const {
   out.p_osc_body_m = st::kPhaseCenterUnit * x.segment<3>(st::phase_center(nav::Craft::kOsc));
   out.empirical_dsc_rtn_mps2 = st::kEmpiricalUnit * x.segment<3>(st::empirical_acceleration(nav::Craft::kDsc));
   out.empirical_osc_rtn_mps2 = st::kEmpiricalUnit * x.segment<3>(st::empirical_acceleration(nav::Craft::kOsc));
+  return out;
+}
+
+CrosslinkEpoch crosslink_epoch(const nav::GpsReceiverEpoch& epoch) {
+  CrosslinkEpoch out;
+  out.t = epoch.t;
+  out.count = std::clamp(epoch.count, 0, gnss::kMaxGpsChannels);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(out.count); ++k) {
+    const nav::GpsObservation& o = epoch.observations[k];
+    out.observations[k] = CrosslinkObservation{o.prn, o.code_m, o.phase_cycles, o.loss_of_lock, o.half_cycle};
+  }
+  return out;
+}
+
+nav::GpsReceiverEpoch receiver_epoch(const CrosslinkEpoch& epoch) {
+  static_assert(gnss::kMaxGpsChannels <= nav::kGpsSlots, "a receiver epoch holds every crosslinked observation");
+  nav::GpsReceiverEpoch out;
+  out.t = epoch.t;
+  out.count = std::clamp(epoch.count, 0, gnss::kMaxGpsChannels);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(out.count); ++k) {
+    const CrosslinkObservation& o = epoch.observations[k];
+    out.observations[k] = nav::GpsObservation{o.prn, o.code_m, o.phase_cycles, o.loss_of_lock, o.half_cycle};
+  }
   return out;
 }
 

@@ -173,4 +173,9 @@ class OnboardNavigation {
   NavigationCounters counters_;
 };
 
+/// A receiver epoch in the crosslink's form (gnc/messages.hpp) and back: the observations in
+/// order, at most gnss::kMaxGpsChannels of them (the own receiver's channels).
+CrosslinkEpoch crosslink_epoch(const nav::GpsReceiverEpoch& epoch);
+nav::GpsReceiverEpoch receiver_epoch(const CrosslinkEpoch& epoch);
+
 }  // namespace visors::gnc

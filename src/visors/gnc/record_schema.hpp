@@ -60,7 +60,7 @@ using EphemerisFields = Sequence<
     F64<"fit_interval_h", At<&Ephemeris::fit_interval_h>, "h", "fit interval">>;
 
 // The crosslink's navigation part (CrosslinkNavigation) and its counts.
-using CrosslinkEpochCount = Count<"epoch.count", At<&CrosslinkMessage::navigation, &CrosslinkNavigation::epoch, &nav::GpsReceiverEpoch::count>,
+using CrosslinkEpochCount = Count<"epoch.count", At<&CrosslinkMessage::navigation, &CrosslinkNavigation::epoch, &CrosslinkEpoch::count>,
                                   AtMostIf<gnss::kMaxGpsChannels, "has_epoch", At<&CrosslinkMessage::navigation, &CrosslinkNavigation::has_epoch>>,
                                   "observations in the epoch">;
 using CrosslinkImpulseCount = Count<"impulse_count", At<&CrosslinkMessage::navigation, &CrosslinkNavigation::impulse_count>,
@@ -70,13 +70,13 @@ using CrosslinkNavigationFields = Sequence<
     Flag<"has_range", At<&CrosslinkNavigation::has_range>, "the OSC's newest rangefinder measurement follows">,
     CrosslinkEpochCount, Padding<4>,
     IfFlag<"has_epoch", At<&CrosslinkMessage::navigation, &CrosslinkNavigation::has_epoch>,
-           Part<"epoch", At<&CrosslinkNavigation::epoch>, Time<"t", At<&nav::GpsReceiverEpoch::t>, "the receiver's time tag">,
-                Slots<"observations", gnss::kMaxGpsChannels, At<&nav::GpsReceiverEpoch::observations>, CrosslinkEpochCount,
-                      U8<"prn", At<&nav::GpsObservation::prn>, "satellite">,
-                      TwoBits<"flags", At<&nav::GpsObservation::loss_of_lock>, At<&nav::GpsObservation::half_cycle>,
+           Part<"epoch", At<&CrosslinkNavigation::epoch>, Time<"t", At<&CrosslinkEpoch::t>, "the receiver's time tag">,
+                Slots<"observations", gnss::kMaxGpsChannels, At<&CrosslinkEpoch::observations>, CrosslinkEpochCount,
+                      U8<"prn", At<&CrosslinkObservation::prn>, "satellite">,
+                      TwoBits<"flags", At<&CrosslinkObservation::loss_of_lock>, At<&CrosslinkObservation::half_cycle>,
                               "bit 0 loss of lock, bit 1 half-cycle ambiguity">,
-                      Padding<6>, F64<"code_m", At<&nav::GpsObservation::code_m>, "m", "L1 C/A pseudorange">,
-                      F64<"phase_cycles", At<&nav::GpsObservation::phase_cycles>, "cycles", "L1 carrier phase">>>,
+                      Padding<6>, F64<"code_m", At<&CrosslinkObservation::code_m>, "m", "L1 C/A pseudorange">,
+                      F64<"phase_cycles", At<&CrosslinkObservation::phase_cycles>, "cycles", "L1 carrier phase">>>,
            Quaternion<"q_body_to_gcrf", At<&CrosslinkNavigation::q_body_to_gcrf>, "the sender's attitude at epoch.t">>,
     Slots<"impulses", kCrosslinkImpulses, At<&CrosslinkNavigation::impulses>, CrosslinkImpulseCount,
           Time<"t", At<&ExecutedImpulse::t>, "when executed">,
