@@ -226,6 +226,7 @@ using Enumerated = Scalar<WireEnum<Enum, Count>, Name, Acc, "", Doc>;
 /// N doubles of a vector (Eigen or std::array) at Acc, element by element.
 template <int N, Text Name, class Acc, Text Unit, Text Doc>
 struct Vector {
+  static_assert(N == 3 || N == 6, "the table names 3- and 6-vectors");
   static constexpr std::size_t kBytes = 8 * N;
   template <class Root, class T>
   static void write(Writer& w, const Root&, const T& x) {
@@ -291,6 +292,7 @@ struct State {
 /// A symmetric N x N matrix as its upper triangle row by row; read back into both triangles.
 template <int N, Text Name, class Acc, Text Unit, Text Doc>
 struct SymmetricUpper {
+  static_assert(N == 6, "the table names a 6 x 6 matrix's 21 values");
   static constexpr std::size_t kBytes = 8 * N * (N + 1) / 2;
   template <class Root, class T>
   static void write(Writer& w, const Root&, const T& x) {
