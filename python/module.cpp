@@ -248,7 +248,6 @@ py::dict integer_least_squares(const Eigen::VectorXd& a, const Eigen::MatrixXd& 
   return out;
 }
 
-
 // Keplerian elements {a, e, i, raan, argp, M} [m, rad] as JSON text (the Python side serialises
 // the dict), read and validated as the tools read them (errors name "<name>.<field>").
 visors::astro::KeplerianElements elements_from(const std::string& elements_json, const std::string& name) {
@@ -265,6 +264,10 @@ template <typename T>
 T value_or_raise(visors::core::Result<T> result) {
   if (!result.ok()) throw py::value_error(result.error().describe());
   return std::move(result).value();
+}
+
+void value_or_raise(visors::core::Status status) {
+  if (!status.ok()) throw py::value_error(status.error().describe());
 }
 
 visors::astro::RelativeOrbitalElements finite_roe(const Eigen::Matrix<double, 6, 1>& roe, const std::string& name) {
@@ -287,7 +290,7 @@ class PyStochasticMpc {
     mpc_ = std::make_unique<visors::control::StochasticMpc>(value_or_raise(visors::control::StochasticMpc::create(settings)));
   }
   void set_target(const Eigen::Matrix<double, 6, 1>& roe_target, double tf) {
-    (void)value_or_raise(mpc_->set_target(finite_roe(roe_target, "roe_target"), tf));
+    value_or_raise(mpc_->set_target(finite_roe(roe_target, "roe_target"), tf));
   }
   py::dict step(double t, const std::string& chief_mean, const Eigen::Matrix<double, 6, 1>& roe_estimate,
                 const Eigen::Matrix<double, 6, 6>& covariance) {

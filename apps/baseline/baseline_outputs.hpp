@@ -6,7 +6,7 @@
 
 #include "apps/baseline/baseline_command.hpp"
 #include "visors/baseline/baseline_processor.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::baseline_app {
 

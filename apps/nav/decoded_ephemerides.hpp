@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/ephemeris_set.hpp"
 #include "visors/gnss/ephemeris_source.hpp"
 #include "visors/gnss/gps_constants.hpp"

@@ -28,7 +28,7 @@
 #include <Eigen/Geometry>
 
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/ephemeris_set.hpp"
 #include "apps/nav/decoded_ephemerides.hpp"
 #include "visors/nav/gps_observations.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "apps/preview/preview_scenario.hpp"
 
 namespace visors::preview {

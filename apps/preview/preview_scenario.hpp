@@ -11,7 +11,7 @@
 #include "visors/astro/keplerian_elements.hpp"
 #include "visors/core/constants.hpp"
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::preview {
 

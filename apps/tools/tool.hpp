@@ -45,6 +45,12 @@ T take(core::Result<T> result, const std::string& prefix = "") {
   return std::move(result).value();
 }
 
+/// The same for a flight call's Outcome.
+template <typename T>
+T take(core::Outcome<T> outcome, const std::string& prefix = "") {
+  return take(core::Result<T>(std::move(outcome)), prefix);
+}
+
 // Field readers: each checks presence, type and finiteness and names `path` in its error.
 double require_number(const Json& object, const std::string& key, const std::string& path = "");
 std::optional<double> optional_number(const Json& object, const std::string& key,

@@ -19,7 +19,7 @@ namespace {
 
 // The library names the covariance "covariance"; the tool's key is "cov".
 template <typename T>
-T take_renamed(core::Result<T> result) {
+T take_renamed(core::Outcome<T> result) {
   if (!result.ok() && result.error().field == "covariance") {
     throw ToolInputError("cov", result.error().message);
   }

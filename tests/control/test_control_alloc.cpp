@@ -85,7 +85,7 @@ TEST(ControlAllocation, MpcStepIntoAllocatesNothingWhenItReplans) {
   step.remaining.reserve(6);
   const Eigen::Matrix<double, 6, 6> covariance =
       Eigen::Matrix<double, 6, 6>::Identity() * std::pow(1e-3 / test::mission_chief().a, 2);
-  core::Result<bool> first = true;
+  core::Status first;
   long allocations = count_allocations(
       [&] { first = mpc.step_into(step, 0.0, test::mission_chief(), test::standby(), covariance); });
   ASSERT_TRUE(first.ok()) << first.error().describe();
@@ -99,7 +99,7 @@ TEST(ControlAllocation, MpcStepIntoAllocatesNothingWhenItReplans) {
   // A named type, not auto: an Eigen sum of a temporary would dangle.
   const astro::RelativeOrbitalElements disturbed = predict_roe(test::mission_chief(), test::standby(), done, t) + test::roe_m(0, 0.5, 0, 0, 0, 0);
   const auto chief_t = astro::propagate_mean_j2(test::mission_chief(), t);
-  core::Result<bool> second = true;
+  core::Status second;
   allocations = count_allocations([&] { second = mpc.step_into(step, t, chief_t, disturbed, covariance); });
   ASSERT_TRUE(second.ok()) << second.error().describe();
   EXPECT_TRUE(step.replanned) << "d = " << step.mahalanobis;

@@ -2,7 +2,9 @@
 // allocation-free routine steps.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <random>
@@ -475,4 +477,88 @@ TEST(FlightComponent, TransferLegsAimedOffByTheDragEndOnTarget) {
 // Without the compensation: measured a da -24.9 m, a dlambda +190 m (2026-11).
 TEST(FlightComponent, TransferLegsWithoutDragCompensationEndFarOff) {
   EXPECT_GT(std::abs(transfer_end_error_m(false, -1.5e-6)(1)), 100.0);
+}
+
+// Flight-code memory rule for failures (core::Status: a code and string literals): each case is a
+// configuration the creation accepts whose step-time calls then fail at every try (the planners, the
+// maneuver queue, the escape search, the estimate's conversions, the safety check). The failure is
+// counted, the step goes on, and nothing is allocated. The counters prove each failure happened.
+namespace {
+struct FailingSteps {
+  long allocations = 0;
+  std::int64_t planning_failures = 0;
+  std::int64_t rejected_navigation = 0;
+};
+
+FailingSteps run_failing_steps(const GncConfig& config, const Eigen::Matrix<double, 6, 1>& roe_m,
+                               std::span<const GroundCommand::Kind> commands, int steps, double deputy_speed_scale = 1.0) {
+  auto c = FlightComponent::create(config).value();
+  test::FormationHarness h(test::mission_chief(), roe_m, kT0);
+  c.step(h.inputs(0.0));  // the first step may allocate (docs/flight-software-process.md)
+  FailingSteps out;
+  for (int k = 1; k < steps; ++k) {
+    auto in = h.inputs(k);
+    const auto index = static_cast<std::size_t>(k - 1);
+    if (index < commands.size()) in.command = command(k, commands[index], 1);
+    if (in.navigation) in.navigation->deputy_gcrf.v *= deputy_speed_scale;
+    GncOutputs step_out;
+    out.allocations += visors::test::count_allocations([&] { step_out = c.step(in); });
+    out.planning_failures = step_out.telemetry.planning_failures;
+    out.rejected_navigation = step_out.telemetry.rejected.navigation;
+  }
+  return out;
+}
+
+using Kind = GroundCommand::Kind;
+constexpr std::array kStandby{Kind::kToStandby};
+}  // namespace
+
+TEST(FlightComponentFailures, AFullManeuverQueueAllocatesNothing) {
+  GncConfig config;
+  config.maneuver_queue_capacity = 1;  // a 10 m de correction takes several pieces
+  const auto r = run_failing_steps(config, test::roe_m(0, 0, 0, 210, 0, 200), kStandby, 20);
+  EXPECT_GT(r.planning_failures, 0);
+  EXPECT_EQ(r.allocations, 0);
+}
+
+TEST(FlightComponentFailures, AClosedFormWindowTooShortAllocatesNothing) {
+  GncConfig config;
+  config.burn_latency_s = 1e5;  // later than the 2-orbit plan's end: no burn window
+  const auto r = run_failing_steps(config, test::roe_m(0, 0, 0, 210, 0, 200), kStandby, 20);
+  EXPECT_GT(r.planning_failures, 0);
+  EXPECT_EQ(r.allocations, 0);
+}
+
+TEST(FlightComponentFailures, ATransferLongerThanItsWaypointListAllocatesNothing) {
+  GncConfig config;
+  config.transfer.max_waypoints = 1;  // the transfer from standby to science takes 8 legs
+  constexpr std::array kToScience{Kind::kToStandby, Kind::kStartScience};
+  const auto r = run_failing_steps(config, test::roe_m(0, 0, 0, 200, 0, 200), kToScience, 20);
+  EXPECT_GT(r.planning_failures, 10);  // retried every step
+  EXPECT_EQ(r.allocations, 0);
+}
+
+TEST(FlightComponentFailures, AnEscapeWithNoSafeCandidateAllocatesNothing) {
+  GncConfig config;
+  config.escape.epsilon_m = 1e5;  // no escape is that safe
+  config.escape.search_window_orbits = 0.0;
+  constexpr std::array kEscape{Kind::kEscape};
+  const auto r = run_failing_steps(config, test::roe_m(0, 0, 0, 200, 0, 200), kEscape, 20);
+  EXPECT_GT(r.planning_failures, 10);  // retried every step
+  EXPECT_EQ(r.allocations, 0);
+}
+
+TEST(FlightComponentFailures, AFormationBeyondTheLinearModelAllocatesNothing) {
+  // a dlambda = 100 km: |dROE| = 1.4e-2 > control::kMaxLinearRoe; the planner and the safety
+  // check both refuse the estimate.
+  const auto r = run_failing_steps(GncConfig{}, test::roe_m(0, 1e5, 0, 200, 0, 200), kStandby, 20);
+  EXPECT_GT(r.planning_failures, 0);
+  EXPECT_EQ(r.allocations, 0);
+}
+
+TEST(FlightComponentFailures, ANavigationSolutionOnAnEscapeOrbitAllocatesNothing) {
+  // The deputy at twice the circular speed is unbound (energy > 0): no Keplerian elements.
+  const auto r = run_failing_steps(GncConfig{}, test::roe_m(0, 0, 0, 200, 0, 200), kStandby, 20, 2.0);
+  EXPECT_GT(r.rejected_navigation, 10);
+  EXPECT_EQ(r.allocations, 0);
 }

@@ -72,7 +72,7 @@ TEST(Messages, ARepeatedSatelliteInTheCrosslinkedEpochIsRejected) {
   message.navigation.epoch.count = 2;
   message.navigation.epoch.observations[0].prn = 5;
   message.navigation.epoch.observations[1].prn = 5;
-  const visors::core::Check check = validate(message, kNow);
+  const visors::core::Status check = validate(message, kNow);
   EXPECT_EQ(check.field(), std::string_view("crosslink.navigation.epoch.observations.prn"));
 }
 

@@ -64,9 +64,9 @@ double eccentric_from_mean(double mean_anomaly, double e) {
   return mean_anomaly + (e_red - m_red);
 }
 
-core::Result<double> solve_kepler(double mean_anomaly, double e) {
-  if (!std::isfinite(e) || e < 0.0 || e >= 1.0) return core::Error{"e", "must be in [0, 1)"};
-  if (!std::isfinite(mean_anomaly)) return core::Error{"M", "must be finite"};
+core::Outcome<double> solve_kepler(double mean_anomaly, double e) {
+  if (!std::isfinite(e) || e < 0.0 || e >= 1.0) return core::Status{core::Problem::kOutOfRange, "e", "must be in [0, 1)"};
+  if (!std::isfinite(mean_anomaly)) return core::Status{core::Problem::kNotFinite, "M", "must be finite"};
   return eccentric_from_mean(mean_anomaly, e);
 }
 

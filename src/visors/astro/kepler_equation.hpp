@@ -15,7 +15,7 @@ namespace visors::astro {
 double eccentric_from_mean(double mean_anomaly, double e);
 
 /// Checked form of eccentric_from_mean: rejects e outside [0, 1) ("e") and a non-finite M ("M").
-core::Result<double> solve_kepler(double mean_anomaly, double e);
+core::Outcome<double> solve_kepler(double mean_anomaly, double e);
 
 double mean_from_eccentric(double eccentric_anomaly, double e);
 double true_from_eccentric(double eccentric_anomaly, double e);

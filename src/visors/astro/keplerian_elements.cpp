@@ -14,17 +14,17 @@ bool finite(const Eigen::Vector3d& x) { return x.allFinite(); }
 
 }  // namespace
 
-core::Result<KeplerianElements> validate_keplerian(const KeplerianElements& el) {
-  if (!std::isfinite(el.a) || el.a <= 0.0) return core::Error{"a", "must be finite and > 0"};
+core::Outcome<KeplerianElements> validate_keplerian(const KeplerianElements& el) {
+  if (!std::isfinite(el.a) || el.a <= 0.0) return core::Status{core::Problem::kOutOfRange, "a", "must be finite and > 0"};
   if (!std::isfinite(el.e) || el.e < 0.0 || el.e >= 1.0) {
-    return core::Error{"e", "must be in [0, 1)"};
+    return core::Status{core::Problem::kOutOfRange, "e", "must be in [0, 1)"};
   }
   if (!std::isfinite(el.i) || el.i < 0.0 || el.i > core::kPi) {
-    return core::Error{"i", "must be in [0, pi]"};
+    return core::Status{core::Problem::kOutOfRange, "i", "must be in [0, pi]"};
   }
-  if (!std::isfinite(el.raan)) return core::Error{"raan", "must be finite"};
-  if (!std::isfinite(el.argp)) return core::Error{"argp", "must be finite"};
-  if (!std::isfinite(el.M)) return core::Error{"M", "must be finite"};
+  if (!std::isfinite(el.raan)) return core::Status{core::Problem::kNotFinite, "raan", "must be finite"};
+  if (!std::isfinite(el.argp)) return core::Status{core::Problem::kNotFinite, "argp", "must be finite"};
+  if (!std::isfinite(el.M)) return core::Status{core::Problem::kNotFinite, "M", "must be finite"};
   return el;
 }
 
@@ -51,28 +51,28 @@ core::StateVector cartesian_from_keplerian(const KeplerianElements& el, double m
   return core::StateVector{x_pf * p + y_pf * q, vx_pf * p + vy_pf * q};
 }
 
-core::Result<core::StateVector> keplerian_to_cartesian(const KeplerianElements& elements, double mu) {
-  if (!std::isfinite(mu) || mu <= 0.0) return core::Error{"mu", "must be finite and > 0"};
+core::Outcome<core::StateVector> keplerian_to_cartesian(const KeplerianElements& elements, double mu) {
+  if (!std::isfinite(mu) || mu <= 0.0) return core::Status{core::Problem::kOutOfRange, "mu", "must be finite and > 0"};
   auto checked = validate_keplerian(elements);
-  if (!checked) return checked.error();
+  if (!checked) return checked.status();
   return cartesian_from_keplerian(elements, mu);
 }
 
-core::Result<KeplerianElements> cartesian_to_keplerian(const Eigen::Vector3d& r,
+core::Outcome<KeplerianElements> cartesian_to_keplerian(const Eigen::Vector3d& r,
                                                        const Eigen::Vector3d& v, double mu) {
-  if (!std::isfinite(mu) || mu <= 0.0) return core::Error{"mu", "must be finite and > 0"};
-  if (!finite(r)) return core::Error{"r", "must be finite"};
-  if (!finite(v)) return core::Error{"v", "must be finite"};
+  if (!std::isfinite(mu) || mu <= 0.0) return core::Status{core::Problem::kOutOfRange, "mu", "must be finite and > 0"};
+  if (!finite(r)) return core::Status{core::Problem::kNotFinite, "r", "must be finite"};
+  if (!finite(v)) return core::Status{core::Problem::kNotFinite, "v", "must be finite"};
   const double r_norm = r.norm();
-  if (r_norm == 0.0) return core::Error{"r", "must be nonzero"};
+  if (r_norm == 0.0) return core::Status{core::Problem::kOutOfRange, "r", "must be nonzero"};
   const Eigen::Vector3d h = r.cross(v);
   const double h_norm = h.norm();
   if (h_norm <= 1e-15 * r_norm * v.norm() || h_norm == 0.0) {
-    return core::Error{"v", "rectilinear motion (zero angular momentum) has no Keplerian elements"};
+    return core::Status{core::Problem::kOutOfRange, "v", "rectilinear motion (zero angular momentum) has no Keplerian elements"};
   }
   const double inv_a = 2.0 / r_norm - v.squaredNorm() / mu;
   if (!(inv_a > 0.0)) {
-    return core::Error{"v", "orbit is not elliptic (energy >= 0: parabolic or hyperbolic)"};
+    return core::Status{core::Problem::kOutOfRange, "v", "orbit is not elliptic (energy >= 0: parabolic or hyperbolic)"};
   }
   KeplerianElements el;
   el.a = 1.0 / inv_a;
@@ -103,7 +103,7 @@ core::Result<KeplerianElements> cartesian_to_keplerian(const Eigen::Vector3d& r,
     el.argp = std::atan2(e_m, e_n);
     nu = u_true - el.argp;
   }
-  if (el.e >= 1.0) return core::Error{"v", "orbit is not elliptic (e >= 1)"};
+  if (el.e >= 1.0) return core::Status{core::Problem::kOutOfRange, "v", "orbit is not elliptic (e >= 1)"};
   el.M = core::wrap_two_pi(mean_from_true(core::wrap_pi(nu), el.e));
   el.raan = core::wrap_two_pi(el.raan);
   el.argp = core::wrap_two_pi(el.argp);

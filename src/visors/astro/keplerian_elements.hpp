@@ -29,19 +29,19 @@ inline constexpr double kCircularTolerance = 1e-13;    // below: e = 0, argp = 0
 inline constexpr double kEquatorialTolerance = 1e-13;  // sin i below: raan = 0 [-]
 
 /// Checks a > 0, 0 <= e < 1, 0 <= i <= pi and finite angles; the error names the field ("a", ...).
-core::Result<KeplerianElements> validate_keplerian(const KeplerianElements& elements);
+core::Outcome<KeplerianElements> validate_keplerian(const KeplerianElements& elements);
 
 /// Two-body Cartesian state of validated elements (no check; see keplerian_to_cartesian).
 core::StateVector cartesian_from_keplerian(const KeplerianElements& elements, double mu);
 
 /// Checked conversion: invalid elements or mu <= 0 ("mu") give an Error.
-core::Result<core::StateVector> keplerian_to_cartesian(const KeplerianElements& elements,
+core::Outcome<core::StateVector> keplerian_to_cartesian(const KeplerianElements& elements,
                                                     double mu = core::EarthGravityConstants{}.mu);
 
 /// Elements of an inertial state. Angles raan, argp, M are wrapped to [0, 2 pi). Rejects
 /// non-finite input ("r", "v"), r = 0 ("r"), rectilinear motion ("v": zero angular momentum) and
 /// parabolic or hyperbolic energy ("v"), mu <= 0 ("mu").
-core::Result<KeplerianElements> cartesian_to_keplerian(const Eigen::Vector3d& r,
+core::Outcome<KeplerianElements> cartesian_to_keplerian(const Eigen::Vector3d& r,
                                                        const Eigen::Vector3d& v,
                                                        double mu = core::EarthGravityConstants{}.mu);
 

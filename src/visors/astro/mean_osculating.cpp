@@ -14,16 +14,16 @@ constexpr double kMaxEccentricity = 0.9;
 constexpr double kMinSinInclination = 1e-6;
 constexpr double kMinCriticalDistance = 1e-3;  // |1 - 5 cos^2 i|
 
-core::Result<KeplerianElements> check(const KeplerianElements& el) {
+core::Outcome<KeplerianElements> check(const KeplerianElements& el) {
   auto valid = validate_keplerian(el);
   if (!valid) return valid;
-  if (el.e > kMaxEccentricity) return core::Error{"e", "must be <= 0.9 for the first-order J2 map"};
+  if (el.e > kMaxEccentricity) return core::Status{core::Problem::kOutOfRange, "e", "must be <= 0.9 for the first-order J2 map"};
   if (std::sin(el.i) < kMinSinInclination) {
-    return core::Error{"i", "must not be equatorial (the J2 map is singular at i = 0, pi)"};
+    return core::Status{core::Problem::kSingular, "i", "must not be equatorial (the J2 map is singular at i = 0, pi)"};
   }
   const double c2 = std::cos(el.i) * std::cos(el.i);
   if (std::abs(1.0 - 5.0 * c2) < kMinCriticalDistance) {
-    return core::Error{"i", "too close to the critical inclination (1 - 5 cos^2 i = 0)"};
+    return core::Status{core::Problem::kOutOfRange, "i", "too close to the critical inclination (1 - 5 cos^2 i = 0)"};
   }
   return el;
 }
@@ -195,10 +195,10 @@ QuasiNonsingularElements map_mean_to_osculating(const KeplerianElements& m,
 
 }  // namespace
 
-core::Result<KeplerianElements> osculating_from_mean(const KeplerianElements& mean,
+core::Outcome<KeplerianElements> osculating_from_mean(const KeplerianElements& mean,
                                                      const core::EarthGravityConstants& gravity) {
   auto checked = check(mean);
-  if (!checked) return checked.error();
+  if (!checked) return checked.status();
   KeplerianElements osc = keplerian_from_quasi_nonsingular(map_mean_to_osculating(mean, gravity));
   osc.M = core::wrap_two_pi(osc.M);
   osc.argp = core::wrap_two_pi(osc.argp);
@@ -206,10 +206,10 @@ core::Result<KeplerianElements> osculating_from_mean(const KeplerianElements& me
   return osc;
 }
 
-core::Result<KeplerianElements> mean_from_osculating(const KeplerianElements& osculating,
+core::Outcome<KeplerianElements> mean_from_osculating(const KeplerianElements& osculating,
                                                      const core::EarthGravityConstants& gravity) {
   auto checked = check(osculating);
-  if (!checked) return checked.error();
+  if (!checked) return checked.status();
   const QuasiNonsingularElements target = quasi_nonsingular_from_keplerian(osculating);
   // The map is the identity plus O(J2), so x <- x + (target - F(x)) contracts by O(J2) per step.
   QuasiNonsingularElements x = target;
@@ -239,7 +239,7 @@ core::Result<KeplerianElements> mean_from_osculating(const KeplerianElements& os
       return mean;
     }
   }
-  return core::Error{"osculating", "osculating -> mean iteration did not converge"};
+  return core::Status{core::Problem::kNotConverged, "osculating", "osculating -> mean iteration did not converge"};
 }
 
 }  // namespace visors::astro

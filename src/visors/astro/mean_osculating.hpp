@@ -24,13 +24,13 @@ namespace visors::astro {
 
 /// Osculating elements of mean elements. Rejects invalid elements and the singularities above
 /// (field "i"), and e > 0.9 ("e", outside the range the first-order theory is meant for).
-core::Result<KeplerianElements> osculating_from_mean(const KeplerianElements& mean,
+core::Outcome<KeplerianElements> osculating_from_mean(const KeplerianElements& mean,
                                                      const core::EarthGravityConstants& gravity = {});
 
 /// Mean elements of osculating elements: fixed-point iteration of the mean -> osculating map in
 /// quasi-nonsingular elements until the residual is at round-off. Same rejections, plus
 /// "did not converge" (field "osculating") if 50 iterations are not enough.
-core::Result<KeplerianElements> mean_from_osculating(const KeplerianElements& osculating,
+core::Outcome<KeplerianElements> mean_from_osculating(const KeplerianElements& osculating,
                                                      const core::EarthGravityConstants& gravity = {});
 
 }  // namespace visors::astro

@@ -1,7 +1,6 @@
 #include "visors/astro/relative_orbital_elements.hpp"
 
 #include <cmath>
-#include <string>
 
 #include "visors/core/angles.hpp"
 #include "visors/core/constants.hpp"
@@ -9,10 +8,8 @@
 namespace visors::astro {
 namespace {
 
-core::Result<KeplerianElements> validate_named(const KeplerianElements& el, const std::string& who) {
-  auto checked = validate_keplerian(el);
-  if (!checked) return core::Error{who + "." + checked.error().field, checked.error().message};
-  return checked;
+core::Status validate_named(const KeplerianElements& el, const char* who) {
+  return validate_keplerian(el).status().within(who);
 }
 
 // The QNS set is singular at i_c = 0 or pi (diy = dRAAN sin i_c carries no information there).
@@ -20,13 +17,13 @@ constexpr double kMinSinInclination = 1e-10;
 
 }  // namespace
 
-core::Result<RelativeOrbitalElements> roe_from_keplerian(const KeplerianElements& chief,
+core::Outcome<RelativeOrbitalElements> roe_from_keplerian(const KeplerianElements& chief,
                                                          const KeplerianElements& deputy) {
-  if (auto c = validate_named(chief, "chief"); !c) return c.error();
-  if (auto d = validate_named(deputy, "deputy"); !d) return d.error();
+  if (auto c = validate_named(chief, "chief"); !c) return c;
+  if (auto d = validate_named(deputy, "deputy"); !d) return d;
   const double si = std::sin(chief.i);
   if (std::abs(si) < kMinSinInclination) {
-    return core::Error{"chief.i", "must not be equatorial (ROE are singular at i = 0, pi)"};
+    return core::Status{core::Problem::kSingular, "chief.i", "must not be equatorial (ROE are singular at i = 0, pi)"};
   }
   const double d_raan = core::wrap_pi(deputy.raan - chief.raan);
   const double d_u = core::wrap_pi((deputy.argp + deputy.M) - (chief.argp + chief.M));
@@ -40,15 +37,15 @@ core::Result<RelativeOrbitalElements> roe_from_keplerian(const KeplerianElements
   return roe;
 }
 
-core::Result<KeplerianElements> deputy_from_roe(const KeplerianElements& chief,
+core::Outcome<KeplerianElements> deputy_from_roe(const KeplerianElements& chief,
                                                 const RelativeOrbitalElements& roe) {
-  if (auto c = validate_named(chief, "chief"); !c) return c.error();
-  if (!roe.allFinite()) return core::Error{"roe", "must be finite"};
+  if (auto c = validate_named(chief, "chief"); !c) return c;
+  if (!roe.allFinite()) return core::Status{core::Problem::kNotFinite, "roe", "must be finite"};
   const double si = std::sin(chief.i);
   if (std::abs(si) < kMinSinInclination) {
-    return core::Error{"chief.i", "must not be equatorial (ROE are singular at i = 0, pi)"};
+    return core::Status{core::Problem::kSingular, "chief.i", "must not be equatorial (ROE are singular at i = 0, pi)"};
   }
-  if (roe[roe::kDa] <= -1.0) return core::Error{"roe.da", "must be > -1 (deputy a > 0)"};
+  if (roe[roe::kDa] <= -1.0) return core::Status{core::Problem::kOutOfRange, "roe.da", "must be > -1 (deputy a > 0)"};
   KeplerianElements dep;
   dep.a = chief.a * (1.0 + roe[roe::kDa]);
   dep.i = chief.i + roe[roe::kDix];
@@ -57,12 +54,12 @@ core::Result<KeplerianElements> deputy_from_roe(const KeplerianElements& chief,
   const double ex = chief.e * std::cos(chief.argp) + roe[roe::kDex];
   const double ey = chief.e * std::sin(chief.argp) + roe[roe::kDey];
   dep.e = std::hypot(ex, ey);
-  if (dep.e >= 1.0) return core::Error{"roe.dex", "deputy eccentricity must be < 1"};
+  if (dep.e >= 1.0) return core::Status{core::Problem::kOutOfRange, "roe.dex", "deputy eccentricity must be < 1"};
   dep.argp = dep.e > 0.0 ? std::atan2(ey, ex) : 0.0;
   const double u = chief.argp + chief.M + roe[roe::kDlambda] - d_raan * std::cos(chief.i);
   dep.M = u - dep.argp;
   if (dep.i < 0.0 || dep.i > core::kPi) {
-    return core::Error{"roe.dix", "deputy inclination must be in [0, pi]"};
+    return core::Status{core::Problem::kOutOfRange, "roe.dix", "deputy inclination must be in [0, pi]"};
   }
   return dep;
 }

@@ -26,13 +26,13 @@ inline constexpr int kDiy = 5;
 
 /// ROE of a deputy w.r.t. a chief. Both element sets are validated (field "chief.a", "deputy.e",
 /// ...); the chief must not be equatorial ("chief.i": sin i_c = 0 makes diy meaningless).
-core::Result<RelativeOrbitalElements> roe_from_keplerian(const KeplerianElements& chief,
+core::Outcome<RelativeOrbitalElements> roe_from_keplerian(const KeplerianElements& chief,
                                                          const KeplerianElements& deputy);
 
 /// Inverse of roe_from_keplerian: the deputy's elements. Rejects a non-equatorial chief as above,
 /// non-finite ROE ("roe"), da <= -1 ("roe.da") and a deputy eccentricity >= 1 ("roe.dex").
 /// The deputy's argp is 0 when its eccentricity is exactly 0; angles are not wrapped.
-core::Result<KeplerianElements> deputy_from_roe(const KeplerianElements& chief,
+core::Outcome<KeplerianElements> deputy_from_roe(const KeplerianElements& chief,
                                                 const RelativeOrbitalElements& roe);
 
 }  // namespace visors::astro

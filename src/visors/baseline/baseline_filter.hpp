@@ -34,7 +34,7 @@
 #include "visors/baseline/baseline_settings.hpp"
 #include "visors/baseline/double_difference_system.hpp"
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/ambiguity_acceptance.hpp"
 
 namespace visors::baseline {

@@ -17,7 +17,7 @@
 #include "visors/baseline/baseline_settings.hpp"
 #include "visors/baseline/receiver_observables.hpp"
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/ephemeris_set.hpp"
 #include "visors/gnss/klobuchar.hpp"
 

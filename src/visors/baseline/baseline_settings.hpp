@@ -10,7 +10,7 @@
 
 #include <string_view>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/ambiguity_acceptance.hpp"
 
 namespace visors::baseline {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/files/rinex_obs_file.hpp"
 
 namespace visors::baseline {

@@ -8,7 +8,7 @@
 
 #include <toml++/toml.h>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/cdgps_settings.hpp"
 
 namespace visors::config {

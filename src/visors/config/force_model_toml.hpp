@@ -17,7 +17,7 @@
 
 #include <toml++/toml.h>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model_config.hpp"
 
 namespace visors::config {

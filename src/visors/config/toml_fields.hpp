@@ -12,7 +12,7 @@
 #include <Eigen/Core>
 #include <toml++/toml.h>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::config::toml_fields {
 

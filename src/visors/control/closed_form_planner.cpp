@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <string>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -82,33 +81,33 @@ struct ImpulseSet {
   int count = 0;
 };
 
-core::Result<bool> validate_inputs(const astro::KeplerianElements& chief_mean_t0, const astro::RelativeOrbitalElements& roe0,
+core::Status validate_inputs(const astro::KeplerianElements& chief_mean_t0, const astro::RelativeOrbitalElements& roe0,
                                    const astro::RelativeOrbitalElements& roe_target, double tf,
                                    const ClosedFormSettings& settings, const core::EarthGravityConstants& gravity) {
-  if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok.error();
-  if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
-  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
-  if (!std::isfinite(tf)) return core::Error{"tf", "must be finite"};
+  if (auto ok = validate_planner_chief(chief_mean_t0, "chief_mean_t0", gravity); !ok) return ok;
+  if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok;
+  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok;
+  if (!std::isfinite(tf)) return core::Status{core::Problem::kNotFinite, "tf", "must be finite"};
   if (!std::isfinite(settings.earliest_burn_s) || settings.earliest_burn_s < 0.0) {
-    return core::Error{"settings.earliest_burn_s", "must be finite and >= 0"};
+    return core::Status{core::Problem::kOutOfRange, "settings.earliest_burn_s", "must be finite and >= 0"};
   }
   if (!std::isfinite(settings.end_margin_s) || settings.end_margin_s < 0.0) {
-    return core::Error{"settings.end_margin_s", "must be finite and >= 0"};
+    return core::Status{core::Problem::kOutOfRange, "settings.end_margin_s", "must be finite and >= 0"};
   }
   if (!std::isfinite(settings.min_window_orbits) || settings.min_window_orbits < 1.5) {
-    return core::Error{"settings.min_window_orbits", "must be >= 1.5 (three-burn solution)"};
+    return core::Status{core::Problem::kOutOfRange, "settings.min_window_orbits", "must be >= 1.5 (three-burn solution)"};
   }
   if (settings.normal_burns != 1 && settings.normal_burns != 2) {
-    return core::Error{"settings.normal_burns", "must be 1 or 2"};
+    return core::Status{core::Problem::kOutOfRange, "settings.normal_burns", "must be 1 or 2"};
   }
   if (!std::isfinite(settings.terminal_tolerance_m) || settings.terminal_tolerance_m <= 0.0) {
-    return core::Error{"settings.terminal_tolerance_m", "must be finite and positive"};
+    return core::Status{core::Problem::kOutOfRange, "settings.terminal_tolerance_m", "must be finite and positive"};
   }
-  return true;
+  return {};
 }
 
 // Step 0: secular rates, the burn window (at least min_window_orbits long) and the pseudostate.
-core::Result<ClosedFormProblem> set_up(const astro::KeplerianElements& chief_mean_t0, const astro::RelativeOrbitalElements& roe0,
+core::Outcome<ClosedFormProblem> set_up(const astro::KeplerianElements& chief_mean_t0, const astro::RelativeOrbitalElements& roe0,
                                        const astro::RelativeOrbitalElements& roe_target, double tf,
                                        const ClosedFormSettings& settings, const core::EarthGravityConstants& gravity) {
   ClosedFormProblem p;
@@ -122,9 +121,8 @@ core::Result<ClosedFormProblem> set_up(const astro::KeplerianElements& chief_mea
   p.ts = settings.earliest_burn_s;
   p.te = tf - settings.end_margin_s;
   if (!(p.te - p.ts >= settings.min_window_orbits * p.orbit)) {
-    return core::Error{"tf", "horizon too short: the burn window must span at least " +
-                                 std::to_string(settings.min_window_orbits) + " orbits (" +
-                                 std::to_string(settings.min_window_orbits * p.orbit) + " s)"};
+    return core::Status{core::Problem::kOutOfRange, "tf",
+                        "horizon too short: the burn window must span settings.min_window_orbits orbits"};
   }
   p.a = chief_mean_t0.a;
   p.n = p.rates.n;
@@ -167,16 +165,16 @@ double normal_burn_time(const ClosedFormProblem& p, const Eigen::Vector2d& wi) {
 
 // Step 2: the normal burn(s) that remove the di part of w (two one orbit apart split it, so the
 // buffer can spread each half); w_residual loses their effect.
-core::Result<bool> add_normal_burns(const ClosedFormProblem& p, ImpulseSet& set, Vector6d& w_residual) {
+core::Status add_normal_burns(const ClosedFormProblem& p, ImpulseSet& set, Vector6d& w_residual) {
   using namespace astro::roe;
   const Eigen::Vector2d wi(p.w[kDix], p.w[kDiy]);
-  if (!(wi.norm() > 1e-12 * p.w.norm())) return true;
+  if (!(wi.norm() > 1e-12 * p.w.norm())) return {};
   const int burns = p.settings->normal_burns;
   const double tn = normal_burn_time(p, wi);
   std::array<double, 2> times{tn, tn + p.orbit};
   if (times[1] > p.te) times[1] = tn - p.orbit;
   if (burns == 2 && (times[1] < p.ts || times[1] > p.te)) {
-    return core::Error{"settings.normal_burns", "the window has no room for two normal burns one orbit apart"};
+    return core::Status{core::Problem::kOutOfRange, "settings.normal_burns", "the window has no room for two normal burns one orbit apart"};
   }
   Eigen::Vector2d sum_b = Eigen::Vector2d::Zero();
   for (int j = 0; j < burns; ++j) {
@@ -192,7 +190,7 @@ core::Result<bool> add_normal_burns(const ClosedFormProblem& p, ImpulseSet& set,
     w_residual -= set.impulses[idx].b * set.dv[idx];
   }
   set.count += burns;
-  return true;
+  return {};
 }
 
 struct TangentialCandidates {
@@ -282,12 +280,12 @@ Basis best_tangential_basis(const TangentialCandidates& cand, const Vector4d& r4
 
 // Step 3: tangential burns for the in-plane residual (da, dlambda, de), merged with a normal
 // burn at the same time (one impulse serves both planes).
-core::Result<bool> add_tangential_burns(const ClosedFormProblem& p, const Vector6d& w_residual, ImpulseSet& set) {
+core::Status add_tangential_burns(const ClosedFormProblem& p, const Vector6d& w_residual, ImpulseSet& set) {
   const Vector4d r4 = in_plane(w_residual);
-  if (!(r4.norm() > 1e-12 * p.w.norm())) return true;
+  if (!(r4.norm() > 1e-12 * p.w.norm())) return {};
   const TangentialCandidates cand = tangential_candidates(p, r4);
   const Basis best = best_tangential_basis(cand, r4, p.n);
-  if (best.size == 0) return core::Error{"roe_target", "singular geometry: no tangential burn basis"};
+  if (best.size == 0) return core::Status{core::Problem::kSingular, "roe_target", "singular geometry: no tangential burn basis"};
   const double x_scale = best.x.cwiseAbs().maxCoeff();
   for (int j = 0; j < best.size; ++j) {
     const double xj = best.x[j];
@@ -304,12 +302,12 @@ core::Result<bool> add_tangential_burns(const ClosedFormProblem& p, const Vector
     }
     set.dv[static_cast<std::size_t>(target)].y() += xj;
   }
-  return true;
+  return {};
 }
 
 // Step 4: minimum-norm correction of all impulse vectors, v += M' (M M')^-1 (w - M v), twice;
 // the plan must then reach w within settings.terminal_tolerance_m.
-core::Result<bool> correct_min_norm(const ClosedFormProblem& p, ImpulseSet& set) {
+core::Status correct_min_norm(const ClosedFormProblem& p, ImpulseSet& set) {
   const int count = set.count;
   Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3 * kMaxImpulses> m(6, 3 * count);
   Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3 * kMaxImpulses, 1> v(3 * count);
@@ -330,11 +328,10 @@ core::Result<bool> correct_min_norm(const ClosedFormProblem& p, ImpulseSet& set)
     residual = p.w - m * v;
   }
   if (!(residual.norm() <= p.settings->terminal_tolerance_m)) {
-    return core::Error{"roe_target", "singular geometry: the impulses cannot reach the target (residual " +
-                                         std::to_string(residual.norm()) + " m)"};
+    return core::Status{core::Problem::kSingular, "roe_target", "singular geometry: the impulses cannot reach the target"};
   }
   for (int k = 0; k < count; ++k) set.dv[static_cast<std::size_t>(k)] = v.segment<3>(3 * k);
-  return true;
+  return {};
 }
 
 }  // namespace
@@ -350,30 +347,30 @@ core::Result<ManeuverPlan> plan_closed_form(const astro::KeplerianElements& chie
   return plan;
 }
 
-core::Result<bool> plan_closed_form_into(ManeuverPlan& plan, const astro::KeplerianElements& chief_mean_t0,
+core::Status plan_closed_form_into(ManeuverPlan& plan, const astro::KeplerianElements& chief_mean_t0,
                                          const astro::RelativeOrbitalElements& roe0,
                                          const astro::RelativeOrbitalElements& roe_target, double tf,
                                          const ClosedFormSettings& settings, const core::EarthGravityConstants& gravity) {
   plan.impulses.clear();
   plan.dv_total_mps = 0.0;
   plan.dv_lower_bound_mps = 0.0;
-  if (auto ok = validate_inputs(chief_mean_t0, roe0, roe_target, tf, settings, gravity); !ok) return ok.error();
+  if (auto ok = validate_inputs(chief_mean_t0, roe0, roe_target, tf, settings, gravity); !ok) return ok;
   const auto problem = set_up(chief_mean_t0, roe0, roe_target, tf, settings, gravity);
-  if (!problem.ok()) return problem.error();
+  if (!problem.ok()) return problem.status();
   const ClosedFormProblem& p = *problem;
   // 1. The pseudostate and its delta-v lower bound.
   auto bound = delta_v_lower_bound(chief_mean_t0, p.w / p.a, tf - p.ts, gravity);
-  if (!bound.ok()) return bound.error();
+  if (!bound.ok()) return bound.status();
   if (p.w.norm() == 0.0) {  // already on target: no impulse
     plan.roe_final_predicted = roe_target;
-    return true;
+    return {};
   }
   // 2-4. Normal burns, tangential burns, minimum-norm correction.
   ImpulseSet set;
   Vector6d w_residual = p.w;
-  if (auto ok = add_normal_burns(p, set, w_residual); !ok) return ok.error();
-  if (auto ok = add_tangential_burns(p, w_residual, set); !ok) return ok.error();
-  if (auto ok = correct_min_norm(p, set); !ok) return ok.error();
+  if (auto ok = add_normal_burns(p, set, w_residual); !ok) return ok;
+  if (auto ok = add_tangential_burns(p, w_residual, set); !ok) return ok;
+  if (auto ok = correct_min_norm(p, set); !ok) return ok;
   for (int k = 0; k < set.count; ++k) {
     plan.impulses.push_back(Impulse{set.impulses[static_cast<std::size_t>(k)].t, set.dv[static_cast<std::size_t>(k)]});
   }
@@ -381,7 +378,7 @@ core::Result<bool> plan_closed_form_into(ManeuverPlan& plan, const astro::Kepler
   plan.dv_total_mps = total_delta_v(plan.impulses);
   plan.dv_lower_bound_mps = bound.value().total;
   plan.roe_final_predicted = predict_roe(chief_mean_t0, roe0, plan.impulses, tf, gravity);
-  return true;
+  return {};
 }
 
 }  // namespace visors::control

@@ -88,7 +88,7 @@ inline constexpr std::size_t kMaxClosedFormImpulses = 14;
 
 /// The same into `plan` (its impulse vector cleared and refilled: with capacity for
 /// kMaxClosedFormImpulses nothing is allocated). On error `plan` is unspecified.
-core::Result<bool> plan_closed_form_into(ManeuverPlan& plan, const astro::KeplerianElements& chief_mean_t0,
+core::Status plan_closed_form_into(ManeuverPlan& plan, const astro::KeplerianElements& chief_mean_t0,
                                          const astro::RelativeOrbitalElements& roe0,
                                          const astro::RelativeOrbitalElements& roe_target, double tf,
                                          const ClosedFormSettings& settings = {},

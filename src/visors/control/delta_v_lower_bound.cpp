@@ -69,14 +69,14 @@ double dlambda_gauge(double a_dda, double a_ddlambda, double lever, double n) {
   return std::max({best_value, f1, f2});
 }
 
-core::Result<DeltaVLowerBound> delta_v_lower_bound(const astro::KeplerianElements& chief_mean,
+core::Outcome<DeltaVLowerBound> delta_v_lower_bound(const astro::KeplerianElements& chief_mean,
                                                    const astro::RelativeOrbitalElements& delta_roe,
                                                    double window,
                                                    const core::EarthGravityConstants& gravity) {
   using namespace astro::roe;
-  if (auto ok = validate_planner_chief(chief_mean, "chief_mean", gravity); !ok) return ok.error();
-  if (!delta_roe.allFinite()) return core::Error{"delta_roe", "must be finite"};
-  if (!std::isfinite(window) || window <= 0.0) return core::Error{"window", "must be finite and positive"};
+  if (auto ok = validate_planner_chief(chief_mean, "chief_mean", gravity); !ok) return ok;
+  if (!delta_roe.allFinite()) return core::Status{core::Problem::kNotFinite, "delta_roe", "must be finite"};
+  if (!std::isfinite(window) || window <= 0.0) return core::Status{core::Problem::kOutOfRange, "window", "must be finite and positive"};
 
   const astro::J2SecularRates rates = astro::j2_secular_rates(chief_mean, gravity);
   const double n = rates.n;

@@ -76,7 +76,7 @@ struct DeltaVLowerBound {
 /// Errors: invalid chief ("chief_mean.<field>"), e >= 0.1 ("chief_mean.e": near-circular
 /// theory), equatorial chief ("chief_mean.i"), invalid gravity constants ("gravity"), non-finite ROE ("delta_roe"), window not finite or
 /// not positive ("window").
-core::Result<DeltaVLowerBound> delta_v_lower_bound(const astro::KeplerianElements& chief_mean,
+core::Outcome<DeltaVLowerBound> delta_v_lower_bound(const astro::KeplerianElements& chief_mean,
                                                    const astro::RelativeOrbitalElements& delta_roe,
                                                    double window,
                                                    const core::EarthGravityConstants& gravity = {});

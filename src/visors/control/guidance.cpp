@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include <Eigen/Geometry>
 
@@ -46,18 +45,16 @@ RelativeOrbitalElements standby_roe(double chief_a, const StandbyOrbit& orbit) {
   return r;
 }
 
-core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_mean_t0, core::GpsTime t0,
+core::Outcome<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_mean_t0, core::GpsTime t0,
                                          const ScienceGeometry& geometry, const core::EarthGravityConstants& gravity) {
-  if (auto valid = astro::validate_keplerian(chief_mean_t0); !valid) {
-    return core::Error{"chief." + valid.error().field, valid.error().message};
-  }
+  if (const core::Status valid = astro::validate_keplerian(chief_mean_t0).status(); !valid) return valid.within("chief");
   if (!(geometry.focal_distance_m > 0.0) || !std::isfinite(geometry.focal_distance_m)) {
-    return core::Error{"focal_distance_m", "must be a finite number > 0 m"};
+    return core::Status{core::Problem::kOutOfRange, "focal_distance_m", "must be a finite number > 0 m"};
   }
-  if (!std::isfinite(geometry.los_rate_mps)) return core::Error{"los_rate_mps", "must be finite"};
-  if (!geometry.offset_rtn_m.allFinite()) return core::Error{"offset_rtn_m", "must be finite"};
+  if (!std::isfinite(geometry.los_rate_mps)) return core::Status{core::Problem::kNotFinite, "los_rate_mps", "must be finite"};
+  if (!geometry.offset_rtn_m.allFinite()) return core::Status{core::Problem::kNotFinite, "offset_rtn_m", "must be finite"};
 
-  if (!geometry.target_offset_rad.allFinite()) return core::Error{"target_offset_rad", "must be finite"};
+  if (!geometry.target_offset_rad.allFinite()) return core::Status{core::Problem::kNotFinite, "target_offset_rad", "must be finite"};
 
   // The Sun moves ~1 deg/day: the target's direction at t0 places the observation; the state is
   // then built with its direction at the observation time itself. The apparent direction from the
@@ -67,7 +64,7 @@ core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_m
       sun_geometry(chief_mean_t0, astro::apparent_target_unit_gcrf(t0, astro::cartesian_from_keplerian(chief_mean_t0, gravity.mu),
                                                                     geometry.target_offset_rad));
   if (std::abs(sun0.beta) > 89.0 * core::kDegToRad) {
-    return core::Error{"t0", "the Sun is within 1 deg of the orbit normal: no TN-plane alignment"};
+    return core::Status{core::Problem::kOutOfRange, "t0", "the Sun is within 1 deg of the orbit normal: no TN-plane alignment"};
   }
   const double u_obs = core::wrap_two_pi(sun0.u_sun + (geometry.north ? 0.5 : -0.5) * core::kPi);
   const astro::J2SecularRates rates = astro::j2_secular_rates(chief_mean_t0, gravity);
@@ -103,19 +100,19 @@ struct TransferLegs {
   int legs = 1;
 };
 
-core::Result<TransferLegs> transfer_legs(const RelativeOrbitalElements& from, const RelativeOrbitalElements& to,
+core::Outcome<TransferLegs> transfer_legs(const RelativeOrbitalElements& from, const RelativeOrbitalElements& to,
                                          const TransferSettings& settings) {
-  if (!from.allFinite()) return core::Error{"from", "must be finite"};
-  if (!to.allFinite()) return core::Error{"to", "must be finite"};
-  if (!(settings.max_phase_step > 0.0)) return core::Error{"max_phase_step", "must be > 0"};
-  if (!(settings.max_size_ratio > 1.0)) return core::Error{"max_size_ratio", "must be > 1"};
+  if (!from.allFinite()) return core::Status{core::Problem::kNotFinite, "from", "must be finite"};
+  if (!to.allFinite()) return core::Status{core::Problem::kNotFinite, "to", "must be finite"};
+  if (!(settings.max_phase_step > 0.0)) return core::Status{core::Problem::kOutOfRange, "max_phase_step", "must be > 0"};
+  if (!(settings.max_size_ratio > 1.0)) return core::Status{core::Problem::kOutOfRange, "max_size_ratio", "must be > 1"};
   const auto polar = [](double x, double y) { return Eigen::Vector2d(std::hypot(x, y), std::atan2(y, x)); };
   const Eigen::Vector2d e0 = polar(from[roe::kDex], from[roe::kDey]);
   const Eigen::Vector2d i0 = polar(from[roe::kDix], from[roe::kDiy]);
   const Eigen::Vector2d e1 = polar(to[roe::kDex], to[roe::kDey]);
   const Eigen::Vector2d i1 = polar(to[roe::kDix], to[roe::kDiy]);
-  if (e0[0] == 0.0 || i0[0] == 0.0) return core::Error{"from", "needs non-zero e and i vectors"};
-  if (e1[0] == 0.0 || i1[0] == 0.0) return core::Error{"to", "needs non-zero e and i vectors"};
+  if (e0[0] == 0.0 || i0[0] == 0.0) return core::Status{core::Problem::kSingular, "from", "needs non-zero e and i vectors"};
+  if (e1[0] == 0.0 || i1[0] == 0.0) return core::Status{core::Problem::kSingular, "to", "needs non-zero e and i vectors"};
   TransferLegs out;
   out.rho_e0 = e0[0];
   out.rho_i0 = i0[0];
@@ -163,15 +160,14 @@ core::Result<std::vector<RelativeOrbitalElements>> transfer_waypoints(const Rela
   return waypoints;
 }
 
-core::Result<int> transfer_waypoints_into(std::vector<RelativeOrbitalElements>& waypoints,
+core::Outcome<int> transfer_waypoints_into(std::vector<RelativeOrbitalElements>& waypoints,
                                           const RelativeOrbitalElements& from, const RelativeOrbitalElements& to,
                                           const TransferSettings& settings) {
   waypoints.clear();
   const auto legs = transfer_legs(from, to, settings);
-  if (!legs.ok()) return legs.error();
+  if (!legs.ok()) return legs.status();
   if (static_cast<std::size_t>(legs->legs) > waypoints.capacity()) {
-    return core::Error{"waypoints", std::to_string(legs->legs) + " legs exceed the capacity " +
-                                        std::to_string(waypoints.capacity()) + " (a degenerate geometry?)"};
+    return core::Status{core::Problem::kCapacity, "waypoints", "more legs than its capacity (a degenerate geometry?)"};
   }
   fill_waypoints(waypoints, from, to, *legs);
   return legs->legs;

@@ -62,7 +62,7 @@ struct ScienceOrbit {
 /// line is the apparent direction of the commanded target seen from the chief at t_obs
 /// (astro/apparent_sun.hpp). Errors: invalid elements or geometry, a Sun direction
 /// too close to the orbit normal (|beta| > 89 deg: no TN-plane alignment).
-core::Result<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_mean_t0, core::GpsTime t0,
+core::Outcome<ScienceOrbit> science_orbit(const astro::KeplerianElements& chief_mean_t0, core::GpsTime t0,
                                          const ScienceGeometry& geometry = {},
                                          const core::EarthGravityConstants& gravity = {});
 
@@ -80,7 +80,7 @@ core::Result<std::vector<astro::RelativeOrbitalElements>> transfer_waypoints(
 
 /// The same into `waypoints` (cleared and refilled, never allocating); returns the number of
 /// legs. Error "waypoints" when they would exceed its capacity (reserve it beforehand).
-core::Result<int> transfer_waypoints_into(std::vector<astro::RelativeOrbitalElements>& waypoints,
+core::Outcome<int> transfer_waypoints_into(std::vector<astro::RelativeOrbitalElements>& waypoints,
                                           const astro::RelativeOrbitalElements& from,
                                           const astro::RelativeOrbitalElements& to,
                                           const TransferSettings& settings = {});

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "visors/astro/relative_orbital_elements.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::control {
 

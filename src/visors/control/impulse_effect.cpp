@@ -23,25 +23,27 @@ astro::RelativeOrbitalElements predict_roe(const astro::KeplerianElements& chief
   return roe;
 }
 
-core::Result<bool> validate_planner_chief(const astro::KeplerianElements& chief, const std::string& chief_name,
-                                          const core::EarthGravityConstants& gravity) {
-  const auto valid = astro::validate_keplerian(chief);
-  if (!valid.ok()) return core::Error{chief_name + "." + valid.error().field, valid.error().message};
-  if (chief.e >= 0.1) return core::Error{chief_name + ".e", "must be below 0.1 (near-circular planners)"};
-  if (std::sin(chief.i) < 1e-6) return core::Error{chief_name + ".i", "must not be equatorial"};
+core::Status validate_planner_chief(const astro::KeplerianElements& chief, const char* chief_name,
+                                    const core::EarthGravityConstants& gravity) {
+  if (const core::Status valid = astro::validate_keplerian(chief).status(); !valid) return valid.within(chief_name);
+  if (chief.e >= 0.1) {
+    return core::Status{core::Problem::kOutOfRange, "e", "must be below 0.1 (near-circular planners)"}.within(chief_name);
+  }
+  if (std::sin(chief.i) < 1e-6) return core::Status{core::Problem::kSingular, "i", "must not be equatorial"}.within(chief_name);
   if (!(gravity.mu > 0.0) || !(gravity.re > 0.0) || !std::isfinite(gravity.mu) || !std::isfinite(gravity.re) ||
       !std::isfinite(gravity.j2)) {
-    return core::Error{"gravity", "mu and re must be finite and positive, j2 finite"};
+    return core::Status{core::Problem::kOutOfRange, "gravity", "mu and re must be finite and positive, j2 finite"};
   }
-  return true;
+  return {};
 }
 
-core::Result<bool> validate_roe(const astro::RelativeOrbitalElements& roe, const std::string& name) {
-  if (!roe.allFinite()) return core::Error{name, "must be finite"};
+core::Status validate_roe(const astro::RelativeOrbitalElements& roe, const char* name) {
+  if (!roe.allFinite()) return core::Status{core::Problem::kNotFinite, name};
   if (roe.cwiseAbs().maxCoeff() > kMaxLinearRoe) {
-    return core::Error{name, "|dROE| above 1e-2 (a*dROE of tens of km) is outside the linear relative-motion model"};
+    return core::Status{core::Problem::kOutOfRange, name,
+                        "|dROE| above 1e-2 (a*dROE of tens of km) is outside the linear relative-motion model"};
   }
-  return true;
+  return {};
 }
 
 }  // namespace visors::control

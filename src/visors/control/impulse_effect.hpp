@@ -7,7 +7,6 @@
 // chief's mean elements at t_k from secular J2 (astro::propagate_mean_j2);
 // docs/algorithms/control.md#the-linear-model.
 
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -33,14 +32,14 @@ astro::RelativeOrbitalElements predict_roe(const astro::KeplerianElements& chief
 
 /// Checks a chief for the near-circular planners (valid elements, e < 0.1, not equatorial) and the
 /// gravity constants; the error names a field under `chief_name` (e.g. "chief.e") or "gravity".
-core::Result<bool> validate_planner_chief(const astro::KeplerianElements& chief, const std::string& chief_name,
-                                          const core::EarthGravityConstants& gravity);
+core::Status validate_planner_chief(const astro::KeplerianElements& chief, const char* chief_name,
+                                    const core::EarthGravityConstants& gravity);
 
 /// Largest |dROE| component the first-order model is used for (a*dROE ~ 69 km at 500 km; the
 /// model's errors grow as |dROE|^2 a, i.e. metres at 1e-3).
 inline constexpr double kMaxLinearRoe = 1e-2;
 
 /// Finite and within kMaxLinearRoe; the error names `name`.
-core::Result<bool> validate_roe(const astro::RelativeOrbitalElements& roe, const std::string& name);
+core::Status validate_roe(const astro::RelativeOrbitalElements& roe, const char* name);
 
 }  // namespace visors::control

@@ -66,7 +66,7 @@ core::Result<LeastSquaresPlan> plan_least_squares(const astro::KeplerianElements
 
 /// The same into `out` (its impulse vector cleared and refilled: with capacity for
 /// kMaxLeastSquaresBurns nothing is allocated). On error `out` is unspecified.
-core::Result<bool> plan_least_squares_into(LeastSquaresPlan& out, const astro::KeplerianElements& chief_mean_t0,
+core::Status plan_least_squares_into(LeastSquaresPlan& out, const astro::KeplerianElements& chief_mean_t0,
                                            const astro::RelativeOrbitalElements& roe0,
                                            const astro::RelativeOrbitalElements& roe_target, double tf,
                                            std::span<const double> burn_times,

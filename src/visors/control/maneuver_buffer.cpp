@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include <Eigen/QR>
 
@@ -11,21 +10,21 @@
 namespace visors::control {
 namespace {
 
-core::Result<bool> check_inputs(const astro::KeplerianElements& chief, const Impulse& impulse, double mass,
+core::Status check_inputs(const astro::KeplerianElements& chief, const Impulse& impulse, double mass,
                                 const BufferSettings& s) {
-  if (!astro::validate_keplerian(chief).ok()) return core::Error{"chief", "invalid mean elements"};
-  if (!std::isfinite(impulse.t)) return core::Error{"maneuver.t", "must be finite"};
-  if (!impulse.dv_rtn.allFinite()) return core::Error{"maneuver.dv_rtn", "must be finite"};
-  if (!(mass > 0.0) || !std::isfinite(mass)) return core::Error{"mass", "must be a finite number > 0 kg"};
+  if (!astro::validate_keplerian(chief).ok()) return core::Status{core::Problem::kOutOfRange, "chief", "invalid mean elements"};
+  if (!std::isfinite(impulse.t)) return core::Status{core::Problem::kNotFinite, "maneuver.t", "must be finite"};
+  if (!impulse.dv_rtn.allFinite()) return core::Status{core::Problem::kNotFinite, "maneuver.dv_rtn", "must be finite"};
+  if (!(mass > 0.0) || !std::isfinite(mass)) return core::Status{core::Problem::kOutOfRange, "mass", "must be a finite number > 0 kg"};
   const ActuatorLimits& l = s.limits;
   if (!(l.max_impulse_ns > 0.0) || !(l.min_impulse_ns >= 0.0) || l.min_impulse_ns > l.max_impulse_ns) {
-    return core::Error{"limits", "need 0 <= min_impulse <= max_impulse, max_impulse > 0"};
+    return core::Status{core::Problem::kOutOfRange, "limits", "need 0 <= min_impulse <= max_impulse, max_impulse > 0"};
   }
-  if (!(l.quantum_ns >= 0.0) || l.quantum_ns > l.max_impulse_ns) return core::Error{"limits.quantum_ns", "must be in [0, max_impulse]"};
-  if (!(l.spacing_s > 0.0)) return core::Error{"limits.spacing_s", "must be > 0 s"};
-  if (s.max_pieces < 1) return core::Error{"max_pieces", "must be >= 1"};
-  if (!(s.cap_margin > 0.0 && s.cap_margin <= 1.0)) return core::Error{"cap_margin", "must be in (0, 1]"};
-  return true;
+  if (!(l.quantum_ns >= 0.0) || l.quantum_ns > l.max_impulse_ns) return core::Status{core::Problem::kOutOfRange, "limits.quantum_ns", "must be in [0, max_impulse]"};
+  if (!(l.spacing_s > 0.0)) return core::Status{core::Problem::kOutOfRange, "limits.spacing_s", "must be > 0 s"};
+  if (s.max_pieces < 1) return core::Status{core::Problem::kOutOfRange, "max_pieces", "must be >= 1"};
+  if (!(s.cap_margin > 0.0 && s.cap_margin <= 1.0)) return core::Status{core::Problem::kOutOfRange, "cap_margin", "must be in (0, 1]"};
+  return {};
 }
 
 using Effects = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3 * kMaxBufferPieces>;
@@ -81,10 +80,10 @@ ImpulseBuffer::ImpulseBuffer(ImpulseBuffer&&) noexcept = default;
 ImpulseBuffer& ImpulseBuffer::operator=(ImpulseBuffer&&) noexcept = default;
 ImpulseBuffer::~ImpulseBuffer() = default;
 
-core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+core::Status ImpulseBuffer::split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
                                         double mass, const BufferSettings& settings) {
-  if (auto ok = check_inputs(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
-  if (settings.max_pieces > kMaxBufferPieces) return core::Error{"max_pieces", "must be <= 99"};
+  if (auto ok = check_inputs(chief_mean_t0, impulse, mass, settings); !ok) return ok;
+  if (settings.max_pieces > kMaxBufferPieces) return core::Status{core::Problem::kOutOfRange, "max_pieces", "must be <= 99"};
   Work& w = *work_;
   pieces_.clear();
   const double cap = settings.cap_margin * settings.limits.max_impulse_ns / mass;  // [m/s]
@@ -94,7 +93,7 @@ core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_me
     w.effects = impulse_effect(chief_mean_t0, impulse.t, impulse.t, settings.gravity);
     w.target = w.effects * impulse.dv_rtn;
     pieces_.push_back(impulse);
-    return true;
+    return {};
   }
   for (int count = std::max(2, static_cast<int>(std::ceil(dv / cap))); count <= settings.max_pieces; ++count) {
     // Piece times centred on the planned time.
@@ -112,16 +111,14 @@ core::Result<bool> ImpulseBuffer::split(const astro::KeplerianElements& chief_me
       pieces_.push_back({time(j), w.x.segment<3>(3 * j)});
       within_cap = within_cap && pieces_.back().dv_rtn.norm() <= cap;
     }
-    if (within_cap) return true;
+    if (within_cap) return {};
   }
-  return core::Error{"maneuver.dv_rtn", "needs more than max_pieces = " + std::to_string(settings.max_pieces) +
-                                            " pieces of at most " + std::to_string(settings.limits.max_impulse_ns) +
-                                            " N s"};
+  return core::Status{core::Problem::kCapacity, "maneuver.dv_rtn", "needs more than max_pieces pieces of at most max_impulse_ns"};
 }
 
-core::Result<bool> ImpulseBuffer::buffer(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
+core::Status ImpulseBuffer::buffer(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,
                                          double mass, const BufferSettings& settings) {
-  if (auto ok = split(chief_mean_t0, impulse, mass, settings); !ok) return ok.error();
+  if (auto ok = split(chief_mean_t0, impulse, mass, settings); !ok) return ok;
   Work& w = *work_;
   const ActuatorLimits& limits = settings.limits;
   // Quantise piece j, then give what its rounding left to the pieces after it.
@@ -148,7 +145,7 @@ core::Result<bool> ImpulseBuffer::buffer(const astro::KeplerianElements& chief_m
   }
   result_.residual_roe_m = chief_mean_t0.a * remaining;
   result_.dv_total_mps = total_delta_v(result_.pieces);
-  return true;
+  return {};
 }
 
 core::Result<std::vector<Impulse>> split_impulse(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse,

@@ -73,10 +73,10 @@ class ImpulseBuffer {
 
   /// The unquantised split into pieces() (as split_impulse). Errors as buffer_impulse, and
   /// "max_pieces" above kMaxBufferPieces.
-  core::Result<bool> split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
+  core::Status split(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
                            const BufferSettings& settings);
   /// The split, quantised, into result() (as buffer_impulse).
-  core::Result<bool> buffer(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
+  core::Status buffer(const astro::KeplerianElements& chief_mean_t0, const Impulse& impulse, double mass,
                             const BufferSettings& settings);
 
   [[nodiscard]] const std::vector<Impulse>& pieces() const { return pieces_; }

@@ -212,7 +212,7 @@ core::Result<ManeuverPlan> ReachableSetPlanner::plan(const astro::KeplerianEleme
   return result;
 }
 
-core::Result<bool> ReachableSetPlanner::plan_into(ManeuverPlan& result, const astro::KeplerianElements& chief_mean_t0,
+core::Status ReachableSetPlanner::plan_into(ManeuverPlan& result, const astro::KeplerianElements& chief_mean_t0,
                                                   const astro::RelativeOrbitalElements& roe0,
                                                   const astro::RelativeOrbitalElements& roe_target, double t_earliest,
                                                   double tf) {
@@ -220,7 +220,7 @@ core::Result<bool> ReachableSetPlanner::plan_into(ManeuverPlan& result, const as
   result.dv_total_mps = 0.0;
   result.dv_lower_bound_mps = 0.0;
   stats_ = ReachableSetStats{};
-  if (auto ok = validate_inputs(chief_mean_t0, roe0, roe_target, t_earliest, tf); !ok) return ok.error();
+  if (auto ok = validate_inputs(chief_mean_t0, roe0, roe_target, t_earliest, tf); !ok) return ok;
 
   // Pseudostate in metres, normalised.
   const double a = chief_mean_t0.a;
@@ -232,47 +232,47 @@ core::Result<bool> ReachableSetPlanner::plan_into(ManeuverPlan& result, const as
   pb.tf = tf;
   pb.n = std::sqrt(settings_.gravity.mu / (a * a * a));
   pb.w_norm = w_m.norm();
-  if (!std::isfinite(pb.w_norm)) return invalid("roe_target", "pseudostate is not finite");
-  if (pb.w_norm <= 1e-12 * a * std::max(roe_target.norm(), 1e-9)) return true;  // already on target
+  if (!std::isfinite(pb.w_norm)) return core::Status{core::Problem::kNotFinite, "roe_target", "pseudostate is not finite"};
+  if (pb.w_norm <= 1e-12 * a * std::max(roe_target.norm(), 1e-9)) return {};  // already on target
   pb.w_hat = w_m / pb.w_norm;
   // dv [m/s] = (scaled dv) * n * |a w|: sum (n B_k)(dv_k / (n |a w|)) = a w / |a w|.
   pb.dv_scale = pb.n * pb.w_norm;
 
   build_grid(pb, t_earliest);
-  if (auto ok = screen_reachability(pb); !ok) return ok.error();
-  if (auto ok = exchange_iteration(pb); !ok) return ok.error();
+  if (auto ok = screen_reachability(pb); !ok) return ok;
+  if (auto ok = exchange_iteration(pb); !ok) return ok;
   // lambda / h_max is feasible for every grid constraint: weak duality gives the bound.
   Workspace& w = *work_;
   result.dv_lower_bound_mps = std::max(0.0, pb.w_hat.dot(w.lambda) / w.h_max) * pb.dv_scale;
   collect_candidates(pb);
-  if (w.count == 0) return invalid("solver", "no contact time found");
+  if (w.count == 0) return core::Status{core::Problem::kNotConverged, "solver", "no contact time found"};
   stats_.candidates = w.count;
-  if (auto ok = solve_magnitudes(pb); !ok) return ok.error();
+  if (auto ok = solve_magnitudes(pb); !ok) return ok;
   reduce_to_six();
   if (w.count > settings_.max_impulses) {
-    if (auto ok = reduce_to_max_impulses(pb); !ok) return ok.error();
+    if (auto ok = reduce_to_max_impulses(pb); !ok) return ok;
   }
   correct_terminal_residual(pb);
   return emit_plan(pb, drift, result);
 }
 
-core::Result<bool> ReachableSetPlanner::validate_inputs(const astro::KeplerianElements& chief_mean_t0,
+core::Status ReachableSetPlanner::validate_inputs(const astro::KeplerianElements& chief_mean_t0,
                                                         const astro::RelativeOrbitalElements& roe0,
                                                         const astro::RelativeOrbitalElements& roe_target,
                                                         double t_earliest, double tf) const {
   const auto chief_ok = astro::validate_keplerian(chief_mean_t0);
-  if (!chief_ok.ok()) return invalid("chief_mean_t0." + chief_ok.error().field, chief_ok.error().message);
-  if (!(std::abs(std::sin(chief_mean_t0.i)) > 1e-6)) return invalid("chief_mean_t0.i", "equatorial chief: QNS ROE undefined");
-  if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok.error();
-  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
-  if (!std::isfinite(t_earliest) || t_earliest < 0.0) return invalid("t_earliest", "must be finite and >= 0");
-  if (!std::isfinite(tf) || !(tf > t_earliest)) return invalid("tf", "must be finite and > t_earliest");
+  if (!chief_ok.ok()) return chief_ok.status().within("chief_mean_t0");
+  if (!(std::abs(std::sin(chief_mean_t0.i)) > 1e-6)) return core::Status{core::Problem::kSingular, "i", "equatorial chief: QNS ROE undefined"}.within("chief_mean_t0");
+  if (auto ok = validate_roe(roe0, "roe0"); !ok) return ok;
+  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok;
+  if (!std::isfinite(t_earliest) || t_earliest < 0.0) return core::Status{core::Problem::kOutOfRange, "t_earliest", "must be finite and >= 0"};
+  if (!std::isfinite(tf) || !(tf > t_earliest)) return core::Status{core::Problem::kOutOfRange, "tf", "must be finite and > t_earliest"};
   const double a = chief_mean_t0.a;
   const double period = 2.0 * std::numbers::pi / std::sqrt(settings_.gravity.mu / (a * a * a));
   if (tf - t_earliest < settings_.min_horizon_orbits * period) {
-    return invalid("horizon", "tf - t_earliest = " + std::to_string(tf - t_earliest) + " s is below min_horizon_orbits");
+    return core::Status{core::Problem::kOutOfRange, "horizon", "tf - t_earliest is below min_horizon_orbits"};
   }
-  return true;
+  return {};
 }
 
 // Step 1: B_k on the grid, the anchors and the initial dynamic slots (between the anchors).
@@ -300,7 +300,7 @@ void ReachableSetPlanner::build_grid(Problem& pb, double t_earliest) {
 // grid Gramian sum_k B_k B_k' of the smallest eigenvalues this bound is large exactly when the
 // window cannot steer some direction of w cheaply; beyond the dual box, the target counts as
 // unreachable (and the restricted SOCPs would be too ill-conditioned to say so themselves).
-core::Result<bool> ReachableSetPlanner::screen_reachability(const Problem& pb) const {
+core::Status ReachableSetPlanner::screen_reachability(const Problem& pb) const {
   const ReachableSetSettings& s = settings_;
   const Workspace& w = *work_;
   const int ng = s.grid_points;
@@ -312,16 +312,15 @@ core::Result<bool> ReachableSetPlanner::screen_reachability(const Problem& pb) c
     double support = 0.0;
     for (int k = 0; k < ng; ++k) support = std::max(support, (w.b_grid[at(k)].transpose() * v).norm());
     if (std::abs(pb.w_hat.dot(v)) > 0.5 * s.dual_box * support) {
-      return invalid("roe_target", "unreachable in the window: the dual lower bound exceeds " +
-                                       std::to_string(0.5 * s.dual_box * pb.dv_scale) + " m/s");
+      return core::Status{core::Problem::kInfeasible, "roe_target", "unreachable in the window: the dual lower bound exceeds the dual box"};
     }
   }
-  return true;
+  return {};
 }
 
 // Step 2: exchange iteration on the restricted dual (KD21), until no grid constraint
 // is violated by more than dual_tolerance. Leaves lambda, h_grid and h_max in the workspace.
-core::Result<bool> ReachableSetPlanner::exchange_iteration(const Problem& pb) {
+core::Status ReachableSetPlanner::exchange_iteration(const Problem& pb) {
   const ReachableSetSettings& s = settings_;
   Workspace& w = *work_;
   const int ng = s.grid_points;
@@ -335,20 +334,19 @@ core::Result<bool> ReachableSetPlanner::exchange_iteration(const Problem& pb) {
       dp.G.block(12 + 4 * j + 1, 0, 3, 6) = -w.b_grid[at(w.slot_grid_index(j, na))].transpose();
     }
     const auto info = w.dual_solver.solve(dp);
-    if (!info.ok()) return invalid("solver", info.error().describe());
+    if (!info.ok()) return info.status().within("solver");
     stats_.socp_iterations += info->iterations;
     stats_.exchange_iterations = it + 1;
     if (info->status == optim::ConicStatus::kPrimalInfeasible || info->status == optim::ConicStatus::kDualInfeasible) {
-      return invalid("roe_target", std::string("restricted dual SOCP is ") + std::string(optim::to_string(info->status)));
+      return core::Status{core::Problem::kInfeasible, "roe_target", "restricted dual SOCP infeasible"};
     }
     if (!usable(info->status)) {
-      return invalid("solver", std::string("restricted dual SOCP: ") + std::string(optim::to_string(info->status)));
+      return core::Status{core::Problem::kNotConverged, "solver", "restricted dual SOCP not solved"};
     }
     w.lambda = w.dual_solver.x();
-    if (!w.lambda.allFinite()) return invalid("solver", "restricted dual SOCP returned a non-finite multiplier");
+    if (!w.lambda.allFinite()) return core::Status{core::Problem::kNotFinite, "solver", "restricted dual SOCP returned a non-finite multiplier"};
     if (w.lambda.cwiseAbs().maxCoeff() > 0.5 * s.dual_box) {
-      return invalid("roe_target", "unreachable in the window: the dual box binds (cost above ~" +
-                                       std::to_string(0.5 * s.dual_box * pb.dv_scale) + " m/s)");
+      return core::Status{core::Problem::kInfeasible, "roe_target", "unreachable in the window: the dual box binds"};
     }
     w.h_max = 0.0;
     for (int k = 0; k < ng; ++k) {
@@ -361,7 +359,7 @@ core::Result<bool> ReachableSetPlanner::exchange_iteration(const Problem& pb) {
     if (w.h_max <= 1.0 + s.dual_tolerance) break;
     update_working_set();
   }
-  return true;
+  return {};
 }
 
 bool ReachableSetPlanner::is_local_max(int k) const {
@@ -458,7 +456,7 @@ void ReachableSetPlanner::collect_candidates(const Problem& pb) {
 
 // min sum ||dv_j|| s.t. sum B_j dv_j = w_hat over the first m candidates' times, with candidate
 // `skip` left out (-1: none); the impulses go to `dv_out` (m or m - 1 of them, in order).
-core::Result<double> ReachableSetPlanner::solve_fixed_times(const Problem& pb, int m, int skip,
+core::Outcome<double> ReachableSetPlanner::solve_fixed_times(const Problem& pb, int m, int skip,
                                                             std::vector<Eigen::Vector3d>& dv_out) {
   Workspace& w = *work_;
   const int used = skip >= 0 ? m - 1 : m;
@@ -470,30 +468,30 @@ core::Result<double> ReachableSetPlanner::solve_fixed_times(const Problem& pb, i
   }
   pp.b = pb.w_hat;
   const auto info = ps.solve(pp);
-  if (!info.ok()) return invalid("solver", info.error().describe());
+  if (!info.ok()) return info.status().within("solver");
   stats_.socp_iterations += info->iterations;
   if (!usable(info->status)) {
-    return invalid("solver", std::string("magnitude SOCP: ") + std::string(optim::to_string(info->status)));
+    return core::Status{core::Problem::kNotConverged, "solver", "magnitude SOCP not solved"};
   }
   double sum_norm = 0.0;
   for (int j = 0; j < used; ++j) {
     dv_out[at(j)] = ps.x().segment<3>(3 * j);
     sum_norm += dv_out[at(j)].norm();
   }
-  if (!std::isfinite(sum_norm)) return invalid("solver", "magnitude SOCP returned a non-finite solution");
+  if (!std::isfinite(sum_norm)) return core::Status{core::Problem::kNotFinite, "solver", "magnitude SOCP returned a non-finite solution"};
   return sum_norm;
 }
 
 // Step 4a: magnitudes, min sum ||dv_j|| over all the contact times; interior-point iterates leave
 // ~tolerance-sized impulses at unused times, which are dropped.
-core::Result<bool> ReachableSetPlanner::solve_magnitudes(const Problem& pb) {
+core::Status ReachableSetPlanner::solve_magnitudes(const Problem& pb) {
   Workspace& w = *work_;
   const auto sum_norm = solve_fixed_times(pb, w.count, -1, w.cand_dv);
-  if (!sum_norm.ok()) return sum_norm.error();
+  if (!sum_norm.ok()) return sum_norm.status();
   for (int j = w.count - 1; j >= 0; --j) {
     if (w.cand_dv[at(j)].norm() <= 1e-6 * *sum_norm) w.remove_candidate(j);
   }
-  return true;
+  return {};
 }
 
 // Step 4b: Caratheodory reduction to at most 6 impulses: with the directions fixed, the cost is
@@ -535,7 +533,7 @@ void ReachableSetPlanner::reduce_to_six() {
 // elimination from the optimal support (drop the impulse whose removal costs least, re-solving the
 // magnitude SOCP over the remaining times), kept only when cheaper than the best pair (which is
 // also a feasible k-impulse plan).
-core::Result<bool> ReachableSetPlanner::reduce_to_max_impulses(const Problem& pb) {
+core::Status ReachableSetPlanner::reduce_to_max_impulses(const Problem& pb) {
   const int k = settings_.max_impulses;
   if (k == 1) return best_single_impulse(pb);
   Workspace& w = *work_;
@@ -561,7 +559,7 @@ core::Result<bool> ReachableSetPlanner::reduce_to_max_impulses(const Problem& pb
   return best_impulse_pair(pb, greedy_cost);
 }
 
-core::Result<bool> ReachableSetPlanner::best_single_impulse(const Problem& pb) {
+core::Status ReachableSetPlanner::best_single_impulse(const Problem& pb) {
   const ReachableSetSettings& s = settings_;
   Workspace& w = *work_;
   double best_miss = std::numeric_limits<double>::infinity();
@@ -578,17 +576,17 @@ core::Result<bool> ReachableSetPlanner::best_single_impulse(const Problem& pb) {
     }
   }
   if (best < 0 || !(best_miss <= s.terminal_tolerance_m)) {
-    return invalid("max_impulses", "one impulse cannot reach this change: the best single impulse misses it by " +
-                                       std::to_string(best_miss) + " m (a general 6-element change needs two)");
+    return core::Status{core::Problem::kInfeasible, "max_impulses",
+                        "one impulse cannot reach this change (a general 6-element change needs two)"};
   }
   w.count = 1;
   w.cand_t[0] = w.t_grid[at(best)];
   w.cand_b[0] = w.b_grid[at(best)];
   w.cand_dv[0] = best_dv;
-  return true;
+  return {};
 }
 
-core::Result<bool> ReachableSetPlanner::best_impulse_pair(const Problem& pb, double cost_to_beat) {
+core::Status ReachableSetPlanner::best_impulse_pair(const Problem& pb, double cost_to_beat) {
   const ReachableSetSettings& s = settings_;
   Workspace& w = *work_;
   double best_cost = cost_to_beat;
@@ -614,8 +612,8 @@ core::Result<bool> ReachableSetPlanner::best_impulse_pair(const Problem& pb, dou
     }
   }
   if (best_p < 0) {
-    if (std::isfinite(cost_to_beat)) return true;  // the greedy plan stands
-    return invalid("max_impulses", "no plan with " + std::to_string(s.max_impulses) + " impulses reaches the target");
+    if (std::isfinite(cost_to_beat)) return {};  // the greedy plan stands
+    return core::Status{core::Problem::kInfeasible, "max_impulses", "no plan with max_impulses impulses reaches the target"};
   }
   w.count = 2;
   w.cand_t[0] = w.t_grid[at(best_p)];
@@ -624,7 +622,7 @@ core::Result<bool> ReachableSetPlanner::best_impulse_pair(const Problem& pb, dou
   w.cand_t[1] = w.t_grid[at(best_q)];
   w.cand_b[1] = w.b_grid[at(best_q)];
   w.cand_dv[1] = best_x.tail<3>();
-  return true;
+  return {};
 }
 
 // Step 4d: minimum-norm correction of the remaining equality residual (in the range of [B_j]):
@@ -651,7 +649,7 @@ void ReachableSetPlanner::correct_terminal_residual(const Problem& pb) {
 
 // Step 5: the plan, in m/s, sorted by time; never ok with a terminal miss (an always-on check of
 // the linear model's terminal state against the target).
-core::Result<bool> ReachableSetPlanner::emit_plan(const Problem& pb, const astro::RelativeOrbitalElements& drift,
+core::Status ReachableSetPlanner::emit_plan(const Problem& pb, const astro::RelativeOrbitalElements& drift,
                                                   ManeuverPlan& result) const {
   const Workspace& w = *work_;
   Vector6 reached = Vector6::Zero();
@@ -662,13 +660,13 @@ core::Result<bool> ReachableSetPlanner::emit_plan(const Problem& pb, const astro
   }
   std::sort(result.impulses.begin(), result.impulses.end(), [](const Impulse& l, const Impulse& r) { return l.t < r.t; });
   result.dv_total_mps = total_delta_v(result.impulses);
-  if (!std::isfinite(result.dv_total_mps)) return invalid("solver", "non-finite plan");
+  if (!std::isfinite(result.dv_total_mps)) return core::Status{core::Problem::kNotFinite, "solver", "non-finite plan"};
   const double miss_m = (reached - pb.w_hat).norm() * pb.w_norm;
   if (!(miss_m <= settings_.terminal_tolerance_m)) {
-    return invalid("solver", "the plan misses the target by " + std::to_string(miss_m) + " m in the linear model");
+    return core::Status{core::Problem::kNotConverged, "solver", "the plan misses the target in the linear model"};
   }
   result.roe_final_predicted = drift + reached * (pb.w_norm / pb.chief->a);
-  return true;
+  return {};
 }
 
 }  // namespace visors::control

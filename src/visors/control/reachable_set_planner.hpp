@@ -127,7 +127,7 @@ class ReachableSetPlanner {
                                   double tf);
   /// The same into `result` (its impulse vector cleared and refilled: with capacity for
   /// max_impulses, nothing is allocated). On error `result` is unspecified.
-  core::Result<bool> plan_into(ManeuverPlan& result, const astro::KeplerianElements& chief_mean_t0,
+  core::Status plan_into(ManeuverPlan& result, const astro::KeplerianElements& chief_mean_t0,
                                const astro::RelativeOrbitalElements& roe0,
                                const astro::RelativeOrbitalElements& roe_target, double t_earliest, double tf);
 
@@ -145,25 +145,25 @@ class ReachableSetPlanner {
   explicit ReachableSetPlanner(const ReachableSetSettings& settings);
 
   // The phases of plan_into, in order (steps of the file comment).
-  core::Result<bool> validate_inputs(const astro::KeplerianElements& chief_mean_t0,
+  core::Status validate_inputs(const astro::KeplerianElements& chief_mean_t0,
                                      const astro::RelativeOrbitalElements& roe0,
                                      const astro::RelativeOrbitalElements& roe_target, double t_earliest,
                                      double tf) const;
   void build_grid(Problem& pb, double t_earliest);
-  core::Result<bool> screen_reachability(const Problem& pb) const;
-  core::Result<bool> exchange_iteration(const Problem& pb);
+  core::Status screen_reachability(const Problem& pb) const;
+  core::Status exchange_iteration(const Problem& pb);
   void update_working_set();
   bool is_local_max(int k) const;
   void collect_candidates(const Problem& pb);
   void add_candidate(double t, const Effect& b);
-  core::Result<double> solve_fixed_times(const Problem& pb, int m, int skip, std::vector<Eigen::Vector3d>& dv_out);
-  core::Result<bool> solve_magnitudes(const Problem& pb);
+  core::Outcome<double> solve_fixed_times(const Problem& pb, int m, int skip, std::vector<Eigen::Vector3d>& dv_out);
+  core::Status solve_magnitudes(const Problem& pb);
   void reduce_to_six();
-  core::Result<bool> reduce_to_max_impulses(const Problem& pb);
-  core::Result<bool> best_single_impulse(const Problem& pb);
-  core::Result<bool> best_impulse_pair(const Problem& pb, double cost_to_beat);
+  core::Status reduce_to_max_impulses(const Problem& pb);
+  core::Status best_single_impulse(const Problem& pb);
+  core::Status best_impulse_pair(const Problem& pb, double cost_to_beat);
   void correct_terminal_residual(const Problem& pb);
-  core::Result<bool> emit_plan(const Problem& pb, const astro::RelativeOrbitalElements& drift,
+  core::Status emit_plan(const Problem& pb, const astro::RelativeOrbitalElements& drift,
                                ManeuverPlan& result) const;
 
   ReachableSetSettings settings_;

@@ -57,15 +57,15 @@ core::Result<StochasticMpc> StochasticMpc::create(const StochasticMpcSettings& s
   return StochasticMpc(s, std::move(planner).value());
 }
 
-core::Result<bool> StochasticMpc::set_target(const astro::RelativeOrbitalElements& roe_target, double tf) {
-  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok.error();
-  if (!std::isfinite(tf)) return invalid("tf", "must be finite");
+core::Status StochasticMpc::set_target(const astro::RelativeOrbitalElements& roe_target, double tf) {
+  if (auto ok = validate_roe(roe_target, "roe_target"); !ok) return ok;
+  if (!std::isfinite(tf)) return core::Status{core::Problem::kNotFinite, "tf"};
   target_ = roe_target;
   tf_ = tf;
   has_target_ = true;
   has_plan_ = false;
   plan_.impulses.clear();  // keeps its capacity
-  return true;
+  return {};
 }
 
 core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElements& chief_mean_t,
@@ -76,17 +76,16 @@ core::Result<MpcStep> StochasticMpc::step(double t, const astro::KeplerianElemen
   return out;
 }
 
-core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
+core::Status StochasticMpc::step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
                                             const astro::RelativeOrbitalElements& roe_estimate,
                                             const Matrix6d& covariance,
                                             const astro::RelativeOrbitalElements& drift_tf) {
-  if (!has_target_) return invalid("target", "set_target() was not called");
-  if (!std::isfinite(t) || t < last_t_ || t > tf_) return invalid("t", "must be finite, non-decreasing and <= tf");
-  const auto chief_ok = astro::validate_keplerian(chief_mean_t);
-  if (!chief_ok.ok()) return invalid("chief_mean_t." + chief_ok.error().field, chief_ok.error().message);
-  if (auto ok = validate_roe(roe_estimate, "roe_estimate"); !ok) return ok.error();
-  if (!symmetric_psd(covariance, true)) return invalid("covariance", "must be finite, symmetric and positive definite");
-  if (auto ok = validate_roe(drift_tf, "drift_tf"); !ok) return ok.error();
+  if (!has_target_) return core::Status{core::Problem::kNotReady, "target", "set_target() was not called"};
+  if (!std::isfinite(t) || t < last_t_ || t > tf_) return core::Status{core::Problem::kOutOfRange, "t", "must be finite, non-decreasing and <= tf"};
+  if (const core::Status ok = astro::validate_keplerian(chief_mean_t).status(); !ok) return ok.within("chief_mean_t");
+  if (auto ok = validate_roe(roe_estimate, "roe_estimate"); !ok) return ok;
+  if (!symmetric_psd(covariance, true)) return core::Status{core::Problem::kOutOfRange, "covariance", "must be finite, symmetric and positive definite"};
+  if (auto ok = validate_roe(drift_tf, "drift_tf"); !ok) return ok;
   last_t_ = t;
 
   const core::EarthGravityConstants& gravity = settings_.planner.gravity;
@@ -114,7 +113,7 @@ core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro:
   predict(mean, cov);
   if (has_plan_) {
     const Eigen::LLT<Matrix6d> llt(cov);
-    if (llt.info() != Eigen::Success) return invalid("covariance", "predicted terminal covariance is not positive definite");
+    if (llt.info() != Eigen::Success) return core::Status{core::Problem::kSingular, "covariance", "predicted terminal covariance is not positive definite"};
     const Eigen::Matrix<double, 6, 1> err = mean - target_;
     out.mahalanobis = std::sqrt(err.dot(llt.solve(err)));
   } else {
@@ -127,7 +126,7 @@ core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro:
     // Into the spare plan, swapped in on success (the previous plan stays on failure); both keep
     // their reserved capacity, so replanning allocates nothing.
     const astro::RelativeOrbitalElements aim = target_ - drift_tf;
-    if (auto ok = planner_.plan_into(fresh_, chief_mean_t, roe_estimate, aim, t_earliest, tau); !ok) return ok.error();
+    if (auto ok = planner_.plan_into(fresh_, chief_mean_t, roe_estimate, aim, t_earliest, tau); !ok) return ok;
     std::swap(plan_, fresh_);
     for (Impulse& imp : plan_.impulses) imp.t += t;
     has_plan_ = true;
@@ -137,7 +136,7 @@ core::Result<bool> StochasticMpc::step_into(MpcStep& out, double t, const astro:
   }
   out.remaining.assign(plan_.impulses.begin(), plan_.impulses.end());
   out.roe_final_predicted = mean;
-  return true;
+  return {};
 }
 
 }  // namespace visors::control

@@ -72,7 +72,7 @@ class StochasticMpc {
   static core::Result<StochasticMpc> create(const StochasticMpcSettings& settings = {});
 
   /// New goal: mean ROE `roe_target` at time tf; clears the plan. Errors "roe_target", "tf".
-  core::Result<bool> set_target(const astro::RelativeOrbitalElements& roe_target, double tf);
+  core::Status set_target(const astro::RelativeOrbitalElements& roe_target, double tf);
 
   /// One navigation update. chief_mean_t: the chief's mean elements at t. Errors: "t" (non-finite,
   /// before the previous update or after tf), "roe_estimate" (non-finite), "covariance"
@@ -85,7 +85,7 @@ class StochasticMpc {
   /// max_impulses, a step allocates nothing, replanning included). `drift_tf`: the predicted
   /// effect at tf of accelerations the planner does not model [-] (error "drift_tf" when not
   /// finite).
-  core::Result<bool> step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
+  core::Status step_into(MpcStep& out, double t, const astro::KeplerianElements& chief_mean_t,
                                const astro::RelativeOrbitalElements& roe_estimate,
                                const Eigen::Matrix<double, 6, 6>& covariance,
                                const astro::RelativeOrbitalElements& drift_tf = astro::RelativeOrbitalElements::Zero());

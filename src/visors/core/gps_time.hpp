@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::core {
 

@@ -17,7 +17,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::dynamics {
 

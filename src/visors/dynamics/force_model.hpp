@@ -17,7 +17,7 @@
 #include "visors/core/eop.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/atmosphere.hpp"
 #include "visors/dynamics/force_model_config.hpp"
 #include "visors/dynamics/gravity_field.hpp"

@@ -35,7 +35,7 @@
 #include <string>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/atmosphere.hpp"
 
 namespace visors::dynamics {

@@ -60,7 +60,7 @@
 #include <memory>
 #include <optional>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/atmosphere.hpp"
 #include "visors/dynamics/nrlmsise00_coefficients.hpp"
 

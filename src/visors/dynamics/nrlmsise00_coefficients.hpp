@@ -23,7 +23,7 @@
 #include <array>
 #include <optional>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::dynamics {
 

@@ -23,7 +23,7 @@
 
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/dormand_prince87.hpp"
 #include "visors/dynamics/force_model.hpp"
 

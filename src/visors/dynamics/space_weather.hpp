@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/atmosphere.hpp"
 
 namespace visors::dynamics {

@@ -23,7 +23,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/gravity_field.hpp"
 
 namespace visors::dynamics {

@@ -43,7 +43,7 @@
 #include "visors/control/closed_form_planner.hpp"
 #include "visors/control/least_squares_planner.hpp"
 #include "visors/control/stochastic_mpc.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/differential_drag_estimator.hpp"
 #include "visors/gnc/gnc_config.hpp"
 #include "visors/gnc/maneuver_queue.hpp"

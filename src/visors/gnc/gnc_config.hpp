@@ -12,7 +12,7 @@
 #include "visors/control/maneuver_buffer.hpp"
 #include "visors/control/stochastic_mpc.hpp"
 #include "visors/core/constants.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/differential_drag_estimator.hpp"
 #include "visors/gnc/messages.hpp"
 #include "visors/safety/escape_maneuver.hpp"

@@ -8,7 +8,7 @@ ManeuverQueue::ManeuverQueue(int capacity) : capacity_(static_cast<std::size_t>(
   pieces_.reserve(capacity_);
 }
 
-core::Result<int> ManeuverQueue::add(core::GpsTime epoch, const astro::KeplerianElements& chief_mean_epoch,
+core::Outcome<int> ManeuverQueue::add(core::GpsTime epoch, const astro::KeplerianElements& chief_mean_epoch,
                                      std::span<const control::Impulse> impulses, double mass_kg,
                                      const control::BufferSettings& settings) {
   if (next_ > 0) {  // compact: released pieces are gone for good
@@ -17,9 +17,9 @@ core::Result<int> ManeuverQueue::add(core::GpsTime epoch, const astro::Keplerian
   }
   int added = 0;
   for (const control::Impulse& impulse : impulses) {
-    if (auto ok = buffer_.buffer(chief_mean_epoch, impulse, mass_kg, settings); !ok) return ok.error();
+    if (auto ok = buffer_.buffer(chief_mean_epoch, impulse, mass_kg, settings); !ok) return ok;
     const auto& pieces = buffer_.result().pieces;
-    if (pieces_.size() + pieces.size() > capacity_) return core::Error{"queue", "more pieces than its capacity"};
+    if (pieces_.size() + pieces.size() > capacity_) return core::Status{core::Problem::kCapacity, "queue", "more pieces than its capacity"};
     for (const control::Impulse& piece : pieces) {
       pieces_.push_back({epoch + piece.t, piece.dv_rtn});
       ++added;

@@ -38,7 +38,7 @@ class ManeuverQueue {
   /// Buffers the impulses of a plan made at `epoch` (impulse times in seconds since epoch;
   /// chief_mean_epoch the chief's mean elements there) for a spacecraft of `mass_kg` and appends
   /// the pieces, sorted by time. Errors: the buffer's, or "queue" when the capacity is exceeded.
-  core::Result<int> add(core::GpsTime epoch, const astro::KeplerianElements& chief_mean_epoch,
+  core::Outcome<int> add(core::GpsTime epoch, const astro::KeplerianElements& chief_mean_epoch,
                         std::span<const control::Impulse> impulses, double mass_kg,
                         const control::BufferSettings& settings);
   /// The next piece if its time has come (t >= piece time) and `spacing` seconds have passed since

@@ -30,14 +30,14 @@ constexpr double kMaxSpeed = 2.0e4;    // [m/s]
 constexpr double kMaxImpulseDv = 1.0;  // [m/s], far above one 2.2e-2 N s impulse
 constexpr int kMaxObservations = 1000;
 
-core::Check check_age(core::GpsTime t, core::GpsTime now, double max_age, const char* field) {
+core::Status check_age(core::GpsTime t, core::GpsTime now, double max_age, const char* field) {
   const double age = static_cast<double>(now.nanoseconds() - t.nanoseconds()) * 1e-9;
   if (age < 0.0) return {Problem::kInTheFuture, field};
   if (age > max_age) return {Problem::kTooOld, field};
   return {};
 }
 
-core::Check check_state(const core::StateVector& x, const char* field) {
+core::Status check_state(const core::StateVector& x, const char* field) {
   if (!x.r.allFinite() || !x.v.allFinite()) return {Problem::kNotFinite, field};
   const double r = x.r.norm();
   if (r < kMinRadius || r > kMaxRadius) return {Problem::kOutOfRange, field};  // not in low Earth orbit
@@ -45,14 +45,14 @@ core::Check check_state(const core::StateVector& x, const char* field) {
   return {};
 }
 
-core::Check check_unit(const Eigen::Quaterniond& q, const char* field) {
+core::Status check_unit(const Eigen::Quaterniond& q, const char* field) {
   if (!q.coeffs().allFinite()) return {Problem::kNotFinite, field};
   if (std::abs(q.norm() - 1.0) > 1e-6) return {Problem::kNotUnit, field};
   return {};
 }
 
 // The crosslinked epoch's structure: 0..12 observations of PRNs 1..32, none repeated.
-core::Check check_epoch(const CrosslinkEpoch& epoch) {
+core::Status check_epoch(const CrosslinkEpoch& epoch) {
   if (epoch.count < 0 || epoch.count > gnss::kMaxGpsChannels) return {Problem::kOutOfRange, "crosslink.navigation.epoch.count"};
   for (int i = 0; i < epoch.count; ++i) {
     const int prn = epoch.observations[static_cast<std::size_t>(i)].prn;
@@ -66,12 +66,12 @@ core::Check check_epoch(const CrosslinkEpoch& epoch) {
   return {};
 }
 
-core::Check check_range(double range_m, const char* field) {
+core::Status check_range(double range_m, const char* field) {
   if (!std::isfinite(range_m) || range_m <= 0.0 || range_m > kMaxLaserRange) return {Problem::kOutOfRange, field};
   return {};
 }
 
-core::Check check_navigation(const CrosslinkNavigation& n, core::GpsTime sent) {
+core::Status check_navigation(const CrosslinkNavigation& n, core::GpsTime sent) {
   if (n.has_epoch) {
     if (const auto ok = check_epoch(n.epoch); !ok) return ok;
     if (n.epoch.t > sent) return {Problem::kInconsistent, "crosslink.navigation.epoch.t"};  // after the message
@@ -111,12 +111,12 @@ std::string_view to_string(GroundCommand::Kind kind) {
   return "unknown";
 }
 
-core::Check validate(const TimeAtTone& message, core::GpsTime now) {
+core::Status validate(const TimeAtTone& message, core::GpsTime now) {
   if (const auto ok = check_age(message.t, now, kMaxAgeTone, "time_at_tone.t"); !ok) return ok;
   return check_unit(message.q_body_to_gcrf, "time_at_tone.q_body_to_gcrf");
 }
 
-core::Check validate(const NavigationSolution& message, core::GpsTime now) {
+core::Status validate(const NavigationSolution& message, core::GpsTime now) {
   if (const auto ok = check_age(message.t, now, kMaxAgeNavigation, "navigation.t"); !ok) return ok;
   if (const auto ok = check_state(message.chief_gcrf, "navigation.chief_gcrf"); !ok) return ok;
   if (const auto ok = check_state(message.deputy_gcrf, "navigation.deputy_gcrf"); !ok) return ok;
@@ -131,7 +131,7 @@ core::Check validate(const NavigationSolution& message, core::GpsTime now) {
   return {};
 }
 
-core::Check validate(const CrosslinkMessage& message, core::GpsTime now) {
+core::Status validate(const CrosslinkMessage& message, core::GpsTime now) {
   if (const auto ok = check_age(message.t, now, kMaxAgeCrosslink, "crosslink.t"); !ok) return ok;
   if (static_cast<int>(message.sender) > 1) return {Problem::kUnknown, "crosslink.sender"};
   if (static_cast<int>(message.mode) >= kModeCount) return {Problem::kUnknown, "crosslink.mode"};
@@ -148,7 +148,7 @@ core::Check validate(const CrosslinkMessage& message, core::GpsTime now) {
   return check_navigation(message.navigation, message.t);
 }
 
-core::Check validate(const GroundCommand& message, core::GpsTime now) {
+core::Status validate(const GroundCommand& message, core::GpsTime now) {
   if (const auto ok = check_age(message.t, now, kMaxAgeCommand, "command.t"); !ok) return ok;
   if (static_cast<int>(message.kind) > static_cast<int>(GroundCommand::Kind::kMakePassive)) {
     return {Problem::kUnknown, "command.kind"};
@@ -160,7 +160,7 @@ core::Check validate(const GroundCommand& message, core::GpsTime now) {
   return {};
 }
 
-core::Check validate(const PropulsionTelemetry& message, core::GpsTime now) {
+core::Status validate(const PropulsionTelemetry& message, core::GpsTime now) {
   if (const auto ok = check_age(message.t, now, kMaxAgePropulsion, "propulsion.t"); !ok) return ok;
   if (!message.dv_body_mps.allFinite() || message.dv_body_mps.norm() > kMaxImpulseDv) {
     return {Problem::kOutOfRange, "propulsion.dv_body_mps"};  // finite and below 1 m/s
@@ -169,14 +169,14 @@ core::Check validate(const PropulsionTelemetry& message, core::GpsTime now) {
   return {};
 }
 
-core::Check validate(const GpsMessage& message, core::GpsTime now) {
+core::Status validate(const GpsMessage& message, core::GpsTime now) {
   if (const auto ok = check_age(message.t, now, kMaxAgeGps, "gps.t"); !ok) return ok;
   if (message.epoch.t != message.t) return {Problem::kInconsistent, "gps.epoch.t"};
-  if (const core::Check epoch = gnss::validate(message.epoch); !epoch) return {epoch.problem(), "gps.epoch"};
+  if (const core::Status epoch = gnss::validate(message.epoch); !epoch) return {epoch.problem(), "gps.epoch"};
   return {};
 }
 
-core::Check validate(const LaserRange& message, core::GpsTime now) {
+core::Status validate(const LaserRange& message, core::GpsTime now) {
   if (const auto ok = check_age(message.t, now, kMaxAgeLaser, "laser_range.t"); !ok) return ok;
   return check_range(message.range_m, "laser_range.range_m");
 }

@@ -14,10 +14,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "visors/core/check.hpp"
+#include "visors/core/status.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/gnc_mode.hpp"
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/gps_measurement.hpp"
@@ -294,15 +294,15 @@ struct GncOutputs {
   std::optional<NavigationTelemetry> navigation;  // every step, with on-board navigation
 };
 
-// ---- Validation: ok, or the problem and the field by its name (core::Check: no allocation, so a
+// ---- Validation: ok, or the problem and the field by its name (core::Status: no allocation, so a
 // refused record costs nothing but its count); times must be within their channel's age of the step.
 
-core::Check validate(const TimeAtTone& message, core::GpsTime now);
-core::Check validate(const NavigationSolution& message, core::GpsTime now);
-core::Check validate(const CrosslinkMessage& message, core::GpsTime now);
-core::Check validate(const GroundCommand& message, core::GpsTime now);
-core::Check validate(const PropulsionTelemetry& message, core::GpsTime now);
-core::Check validate(const GpsMessage& message, core::GpsTime now);
-core::Check validate(const LaserRange& message, core::GpsTime now);
+core::Status validate(const TimeAtTone& message, core::GpsTime now);
+core::Status validate(const NavigationSolution& message, core::GpsTime now);
+core::Status validate(const CrosslinkMessage& message, core::GpsTime now);
+core::Status validate(const GroundCommand& message, core::GpsTime now);
+core::Status validate(const PropulsionTelemetry& message, core::GpsTime now);
+core::Status validate(const GpsMessage& message, core::GpsTime now);
+core::Status validate(const LaserRange& message, core::GpsTime now);
 
 }  // namespace visors::gnc

@@ -32,7 +32,7 @@ struct AlignedTarget {
   astro::RelativeOrbitalElements roe_mean = astro::RelativeOrbitalElements::Zero();  // [-]
   double sun_elevation_rad = 0.0;  // the target above the chief's local horizontal plane [rad]
 };
-core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
+core::Outcome<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chief_mean, core::GpsTime t,
                                                               const control::ScienceGeometry& geometry,
                                                               const core::EarthGravityConstants& gravity);
 
@@ -40,12 +40,12 @@ core::Result<AlignedTarget> aligned_mean_roe(const astro::KeplerianElements& chi
 /// observation `geometry` (the flight component's, whose pole it chose; settings.geometry is not
 /// read). chief_mean: the chief's mean elements at `now`. Errors: those of
 /// control::science_orbit ("geometry" ...).
-core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
+core::Outcome<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                                     int index, const ScienceSettings& settings,
                                                     const control::ScienceGeometry& geometry,
                                                     const core::EarthGravityConstants& gravity);
 /// The same with settings.geometry.
-core::Result<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
+core::Outcome<ScheduledObservation> next_observation(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                                     int index, const ScienceSettings& settings,
                                                     const core::EarthGravityConstants& gravity);
 
@@ -54,7 +54,7 @@ core::Result<ScheduledObservation> next_observation(const astro::KeplerianElemen
 /// Table 5, so the transfer never has to turn an e/i-separated orbit inside out (the paper's
 /// pathological case: antiparallel science vectors against a parallel standby). If both or neither
 /// pole qualifies, geometry.north is kept. Returns true for the north pole.
-core::Result<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
+core::Outcome<bool> choose_north_pole(const astro::KeplerianElements& chief_mean, core::GpsTime now,
                                      const ScienceSettings& settings, const control::ScienceGeometry& geometry,
                                      const core::EarthGravityConstants& gravity);
 

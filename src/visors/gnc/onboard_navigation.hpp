@@ -37,7 +37,7 @@
 
 #include "visors/core/earth_frames.hpp"
 #include "visors/core/eop.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model.hpp"
 #include "visors/gnc/messages.hpp"
 #include "visors/gnss/ephemeris_store.hpp"

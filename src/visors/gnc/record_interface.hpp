@@ -23,7 +23,7 @@
 #include <optional>
 #include <span>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/channel_record.hpp"
 #include "visors/gnc/flight_component.hpp"
 

@@ -8,18 +8,18 @@
 
 namespace visors::gnc {
 
-core::Result<RelativeEstimate> estimate_from_navigation(const NavigationSolution& navigation,
+core::Outcome<RelativeEstimate> estimate_from_navigation(const NavigationSolution& navigation,
                                                         const core::EarthGravityConstants& gravity) {
   const auto chief_osc = astro::cartesian_to_keplerian(navigation.chief_gcrf.r, navigation.chief_gcrf.v, gravity.mu);
-  if (!chief_osc.ok()) return core::Error{"navigation.chief_gcrf", chief_osc.error().describe()};
+  if (!chief_osc.ok()) return chief_osc.status().within("navigation.chief_gcrf");
   const auto deputy_osc = astro::cartesian_to_keplerian(navigation.deputy_gcrf.r, navigation.deputy_gcrf.v, gravity.mu);
-  if (!deputy_osc.ok()) return core::Error{"navigation.deputy_gcrf", deputy_osc.error().describe()};
+  if (!deputy_osc.ok()) return deputy_osc.status().within("navigation.deputy_gcrf");
   const auto chief_mean = astro::mean_from_osculating(*chief_osc, gravity);
-  if (!chief_mean.ok()) return core::Error{"navigation.chief_gcrf", chief_mean.error().describe()};
+  if (!chief_mean.ok()) return chief_mean.status().within("navigation.chief_gcrf");
   const auto deputy_mean = astro::mean_from_osculating(*deputy_osc, gravity);
-  if (!deputy_mean.ok()) return core::Error{"navigation.deputy_gcrf", deputy_mean.error().describe()};
+  if (!deputy_mean.ok()) return deputy_mean.status().within("navigation.deputy_gcrf");
   const auto roe = astro::roe_from_keplerian(*chief_mean, *deputy_mean);
-  if (!roe.ok()) return core::Error{"navigation", roe.error().describe()};
+  if (!roe.ok()) return roe.status().within("navigation");
 
   RelativeEstimate out;
   out.t = navigation.t;

@@ -33,7 +33,7 @@ struct RelativeEstimate {
 };
 
 /// Errors name the navigation field whose conversion failed ("navigation.chief_gcrf", ...).
-core::Result<RelativeEstimate> estimate_from_navigation(const NavigationSolution& navigation,
+core::Outcome<RelativeEstimate> estimate_from_navigation(const NavigationSolution& navigation,
                                                         const core::EarthGravityConstants& gravity);
 
 }  // namespace visors::gnc

@@ -20,7 +20,7 @@ BroadcastEphemeris to_broadcast(const GpsAlmanacEntry& a) {
   return e;
 }
 
-core::Check validate(const GpsAlmanacEntry& entry) { return validate(to_broadcast(entry)); }
+core::Status validate(const GpsAlmanacEntry& entry) { return validate(to_broadcast(entry)); }
 
 GpsSatelliteState almanac_state(const GpsAlmanacEntry& entry, core::GpsTime t) {
   return broadcast_state(to_broadcast(entry), t);

@@ -6,7 +6,7 @@
 // for ranging.
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/satellite_state.hpp"
 
@@ -28,7 +28,7 @@ struct GpsAlmanacEntry {
 };
 
 /// Field-named plausibility checks (as validate(BroadcastEphemeris) for the shared fields).
-core::Check validate(const GpsAlmanacEntry& entry);
+core::Status validate(const GpsAlmanacEntry& entry);
 
 /// The entry as a broadcast record with zero corrections (fit interval 240 h).
 BroadcastEphemeris to_broadcast(const GpsAlmanacEntry& entry);

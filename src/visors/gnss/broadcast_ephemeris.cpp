@@ -7,7 +7,7 @@
 
 namespace visors::gnss {
 
-core::Check validate(const BroadcastEphemeris& e) {
+core::Status validate(const BroadcastEphemeris& e) {
   const double deg = kGpsPi / 180.0;
   const struct {
     const char* field;

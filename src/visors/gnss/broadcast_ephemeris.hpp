@@ -10,9 +10,9 @@
 // WGS-84 (ITRF-aligned to ~1 cm) Earth-fixed axes AT THE EPOCH t (the transmission time when used
 // for ranging); a receiver at another epoch rotates it by the Earth's rotation over the light time.
 
-#include "visors/core/check.hpp"
-#include "visors/core/gps_time.hpp"
 #include "visors/core/status.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/satellite_state.hpp"
 
 namespace visors::gnss {
@@ -50,7 +50,7 @@ struct BroadcastEphemeris {
 /// [0, 0.05], i0 in [45, 70] deg, |omega_dot| < 1e-7 rad/s, |delta_n| and |idot| < 1e-7 rad/s,
 /// |harmonic corrections| below 1e-3 rad / 2,000 m, fit interval > 0. A record failing it was
 /// corrupted between the satellite and the file (GPS orbits never leave these bounds).
-core::Check validate(const BroadcastEphemeris& eph);
+core::Status validate(const BroadcastEphemeris& eph);
 
 /// State at GPS system time t. clock_bias_s = a_f0 + a_f1 dt + a_f2 dt^2 + F e sqrt(A) sin E
 /// (dt = t - t_oc), WITHOUT the group delay (see l1_clock_bias_s). Allocation-free; Kepler's

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/ephemeris_set.hpp"
 

@@ -7,7 +7,7 @@
 
 namespace visors::gnss {
 
-core::Check validate(const GpsMeasurementEpoch& epoch) {
+core::Status validate(const GpsMeasurementEpoch& epoch) {
   using core::Problem;
   if (epoch.channel_count < 0 || epoch.channel_count > kMaxGpsChannels) return {Problem::kOutOfRange, "channel_count"};
   for (int k = 0; k < epoch.channel_count; ++k) {

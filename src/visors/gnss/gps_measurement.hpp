@@ -11,9 +11,9 @@
 #include <array>
 #include <cstdint>
 
-#include "visors/core/check.hpp"
-#include "visors/core/gps_time.hpp"
 #include "visors/core/status.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::gnss {
 
@@ -42,6 +42,6 @@ struct GpsMeasurementEpoch {
 /// Field-named checks: channel_count in 0..12; per channel PRN in 1..32 and not repeated, values
 /// finite, pseudorange in [1e7, 5e7] m (any receiver from the ground to above LEO, with a clock
 /// offset below 30 ms), C/N0 in [0, 70] dB-Hz, lock time >= 0.
-core::Check validate(const GpsMeasurementEpoch& epoch);
+core::Status validate(const GpsMeasurementEpoch& epoch);
 
 }  // namespace visors::gnss

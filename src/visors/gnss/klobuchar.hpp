@@ -11,7 +11,7 @@
 #include <array>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::gnss {
 

@@ -44,7 +44,7 @@
 // as 1/sin E at the horizon and Niell's tables were fitted down to 3 deg.
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::gnss {
 

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/scenario_value.hpp"
 
 namespace visors::mc {

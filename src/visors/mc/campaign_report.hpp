@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/results_store.hpp"
 
 namespace visors::mc {

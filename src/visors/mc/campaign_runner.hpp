@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/campaign_file.hpp"
 #include "visors/mc/local_pool.hpp"
 #include "visors/mc/results_store.hpp"

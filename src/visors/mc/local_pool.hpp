@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/campaign_file.hpp"
 #include "visors/mc/run_plan.hpp"
 #include "visors/mc/run_record.hpp"

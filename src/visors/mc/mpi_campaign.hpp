@@ -16,7 +16,7 @@
 #include <memory>
 #include <string>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/campaign_file.hpp"
 #include "visors/mc/local_pool.hpp"
 

@@ -22,7 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/campaign_file.hpp"
 #include "visors/mc/run_record.hpp"
 #include "visors/mc/sqlite_database.hpp"

@@ -22,7 +22,7 @@
 #include <utility>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/campaign_file.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 

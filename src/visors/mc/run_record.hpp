@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/mc/run_plan.hpp"
 
 namespace visors::mc {

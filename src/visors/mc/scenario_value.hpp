@@ -10,7 +10,7 @@
 
 #include <toml++/toml.h>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::mc {
 

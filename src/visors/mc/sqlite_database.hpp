@@ -8,7 +8,7 @@
 #include <string>
 #include <variant>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 struct sqlite3;
 struct sqlite3_stmt;

@@ -23,7 +23,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/integer_least_squares.hpp"
 
 namespace visors::nav {

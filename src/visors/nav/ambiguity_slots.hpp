@@ -26,7 +26,7 @@
 #include <bit>
 #include <cstdint>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/navigation_state.hpp"
 
 namespace visors::nav {

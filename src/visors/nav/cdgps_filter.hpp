@@ -63,7 +63,7 @@
 #include "visors/core/earth_frames.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model.hpp"
 #include "visors/gnss/ephemeris_source.hpp"
 #include "visors/nav/ambiguity_acceptance.hpp"

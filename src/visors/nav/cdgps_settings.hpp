@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/ambiguity_acceptance.hpp"
 #include "visors/nav/navigation_state.hpp"
 

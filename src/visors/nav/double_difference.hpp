@@ -25,7 +25,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/ambiguity_capacity.hpp"
 
 namespace visors::nav {

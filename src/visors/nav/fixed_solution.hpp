@@ -34,7 +34,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/ambiguity_acceptance.hpp"
 #include "visors/nav/ambiguity_capacity.hpp"
 #include "visors/nav/double_difference.hpp"

@@ -13,7 +13,7 @@ const GpsObservation* GpsReceiverEpoch::find(int prn) const {
   return nullptr;
 }
 
-core::Check check(const GpsReceiverEpoch& epoch) {
+core::Status check(const GpsReceiverEpoch& epoch) {
   if (epoch.count < 0 || epoch.count > kGpsSlots) return {core::Problem::kOutOfRange, "count"};
   for (int i = 0; i < epoch.count; ++i) {
     const int prn = epoch.observations[static_cast<std::size_t>(i)].prn;

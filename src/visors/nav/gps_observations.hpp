@@ -6,9 +6,9 @@
 #include <array>
 #include <optional>
 
-#include "visors/core/check.hpp"
-#include "visors/core/gps_time.hpp"
 #include "visors/core/status.hpp"
+#include "visors/core/gps_time.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/gps_measurement.hpp"
 #include "visors/nav/navigation_state.hpp"
 
@@ -37,7 +37,7 @@ GpsReceiverEpoch receiver_epoch(const gnss::GpsMeasurementEpoch& measurement);
 
 /// Input validation of an epoch's structure at the filter's boundary: count in range, PRNs in
 /// 1..32 and distinct. The error names the field ("observations[3].prn"); such an epoch is refused.
-core::Check check(const GpsReceiverEpoch& epoch);
+core::Status check(const GpsReceiverEpoch& epoch);
 
 /// Whether one observation's values are usable: finite, code in [1.5e7, 3.5e7] m (a LEO
 /// receiver's geometric ranges to GPS, 1.97e7-2.6e7 m, plus satellite and receiver clock offsets

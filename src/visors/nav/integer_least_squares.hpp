@@ -19,7 +19,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/nav/ambiguity_capacity.hpp"
 #include "visors/nav/lambda_reduction.hpp"
 

@@ -40,7 +40,7 @@ core::Result<bool> validate_dimensions(const ConicDimensions& dims);
 /// Checks the data against `dims`: sizes, finiteness, P symmetric (relative tolerance
 /// `symmetry_tolerance`). Names the field ("G", "h", "P", ...) on rejection. Positive
 /// semidefiniteness of P is checked by the solver's factorisation of P.
-core::Result<bool> validate_problem(const ConicProblem& problem, const ConicDimensions& dims,
+core::Status validate_problem(const ConicProblem& problem, const ConicDimensions& dims,
                                     double symmetry_tolerance = 1e-12);
 
 }  // namespace visors::optim

@@ -1142,10 +1142,10 @@ void ConicSolver::Workspace::unscale_iterate(const ConicProblem& problem, ConicI
 // are loaded, equilibrated and the KKT structure analysed once, each iteration computes the
 // embedding's residuals, stops if a test is met, rescales (Nesterov-Todd), factors the KKT
 // matrix, and takes a Mehrotra predictor-corrector step a fraction of the way to the boundary.
-core::Result<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
-  if (auto ok = validate_problem(problem, dims_); !ok) return ok.error();
+core::Outcome<ConicInfo> ConicSolver::solve(const ConicProblem& problem) {
+  if (auto ok = validate_problem(problem, dims_); !ok) return ok;
   Workspace& w = *work_;
-  if (!w.load(problem)) return core::Error{"P", "must be positive semidefinite"};
+  if (!w.load(problem)) return core::Status{core::Problem::kOutOfRange, "P", "must be positive semidefinite"};
   w.equilibrate();
   w.analyse_kkt();
 

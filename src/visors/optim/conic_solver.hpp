@@ -63,7 +63,7 @@ class ConicSolver {
   /// iterate. Primal infeasible: y, z certify it (b'y + h'z = -1, A'y + G'z ~ 0, z in K) and
   /// x = s = 0. Dual infeasible: x, s certify it (c'x = -1, Ax ~ 0, Gx + s ~ 0, s in K, Px ~ 0)
   /// and y = z = 0.
-  core::Result<ConicInfo> solve(const ConicProblem& problem);
+  core::Outcome<ConicInfo> solve(const ConicProblem& problem);
 
   [[nodiscard]] const Eigen::VectorXd& x() const { return x_out_; }
   [[nodiscard]] const Eigen::VectorXd& y() const { return y_out_; }

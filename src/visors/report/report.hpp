@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <string>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/report/run_data.hpp"
 
 namespace visors::report {

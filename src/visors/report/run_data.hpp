@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/report/run_directory.hpp"
 
 namespace visors::report {

@@ -53,32 +53,30 @@ bool solve_for_direction(const astro::ControlInputMatrix& gamma, const RelativeO
 
 }  // namespace
 
-core::Result<EscapeSettings> validate(const EscapeSettings& s) {
-  if (!(s.epsilon_m >= 0.0) || !std::isfinite(s.epsilon_m)) return core::Error{"epsilon_m", "must be a finite number >= 0 m"};
-  if (!(s.da_target_m > 0.0) || !std::isfinite(s.da_target_m)) return core::Error{"da_target_m", "must be a finite number > 0 m"};
-  if (!(s.q_sigma >= 0.0) || s.q_sigma > 10.0) return core::Error{"q_sigma", "must be in [0, 10]"};
-  if (!(s.horizon_orbits > 0.0) || s.horizon_orbits > 100.0) return core::Error{"horizon_orbits", "must be in (0, 100] orbits"};
-  if (s.samples_per_orbit < 8 || s.samples_per_orbit > 100000) return core::Error{"samples_per_orbit", "must be in [8, 100000]"};
-  if (s.psi_samples < 4 || s.psi_samples > kMaxPsiSamples) return core::Error{"psi_samples", "must be in [4, 720]"};
-  if (!(s.time_step_s >= 0.1) || !std::isfinite(s.time_step_s)) return core::Error{"time_step_s", "must be a finite number >= 0.1 s"};
+core::Outcome<EscapeSettings> validate(const EscapeSettings& s) {
+  if (!(s.epsilon_m >= 0.0) || !std::isfinite(s.epsilon_m)) return core::Status{core::Problem::kOutOfRange, "epsilon_m", "must be a finite number >= 0 m"};
+  if (!(s.da_target_m > 0.0) || !std::isfinite(s.da_target_m)) return core::Status{core::Problem::kOutOfRange, "da_target_m", "must be a finite number > 0 m"};
+  if (!(s.q_sigma >= 0.0) || s.q_sigma > 10.0) return core::Status{core::Problem::kOutOfRange, "q_sigma", "must be in [0, 10]"};
+  if (!(s.horizon_orbits > 0.0) || s.horizon_orbits > 100.0) return core::Status{core::Problem::kOutOfRange, "horizon_orbits", "must be in (0, 100] orbits"};
+  if (s.samples_per_orbit < 8 || s.samples_per_orbit > 100000) return core::Status{core::Problem::kOutOfRange, "samples_per_orbit", "must be in [8, 100000]"};
+  if (s.psi_samples < 4 || s.psi_samples > kMaxPsiSamples) return core::Status{core::Problem::kOutOfRange, "psi_samples", "must be in [4, 720]"};
+  if (!(s.time_step_s >= 0.1) || !std::isfinite(s.time_step_s)) return core::Status{core::Problem::kOutOfRange, "time_step_s", "must be a finite number >= 0.1 s"};
   if (!(s.search_window_orbits >= 0.0) || s.search_window_orbits > 10.0) {
-    return core::Error{"search_window_orbits", "must be in [0, 10] orbits"};
+    return core::Status{core::Problem::kOutOfRange, "search_window_orbits", "must be in [0, 10] orbits"};
   }
-  if (!(s.dv_sigma_mps >= 0.0) || !std::isfinite(s.dv_sigma_mps)) return core::Error{"dv_sigma_mps", "must be a finite number >= 0 m/s"};
+  if (!(s.dv_sigma_mps >= 0.0) || !std::isfinite(s.dv_sigma_mps)) return core::Status{core::Problem::kOutOfRange, "dv_sigma_mps", "must be a finite number >= 0 m/s"};
   return s;
 }
 
 namespace {
 
-core::Result<bool> check_escape_inputs(const astro::KeplerianElements& chief_mean_t0, const RelativeOrbitalElements& roe,
+core::Status check_escape_inputs(const astro::KeplerianElements& chief_mean_t0, const RelativeOrbitalElements& roe,
                                        const RoeCovariance& covariance, double t_earliest,
                                        const EscapeSettings& settings, const core::EarthGravityConstants& gravity) {
-  const auto checked = validate(settings);
-  if (!checked) return checked.error();
-  const auto inputs = validate_safety_inputs(chief_mean_t0, roe, covariance, gravity);
-  if (!inputs) return inputs.error();
-  if (!(t_earliest >= 0.0) || !std::isfinite(t_earliest)) return core::Error{"t_earliest", "must be a finite number >= 0 s"};
-  return true;
+  if (const core::Status checked = validate(settings).status(); !checked) return checked;
+  if (const core::Status inputs = validate_safety_inputs(chief_mean_t0, roe, covariance, gravity); !inputs) return inputs;
+  if (!(t_earliest >= 0.0) || !std::isfinite(t_earliest)) return core::Status{core::Problem::kOutOfRange, "t_earliest", "must be a finite number >= 0 s"};
+  return {};
 }
 
 // Condition (iii) is judged with the escape's margin, plane, horizon and sampling.
@@ -160,7 +158,7 @@ bool cannot_be_safe(const RelativeOrbitalElements& roe_after, double a, const Pa
 
 // (iii): the cheapest candidate that is passively safe at q sigma, written to `out` (true), or
 // none at this burn time (false).
-core::Result<bool> first_safe_candidate(const BurnPoint& b, const CandidateSet& set, double a, double period,
+core::Outcome<bool> first_safe_candidate(const BurnPoint& b, const CandidateSet& set, double a, double period,
                                         const PassiveSafetySettings& safety,
                                         const core::EarthGravityConstants& gravity, EscapeManeuver& out) {
   for (int j = 0; j < set.count; ++j) {
@@ -168,7 +166,7 @@ core::Result<bool> first_safe_candidate(const BurnPoint& b, const CandidateSet& 
     const RelativeOrbitalElements roe_after = b.roe_b + b.gamma * c.dv;
     if (cannot_be_safe(roe_after, a, safety)) continue;
     const auto assessment = evaluate_passive_safety(b.chief_b, roe_after, b.p_after, safety, gravity);
-    if (!assessment) return assessment.error();
+    if (!assessment) return assessment.status();
     if (!assessment->safe) continue;
     out.impulse = control::Impulse{b.t, c.dv};
     out.roe_before = b.roe_b;
@@ -184,13 +182,11 @@ core::Result<bool> first_safe_candidate(const BurnPoint& b, const CandidateSet& 
 
 }  // namespace
 
-core::Result<EscapeManeuver> plan_escape(const astro::KeplerianElements& chief_mean_t0,
+core::Outcome<EscapeManeuver> plan_escape(const astro::KeplerianElements& chief_mean_t0,
                                          const RelativeOrbitalElements& roe, const RoeCovariance& covariance,
                                          double t_earliest, const EscapeSettings& settings,
                                          const core::EarthGravityConstants& gravity) {
-  if (auto ok = check_escape_inputs(chief_mean_t0, roe, covariance, t_earliest, settings, gravity); !ok) {
-    return ok.error();
-  }
+  if (auto ok = check_escape_inputs(chief_mean_t0, roe, covariance, t_earliest, settings, gravity); !ok) return ok;
   const PassiveSafetySettings safety = safety_after_escape(settings);
   const double a = chief_mean_t0.a;
   const double period = orbital_period(chief_mean_t0, gravity.mu);
@@ -206,10 +202,10 @@ core::Result<EscapeManeuver> plan_escape(const astro::KeplerianElements& chief_m
     const BurnPoint b = burn_point(chief_mean_t0, roe, covariance, t, q_dv, gravity);
     solve_candidates(b, da_after_burn(b, a, settings), settings.psi_samples, set);
     const auto found = first_safe_candidate(b, set, a, period, safety, gravity, out);
-    if (!found) return found.error();
+    if (!found) return found.status();
     if (*found) return out;
   }
-  return core::Error{"escape", "no single impulse in the search window meets the safety margin"};
+  return core::Status{core::Problem::kInfeasible, "escape", "no single impulse in the search window meets the safety margin"};
 }
 
 }  // namespace visors::safety

@@ -59,7 +59,7 @@ struct EscapeSettings {
 };
 
 /// Each value checked; the error names the field ("epsilon_m", "da_target_m", ...).
-core::Result<EscapeSettings> validate(const EscapeSettings& settings);
+core::Outcome<EscapeSettings> validate(const EscapeSettings& settings);
 
 struct EscapeManeuver {
   control::Impulse impulse;                         // t since t0 [s], dv_rtn [m/s]
@@ -74,7 +74,7 @@ struct EscapeManeuver {
 /// dimensionless). t_earliest >= 0 [s since t0] ("t_earliest"). Input errors as in
 /// evaluate_passive_safety; no safe candidate in the search window gives an Error with field
 /// "escape".
-core::Result<EscapeManeuver> plan_escape(const astro::KeplerianElements& chief_mean_t0,
+core::Outcome<EscapeManeuver> plan_escape(const astro::KeplerianElements& chief_mean_t0,
                                          const astro::RelativeOrbitalElements& roe,
                                          const RoeCovariance& covariance, double t_earliest,
                                          const EscapeSettings& settings,

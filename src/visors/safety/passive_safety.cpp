@@ -167,43 +167,41 @@ double orbital_period(const astro::KeplerianElements& chief, double mu) {
   return core::kTwoPi * std::sqrt(chief.a * chief.a * chief.a / mu);
 }
 
-core::Result<bool> validate_safety_inputs(const astro::KeplerianElements& chief_mean,
+core::Status validate_safety_inputs(const astro::KeplerianElements& chief_mean,
                                           const RelativeOrbitalElements& roe,
                                           const RoeCovariance& covariance,
                                           const core::EarthGravityConstants& gravity) {
-  if (!(gravity.mu > 0.0) || !std::isfinite(gravity.mu)) return core::Error{"gravity.mu", "must be finite and > 0"};
-  if (!(gravity.re > 0.0) || !std::isfinite(gravity.re)) return core::Error{"gravity.re", "must be finite and > 0"};
-  if (!(gravity.j2 >= 0.0) || !std::isfinite(gravity.j2)) return core::Error{"gravity.j2", "must be finite and >= 0"};
+  if (!(gravity.mu > 0.0) || !std::isfinite(gravity.mu)) return core::Status{core::Problem::kOutOfRange, "gravity.mu", "must be finite and > 0"};
+  if (!(gravity.re > 0.0) || !std::isfinite(gravity.re)) return core::Status{core::Problem::kOutOfRange, "gravity.re", "must be finite and > 0"};
+  if (!(gravity.j2 >= 0.0) || !std::isfinite(gravity.j2)) return core::Status{core::Problem::kOutOfRange, "gravity.j2", "must be finite and >= 0"};
   const auto chief = astro::validate_keplerian(chief_mean);
-  if (!chief) return core::Error{"chief." + chief.error().field, chief.error().message};
+  if (!chief) return chief.status().within("chief");
   if (std::abs(std::sin(chief_mean.i)) < 1e-6) {
-    return core::Error{"chief.i", "must not be equatorial (diy is undefined)"};
+    return core::Status{core::Problem::kOutOfRange, "chief.i", "must not be equatorial (diy is undefined)"};
   }
-  if (auto ok = control::validate_roe(roe, "roe"); !ok) return ok.error();
-  if (!(roe[astro::roe::kDa] > -1.0)) return core::Error{"roe", "da must be > -1"};
-  if (!finite_matrix(covariance)) return core::Error{"covariance", "must be finite"};
+  if (auto ok = control::validate_roe(roe, "roe"); !ok) return ok;
+  if (!(roe[astro::roe::kDa] > -1.0)) return core::Status{core::Problem::kOutOfRange, "roe", "da must be > -1"};
+  if (!finite_matrix(covariance)) return core::Status{core::Problem::kNotFinite, "covariance", "must be finite"};
   const double scale = covariance.cwiseAbs().maxCoeff();
   if ((covariance - covariance.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) {
-    return core::Error{"covariance", "must be symmetric"};
+    return core::Status{core::Problem::kNotSymmetric, "covariance", "must be symmetric"};
   }
   if (scale > 0.0) {
     const Eigen::SelfAdjointEigenSolver<RoeCovariance> eig(covariance, Eigen::EigenvaluesOnly);
     if (eig.eigenvalues().minCoeff() < -1e-9 * eig.eigenvalues().maxCoeff()) {
-      return core::Error{"covariance", "must be positive semidefinite"};
+      return core::Status{core::Problem::kOutOfRange, "covariance", "must be positive semidefinite"};
     }
   }
-  return true;
+  return {};
 }
 
-core::Result<SafetyAssessment> evaluate_passive_safety(const astro::KeplerianElements& chief_mean,
+core::Outcome<SafetyAssessment> evaluate_passive_safety(const astro::KeplerianElements& chief_mean,
                                                        const RelativeOrbitalElements& roe,
                                                        const RoeCovariance& covariance,
                                                        const PassiveSafetySettings& settings,
                                                        const core::EarthGravityConstants& gravity) {
-  const auto checked_settings = validate(settings);
-  if (!checked_settings) return checked_settings.error();
-  const auto inputs = validate_safety_inputs(chief_mean, roe, covariance, gravity);
-  if (!inputs) return inputs.error();
+  if (const core::Status checked = validate(settings).status(); !checked) return checked;
+  if (const core::Status inputs = validate_safety_inputs(chief_mean, roe, covariance, gravity); !inputs) return inputs;
 
   const SeparationModel model(chief_mean, roe, covariance, settings.plane, gravity);
   const double q = settings.q_sigma;

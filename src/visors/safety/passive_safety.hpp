@@ -73,13 +73,13 @@ double orbital_period(const astro::KeplerianElements& chief, double mu);
 /// "chief.a" ...; equatorial chief rejected as "chief.i"); roe: mean ROE at t0 ("roe": finite);
 /// covariance: symmetric positive semidefinite ("covariance"); settings validated (field names
 /// of PassiveSafetySettings); gravity ("gravity.mu", "gravity.re", "gravity.j2").
-core::Result<SafetyAssessment> evaluate_passive_safety(
+core::Outcome<SafetyAssessment> evaluate_passive_safety(
     const astro::KeplerianElements& chief_mean, const astro::RelativeOrbitalElements& roe,
     const RoeCovariance& covariance, const PassiveSafetySettings& settings,
     const core::EarthGravityConstants& gravity = {});
 
 /// The input checks of evaluate_passive_safety (shared with the escape planner).
-core::Result<bool> validate_safety_inputs(const astro::KeplerianElements& chief_mean,
+core::Status validate_safety_inputs(const astro::KeplerianElements& chief_mean,
                                           const astro::RelativeOrbitalElements& roe,
                                           const RoeCovariance& covariance,
                                           const core::EarthGravityConstants& gravity);

@@ -45,7 +45,7 @@
 #include <Eigen/Geometry>
 
 #include "visors/core/constants.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::sim {
 

@@ -13,7 +13,7 @@
 
 #include "visors/astro/keplerian_elements.hpp"
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model_config.hpp"
 #include "visors/gnc/gnc_config.hpp"
 #include "visors/sim/adcs_model.hpp"

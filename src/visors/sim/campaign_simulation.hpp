@@ -28,7 +28,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 #include "visors/sim/gps_world.hpp"
 #include "visors/sim/host_application.hpp"

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/random_stream.hpp"
 
 namespace visors::sim {

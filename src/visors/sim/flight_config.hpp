@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model_config.hpp"
 #include "visors/gnc/gnc_config.hpp"
 #include "visors/gnc/messages.hpp"

@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/record_interface.hpp"
 #include "visors/sim/fsw_process.hpp"
 #include "visors/sim/paired_worker.hpp"

@@ -4,7 +4,7 @@
 // the first-order J2 theory and then to GCRF position and velocity.
 
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 
 namespace visors::sim {

@@ -47,7 +47,7 @@
 #include "visors/astro/relative_orbital_elements.hpp"
 #include "visors/core/constants.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::sim {
 

@@ -20,7 +20,7 @@
 
 #include <sys/types.h>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/record_interface.hpp"
 #include "visors/gnc/record_stream.hpp"
 

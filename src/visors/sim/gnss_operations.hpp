@@ -42,7 +42,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/attitude_profile.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 

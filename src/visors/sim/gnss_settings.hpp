@@ -47,7 +47,7 @@
 
 #include <toml++/toml.h>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/gps_receiver.hpp"
 #include "visors/sim/gps_satellite_truth.hpp"
 

@@ -166,7 +166,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 #include "visors/sim/campaign_simulation.hpp"
 

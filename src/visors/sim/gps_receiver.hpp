@@ -76,7 +76,7 @@
 #include "visors/core/constants.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/gps_measurement.hpp"
 #include "visors/gnss/klobuchar.hpp"
 #include "visors/sim/gps_satellite_truth.hpp"

@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/constellation.hpp"
 #include "visors/sim/random_stream.hpp"

@@ -14,7 +14,7 @@
 #include "visors/core/eop.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/files/rinex_nav_file.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 #include "visors/sim/gps_receiver.hpp"

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/record_interface.hpp"
 #include "visors/sim/campaign_scenario.hpp"
 #include "visors/sim/crosslink.hpp"

@@ -19,7 +19,7 @@
 // tone is the one at t (the body turns ~1e-6 rad in 3 ms at the slew rate, far below the star
 // tracker's error), and the receiver's measurements carry their own time tags and clock.
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/random_stream.hpp"
 
 namespace visors::sim {

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "visors/core/eop.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model.hpp"
 #include "visors/gnc/onboard_navigation.hpp"
 #include "visors/nav/cdgps_settings.hpp"

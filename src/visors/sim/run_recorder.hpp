@@ -17,7 +17,7 @@
 
 #include "visors/core/files/output_file.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/alignment_metrics.hpp"
 #include "visors/sim/error_budget.hpp"
 #include "visors/sim/navigation_score.hpp"

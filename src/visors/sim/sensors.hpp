@@ -14,7 +14,7 @@
 
 #include "visors/core/earth_frames.hpp"
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/messages.hpp"
 #include "visors/gnss/gps_constants.hpp"
 #include "visors/sim/campaign_scenario.hpp"

@@ -28,7 +28,7 @@
 #include <Eigen/Core>
 
 #include "visors/core/constants.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/sim/random_stream.hpp"
 
 namespace visors::sim {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model.hpp"
 #include "visors/dynamics/orbit_propagator.hpp"
 #include "visors/sim/campaign_scenario.hpp"

@@ -17,7 +17,7 @@
 
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnc/messages.hpp"
 #include "visors/sim/adcs_model.hpp"
 #include "visors/sim/attitude_profile.hpp"

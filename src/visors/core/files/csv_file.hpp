@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::core::files {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "visors/core/eop.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::core::files {
 

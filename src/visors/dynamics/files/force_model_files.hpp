@@ -3,7 +3,7 @@
 // NRLMSISE-00 coefficients, space weather, EOP) found through the data search path (core/files/data_path.hpp), read, and given to
 // ForceModel::create. Ground side (visors_dynamics_files).
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/force_model.hpp"
 #include "visors/dynamics/force_model_config.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/harris_priester.hpp"
 
 namespace visors::dynamics::files {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/gravity_field.hpp"
 
 namespace visors::dynamics::files {

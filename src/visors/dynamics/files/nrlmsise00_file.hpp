@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <string_view>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/nrlmsise00_coefficients.hpp"
 
 namespace visors::dynamics::files {

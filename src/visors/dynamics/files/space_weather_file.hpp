@@ -10,7 +10,7 @@
 
 #include <filesystem>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/dynamics/space_weather.hpp"
 
 namespace visors::dynamics::files {

@@ -20,7 +20,7 @@
 #include <optional>
 #include <vector>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/klobuchar.hpp"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/files/rinex_obs_file.hpp"
 #include "visors/gnss/files/text_file.hpp"
 

@@ -36,7 +36,7 @@
 
 #include "visors/core/files/output_file.hpp"
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/gps_measurement.hpp"
 
 namespace visors::gnss::files {

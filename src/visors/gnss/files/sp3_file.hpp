@@ -23,7 +23,7 @@
 #include <Eigen/Core>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 #include "visors/gnss/gps_constants.hpp"
 
 namespace visors::gnss::files {

@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "visors/core/gps_time.hpp"
-#include "visors/core/status.hpp"
+#include "visors/core/result.hpp"
 
 namespace visors::gnss::files {
 
