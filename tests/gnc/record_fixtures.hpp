@@ -108,10 +108,11 @@ inline Telemetry telemetry() {
   m.pending_pieces = 17;
   m.plans = 1234;
   m.planning_failures = 2;
-  m.rejected.gps = 5;
-  m.rejected.laser_range = 6;
-  m.rejected.time_at_tone = 7;
-  m.records.by_status[static_cast<std::size_t>(RecordStatus::kBadChecksum)] = 42;
+  m.rejected.count(RejectionReason::kTooOld, Channel::kGps);
+  m.rejected.count(RejectionReason::kNotFinite, Channel::kLaserRange);
+  m.rejected.count(RejectionReason::kNoAttitude, Channel::kGps);
+  for (int k = 0; k < 42; ++k) m.rejected.count(RejectionReason::kBadChecksum, Channel::kNavigation);
+  m.rejected.count(RejectionReason::kBadMagic, 0);
   m.navigation_valid = true;
   m.navigation_fixed = true;
   m.navigation_update = t0() + 9.0;

@@ -66,7 +66,7 @@ TEST(ChannelRecord, GroundCommandLayoutByHand) {
   RecordBuffer buffer{};
   const GroundCommand m{core::GpsTime::from_nanoseconds(0x0102030405060708), GroundCommand::Kind::kEscape, -2};
   ASSERT_EQ(encode(m, 0xA0B0C0D0u, buffer), 32u);
-  const std::vector<std::uint8_t> expected = bytes({'V', 'G', 4, 2, 32, 0, 0, 0,                  // magic, channel, version, size, reserved
+  const std::vector<std::uint8_t> expected = bytes({'V', 'G', 4, 3, 32, 0, 0, 0,                  // magic, channel, version, size, reserved
                                                     0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01,  // time tag
                                                     0xD0, 0xC0, 0xB0, 0xA0,                          // sequence
                                                     4, 0, 0, 0, 0xFE, 0xFF, 0xFF, 0xFF});          // kind, padding, -2
@@ -225,9 +225,8 @@ TEST(ChannelRecord, TelemetryRoundTrip) {
   EXPECT_EQ(out.roe_target_m, in.roe_target_m);
   EXPECT_EQ(out.pending_pieces, in.pending_pieces);
   EXPECT_EQ(out.plans, in.plans);
-  EXPECT_EQ(out.rejected.gps, in.rejected.gps);
-  EXPECT_EQ(out.rejected.laser_range, in.rejected.laser_range);
-  EXPECT_EQ(out.records.by_status, in.records.by_status);
+  EXPECT_EQ(out.rejected.by_reason, in.rejected.by_reason);
+  EXPECT_EQ(out.rejected.by_channel, in.rejected.by_channel);
   EXPECT_EQ(out.navigation_fixed, in.navigation_fixed);
   EXPECT_EQ(out.navigation_update, in.navigation_update);
   EXPECT_EQ(out.drag_valid, in.drag_valid);
@@ -476,7 +475,7 @@ TEST(ChannelRecord, ABadMagicIsNamed) {
 TEST(ChannelRecord, RandomGarbageIsNeverAccepted) {
   std::mt19937_64 rng(2026);
   std::uniform_int_distribution<int> byte(0, 255);
-  RecordCounters counters;
+  std::array<std::int64_t, kRecordStatuses> by_status{};
   for (int k = 0; k < 100000; ++k) {
     RecordBuffer buffer{};
     const std::size_t length = static_cast<std::size_t>(rng() % (kMaxRecordBytes + 1));
@@ -489,11 +488,10 @@ TEST(ChannelRecord, RandomGarbageIsNeverAccepted) {
     }
     NavigationSolution out;
     RecordHeader h;
-    count(counters, decode(std::span(buffer).first(length), out, h));
+    ++by_status[static_cast<std::size_t>(decode(std::span(buffer).first(length), out, h))];
   }
-  EXPECT_EQ(counters.by_status[static_cast<std::size_t>(RecordStatus::kAccepted)], 0);
-  EXPECT_EQ(counters.refused(), 100000);
-  EXPECT_GT(counters.by_status[static_cast<std::size_t>(RecordStatus::kBadChecksum)], 0);
+  EXPECT_EQ(by_status[static_cast<std::size_t>(RecordStatus::kAccepted)], 0);
+  EXPECT_GT(by_status[static_cast<std::size_t>(RecordStatus::kBadChecksum)], 0);
 }
 
 // The values are the messages' own validation: a NaN travels intact and validate() refuses it.
@@ -542,7 +540,10 @@ TEST(SequenceGate, ChannelsAreIndependent) {
 
 // The same bytes on every target (x86-64, and armhf and aarch64 under qemu: scripts/cross_test.sh):
 // each channel's record of this file's messages, sequence 1, pinned as its size and the CRC-32C
-// of its header and payload (its checksum field) as encoded on x86-64 (2026-11-28). A difference in byte order, padding,
+// of its header and payload (its checksum field) as encoded on x86-64 (format version 3, 2026-12-08;
+// the records differ from those the hand-written codec pinned on 2026-11-28 by the version byte and
+// the telemetry's rejection counters only, and the golden records' checksums agree with a separate
+// CRC-32C written in Python). A difference in byte order, padding,
 // integer width or floating-point bits on a target changes the CRC. (The layout itself is pinned
 // byte by byte for channel 4 above, documented in docs/record-layout.md and annotated field by field in
 // tests/gnc/golden/.)
@@ -555,17 +556,17 @@ std::pair<std::size_t, std::uint32_t> record_crc(const Message& m) {
 
 TEST(ChannelRecord, EveryChannelsBytesAreTheSameOnEveryTarget) {
   using Pinned = std::pair<std::size_t, std::uint32_t>;
-  EXPECT_EQ(record_crc(tone()), Pinned(56, 0x3BD28FF7u));
-  EXPECT_EQ(record_crc(navigation()), Pinned(288, 0x11185607u));
-  EXPECT_EQ(record_crc(crosslink_with_navigation()), Pinned(480, 0xE87FAF8Bu));
-  EXPECT_EQ(record_crc(command()), Pinned(32, 0x38630CC0u));
-  EXPECT_EQ(record_crc(propulsion()), Pinned(64, 0x5A7CB872u));
-  EXPECT_EQ(record_crc(gps()), Pinned(816, 0xF35043CFu));
-  EXPECT_EQ(record_crc(laser()), Pinned(32, 0x2887EF8Du));
-  EXPECT_EQ(record_crc(maneuver()), Pinned(72, 0xE40E4513u));
-  EXPECT_EQ(record_crc(observation()), Pinned(56, 0x479417F3u));
-  EXPECT_EQ(record_crc(telemetry()), Pinned(328, 0x88213786u));
-  EXPECT_EQ(record_crc(partial_fix_telemetry()), Pinned(1264, 0x91AC8812u));
+  EXPECT_EQ(record_crc(tone()), Pinned(56, 0xFC5431F5u));
+  EXPECT_EQ(record_crc(navigation()), Pinned(288, 0x1A8FDCBFu));
+  EXPECT_EQ(record_crc(crosslink_with_navigation()), Pinned(480, 0x42A89AB6u));
+  EXPECT_EQ(record_crc(command()), Pinned(32, 0x1657C75Du));
+  EXPECT_EQ(record_crc(propulsion()), Pinned(64, 0x2355C515u));
+  EXPECT_EQ(record_crc(gps()), Pinned(816, 0x7547CE09u));
+  EXPECT_EQ(record_crc(laser()), Pinned(32, 0x06B32410u));
+  EXPECT_EQ(record_crc(maneuver()), Pinned(72, 0x05413B0Bu));
+  EXPECT_EQ(record_crc(observation()), Pinned(56, 0x8012A9F1u));
+  EXPECT_EQ(record_crc(telemetry()), Pinned(504, 0x60CE82BEu));
+  EXPECT_EQ(record_crc(partial_fix_telemetry()), Pinned(1264, 0x9793AF2Fu));
 }
 
 }  // namespace

@@ -113,7 +113,16 @@ TEST(FlightComponent, NanNavigationIsCountedAndNotUsed) {
   auto in = h.inputs(0.0);
   in.navigation->chief_gcrf.v.y() = std::numeric_limits<double>::quiet_NaN();
   const auto out = c.step(in);
-  EXPECT_EQ(out.telemetry.rejected.navigation, 1);
+  EXPECT_EQ(out.telemetry.rejected.of(Channel::kNavigation), 1);
+}
+
+TEST(FlightComponent, NanNavigationIsCountedAsNotFinite) {
+  auto c = make(Spacecraft::kOsc, true);
+  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
+  auto in = h.inputs(0.0);
+  in.navigation->chief_gcrf.v.y() = std::numeric_limits<double>::quiet_NaN();
+  const auto out = c.step(in);
+  EXPECT_EQ(out.telemetry.rejected.of(RejectionReason::kNotFinite), 1);
 }
 
 TEST(FlightComponent, NoEstimateMeansGncIncapable) {
@@ -128,7 +137,7 @@ TEST(FlightComponent, StepBackInTimeIsRejected) {
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   c.step(h.inputs(10.0));
   const auto out = c.step(h.inputs(5.0));
-  EXPECT_EQ(out.telemetry.rejected.navigation, 1);
+  EXPECT_EQ(out.telemetry.rejected.of(RejectionReason::kTimeBackwards), 1);
 }
 
 // docs/conventions.md: the chief's impulse changes the ROE with the opposite sign of the same
@@ -307,28 +316,46 @@ TEST(FlightComponent, RefusedRecordsAllocateNothing) {
   EXPECT_EQ(gnc.component().mode(), Mode::kStandby);
 }
 
-// The same records counted, each by its reason: per step 7 bad checksums (the random records of
-// the 7 input channels), 5 wrong channels (those of the 4 output channels, refused by their
-// channel before their checksum, and the telemetry record), one truncated, one out of order, and
-// one refused value per input channel (two of the laser's).
-TEST(FlightComponent, RefusedRecordsAreCountedByReason) {
-  const RefusedRecordSteps steps;
-  RecordInterface gnc = RecordInterface::create(GncConfig{}).value();
-  (void)gnc.step(kT0, steps.views[0]);
-  Telemetry tm;
-  RecordHeader header;
-  ASSERT_EQ(decode(steps.run(gnc)->telemetry.view(), tm, header), RecordStatus::kAccepted);
-  const auto by = [&](RecordStatus s) { return tm.records.by_status[static_cast<std::size_t>(s)]; };
-  EXPECT_EQ(by(RecordStatus::kBadChecksum), 25 * 7);
-  EXPECT_EQ(by(RecordStatus::kWrongChannel), 25 * 5);
-  EXPECT_EQ(by(RecordStatus::kTruncated), 25);
-  EXPECT_EQ(by(RecordStatus::kOutOfOrder), 25);
-  const RejectionCounters& rejected = tm.rejected;
-  EXPECT_EQ(rejected.time_at_tone + rejected.navigation + rejected.crosslink + rejected.command + rejected.propulsion +
-                rejected.gps,
-            6 * 25);
-  EXPECT_EQ(rejected.laser_range, 2 * 25);
-}
+// The same records counted once each, by reason and by channel, in the one set the telemetry
+// record carries: per step 7 bad checksums (the random records of the 7 input channels), 5 wrong
+// channels (those of the 4 output channels, refused by their channel before their checksum, and
+// the telemetry record), one truncated (a time-at-tone record), one out of order (a navigation
+// replay), and one refused value per input channel (two of the laser's, one of them stale).
+class RefusedRecordCounts : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    const RefusedRecordSteps steps;
+    RecordInterface gnc = RecordInterface::create(GncConfig{}).value();
+    (void)gnc.step(kT0, steps.views[0]);
+    RecordHeader header;
+    ASSERT_EQ(decode(steps.run(gnc)->telemetry.view(), tm_, header), RecordStatus::kAccepted);
+  }
+  static std::int64_t values_refused() {
+    std::int64_t n = 0;
+    for (int r = static_cast<int>(RejectionReason::kNotFinite); r <= static_cast<int>(RejectionReason::kNotReady); ++r) {
+      n += tm_.rejected.of(static_cast<RejectionReason>(r));
+    }
+    return n;
+  }
+  static inline Telemetry tm_;
+};
+
+TEST_F(RefusedRecordCounts, BadChecksums) { EXPECT_EQ(tm_.rejected.of(RejectionReason::kBadChecksum), 25 * 7); }
+TEST_F(RefusedRecordCounts, WrongChannels) { EXPECT_EQ(tm_.rejected.of(RejectionReason::kWrongChannel), 25 * 5); }
+TEST_F(RefusedRecordCounts, Truncated) { EXPECT_EQ(tm_.rejected.of(RejectionReason::kTruncated), 25); }
+TEST_F(RefusedRecordCounts, OutOfOrder) { EXPECT_EQ(tm_.rejected.of(RejectionReason::kOutOfOrder), 25); }
+TEST_F(RefusedRecordCounts, RefusedValues) { EXPECT_EQ(values_refused(), 8 * 25); }
+TEST_F(RefusedRecordCounts, TheStaleLaserRangeIsTooOld) { EXPECT_EQ(tm_.rejected.of(RejectionReason::kTooOld), 25); }
+// by channel: random + truncated + value
+TEST_F(RefusedRecordCounts, TimeAtToneChannel) { EXPECT_EQ(tm_.rejected.of(Channel::kTimeAtTone), 3 * 25); }
+// by channel: random + replay + value
+TEST_F(RefusedRecordCounts, NavigationChannel) { EXPECT_EQ(tm_.rejected.of(Channel::kNavigation), 3 * 25); }
+// by channel: random + two values
+TEST_F(RefusedRecordCounts, LaserRangeChannel) { EXPECT_EQ(tm_.rejected.of(Channel::kLaserRange), 3 * 25); }
+// by channel: random + the Telemetry record given as an input
+TEST_F(RefusedRecordCounts, TelemetryChannel) { EXPECT_EQ(tm_.rejected.of(Channel::kTelemetry), 2 * 25); }
+TEST_F(RefusedRecordCounts, NoneWithoutAChannel) { EXPECT_EQ(tm_.rejected.by_channel[0], 0); }
+TEST_F(RefusedRecordCounts, EveryRecordOnce) { EXPECT_EQ(tm_.rejected.total(), 22 * 25); }
 
 // The broadcast records a GPS message carries are checked by the on-board ephemeris store at every
 // message: a plausible record, an implausible one and one of NaN allocate nothing. (The check
@@ -504,7 +531,7 @@ FailingSteps run_failing_steps(const GncConfig& config, const Eigen::Matrix<doub
     GncOutputs step_out;
     out.allocations += visors::test::count_allocations([&] { step_out = c.step(in); });
     out.planning_failures = step_out.telemetry.planning_failures;
-    out.rejected_navigation = step_out.telemetry.rejected.navigation;
+    out.rejected_navigation = step_out.telemetry.rejected.of(RejectionReason::kNoOrbit);
   }
   return out;
 }

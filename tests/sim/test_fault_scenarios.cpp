@@ -96,8 +96,8 @@ TEST_F(FaultScenario, CrosslinkLossIsAbsorbed) {
 TEST_F(FaultScenario, GarbageIsRefusedAndCounted) {
   const FaultRun r = run("garbage");
   for (const char* craft : {"dsc", "osc"}) {
-    EXPECT_EQ(r.summary["records_refused"][craft]["bad_checksum"].get<int>(), 600 * 7) << craft;
-    EXPECT_EQ(r.summary["records_refused"][craft]["wrong_channel"].get<int>(), 600 * 4) << craft;
+    EXPECT_EQ(r.summary["inputs_refused"][craft]["by_reason"]["bad_checksum"].get<int>(), 600 * 7) << craft;
+    EXPECT_EQ(r.summary["inputs_refused"][craft]["by_reason"]["wrong_channel"].get<int>(), 600 * 4) << craft;
     EXPECT_GE(r.summary["navigation"][craft]["fix_rate_after_first_fix"].get<double>(), 0.995) << craft;
     EXPECT_EQ(r.summary["navigation"][craft]["epochs_alone"].get<int>(), 0) << craft;
   }

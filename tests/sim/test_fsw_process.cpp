@@ -97,7 +97,7 @@ TEST_F(FswProcessRun, TheRunManeuveredNavigatedAndRefusedGarbage) {
   const std::string navigation = read(processes_ / "navigation.csv");
   EXPECT_NE(read(processes_ / "events.csv").find("maneuver"), std::string::npos);
   EXPECT_GT(std::count(navigation.begin(), navigation.end(), '\n'), 100);
-  EXPECT_GT(summary["records_refused"]["dsc"]["bad_checksum"].get<int>(), 100);
+  EXPECT_GT(summary["inputs_refused"]["dsc"]["by_reason"]["bad_checksum"].get<int>(), 100);
 }
 
 TEST_F(FswProcessRun, TheSummarySaysWhereTheSoftwareRan) {

@@ -13,6 +13,23 @@ static_assert(channels_in_order(static_cast<RecordMessages*>(nullptr)), "RecordM
 
 }  // namespace
 
+std::string_view to_string(Channel channel) {
+  switch (channel) {
+    case Channel::kTimeAtTone: return "time_at_tone";
+    case Channel::kNavigation: return "navigation";
+    case Channel::kCrosslink: return "crosslink";
+    case Channel::kGroundCommand: return "ground_command";
+    case Channel::kPropulsion: return "propulsion";
+    case Channel::kGps: return "gps";
+    case Channel::kLaserRange: return "laser_range";
+    case Channel::kManeuver: return "maneuver";
+    case Channel::kObservation: return "observation";
+    case Channel::kTelemetry: return "telemetry";
+    case Channel::kNavigationTelemetry: return "navigation_telemetry";
+  }
+  return "unknown";
+}
+
 std::string_view to_string(RecordStatus status) {
   switch (status) {
     case RecordStatus::kAccepted: return "accepted";

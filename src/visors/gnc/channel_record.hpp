@@ -116,8 +116,4 @@ class SequenceGate {
   std::array<bool, kChannels + 1> seen_{};
 };
 
-/// One refused (or accepted) record counted by its status (RecordCounters: messages.hpp).
-inline void count(RecordCounters& counters, RecordStatus status) { ++counters.by_status[static_cast<std::size_t>(status)]; }
-static_assert(std::tuple_size_v<decltype(RecordCounters::by_status)> == kRecordStatuses, "one counter per status");
-
 }  // namespace visors::gnc

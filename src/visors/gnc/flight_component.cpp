@@ -43,20 +43,20 @@ GncOutputs FlightComponent::step(const GncInputs& inputs) { return step_validate
 
 GncInputs FlightComponent::admit(const GncInputs& inputs) {
   GncInputs valid = inputs;
-  auto& rejected = telemetry_.rejected;
-  const auto keep = [&](auto& slot, std::int64_t& count) {
-    if (slot && !validate(*slot, inputs.t).ok()) {
+  const auto keep = [&](auto& slot, Channel channel) {
+    if (!slot) return;
+    if (const core::Status check = validate(*slot, inputs.t); !check) {
       slot.reset();
-      ++count;
+      telemetry_.rejected.count(rejection_reason(check.problem()), channel);
     }
   };
-  keep(valid.time_at_tone, rejected.time_at_tone);
-  keep(valid.navigation, rejected.navigation);
-  keep(valid.crosslink, rejected.crosslink);
-  keep(valid.command, rejected.command);
-  keep(valid.propulsion, rejected.propulsion);
-  keep(valid.gps, rejected.gps);
-  keep(valid.laser_range, rejected.laser_range);
+  keep(valid.time_at_tone, Channel::kTimeAtTone);
+  keep(valid.navigation, Channel::kNavigation);
+  keep(valid.crosslink, Channel::kCrosslink);
+  keep(valid.command, Channel::kGroundCommand);
+  keep(valid.propulsion, Channel::kPropulsion);
+  keep(valid.gps, Channel::kGps);
+  keep(valid.laser_range, Channel::kLaserRange);
   return valid;
 }
 
@@ -65,7 +65,7 @@ GncOutputs FlightComponent::step_validated(const GncInputs& inputs) {
   // Nothing here can throw: the flight layers compile without exceptions (the flight profile of
   // the build) and a step allocates nothing (tests/gnc, counted at the malloc level).
   if (started_ && inputs.t < now_) {
-    ++telemetry_.rejected.navigation;  // a step back in time: nothing of it is used
+    telemetry_.rejected.count(RejectionReason::kTimeBackwards, Channel::kTimeAtTone);  // nothing of the step is used
   } else {
     now_ = inputs.t;
     started_ = true;
@@ -120,7 +120,7 @@ void FlightComponent::accept_inputs(const GncInputs& inputs, GncOutputs& out) {
     if (inputs.crosslink) navigation_->add_peer(inputs.crosslink->navigation);
     if (const auto solution = navigation_->solve(now_)) (void)accept_solution(*solution, navigation_->last_update());
   } else if (inputs.navigation && !accept_solution(*inputs.navigation, inputs.navigation->t)) {
-    ++telemetry_.rejected.navigation;  // no estimate can be made of it
+    telemetry_.rejected.count(RejectionReason::kNoOrbit, Channel::kNavigation);  // no estimate can be made of it
   }
 }
 
@@ -140,7 +140,7 @@ void FlightComponent::feed_navigation(const GncInputs& inputs) {
       if (inputs.gps->has_ephemeris) navigation_->add_ephemeris(inputs.gps->ephemeris);
       navigation_->add_own_epoch(nav::receiver_epoch(inputs.gps->epoch), q_body_to_gcrf_);
     } else {
-      ++telemetry_.rejected.gps;  // no attitude yet to place the antenna with
+      telemetry_.rejected.count(RejectionReason::kNoAttitude, Channel::kGps);  // nothing to place the antenna with
     }
   }
   if (inputs.laser_range) navigation_->add_laser_range(*inputs.laser_range);

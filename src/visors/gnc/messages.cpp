@@ -90,12 +90,6 @@ core::Status check_navigation(const CrosslinkNavigation& n, core::GpsTime sent) 
 
 }  // namespace
 
-std::int64_t RecordCounters::refused() const {
-  std::int64_t n = 0;
-  for (std::size_t i = 1; i < by_status.size(); ++i) n += by_status[i];
-  return n;
-}
-
 std::string_view to_string(Spacecraft spacecraft) { return spacecraft == Spacecraft::kDsc ? "dsc" : "osc"; }
 
 std::string_view to_string(GroundCommand::Kind kind) {

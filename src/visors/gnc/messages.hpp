@@ -17,8 +17,8 @@
 #include "visors/core/status.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/result.hpp"
 #include "visors/gnc/gnc_mode.hpp"
+#include "visors/gnc/input_rejections.hpp"
 #include "visors/gnss/broadcast_ephemeris.hpp"
 #include "visors/gnss/gps_measurement.hpp"
 
@@ -167,21 +167,6 @@ struct ObservationCommand {
   core::GpsTime slew_start, start, end;
 };
 
-/// Rejected-input counters by channel (telemetry).
-struct RejectionCounters {
-  std::int64_t time_at_tone = 0, navigation = 0, crosslink = 0, command = 0, propulsion = 0, gps = 0, laser_range = 0;
-  [[nodiscard]] std::int64_t total() const {
-    return time_at_tone + navigation + crosslink + command + propulsion + gps + laser_range;
-  }
-};
-
-/// Records refused at the component's binary interface, by reason (gnc/channel_record.hpp
-/// RecordStatus; index 0, accepted, unused).
-struct RecordCounters {
-  std::array<std::int64_t, 11> by_status{};
-  [[nodiscard]] std::int64_t refused() const;
-};
-
 struct Telemetry {
   core::GpsTime t;
   Mode mode = Mode::kManual;
@@ -198,8 +183,7 @@ struct Telemetry {
   int pending_pieces = 0;            // buffered impulses not yet commanded
   std::int64_t plans = 0;            // planner calls that produced a plan
   std::int64_t planning_failures = 0;
-  RejectionCounters rejected;  // valid records whose values were refused (stale, out of range), by channel
-  RecordCounters records;      // records refused by the binary interface, by reason
+  InputRejections rejected;  // every input refused (its bytes, its values, or unusable), by reason and channel
   // On-board navigation (mode "cdgps"): its solution is in use, its last update was fixed, when.
   bool navigation_valid = false, navigation_fixed = false;
   core::GpsTime navigation_update;

@@ -37,9 +37,11 @@ enum class Channel : std::uint8_t {
   kNavigationTelemetry = 11,  // with on-board navigation (NavigationTelemetry)
 };
 inline constexpr int kChannels = 11;
+/// The channel's name, e.g. "time_at_tone", "gps".
+std::string_view to_string(Channel channel);
 /// The two bytes every record starts with.
 inline constexpr std::array<std::uint8_t, 2> kRecordMagic{'V', 'G'};
-inline constexpr std::uint8_t kRecordVersion = 2;  // 2: the navigation telemetry's fixed combinations
+inline constexpr std::uint8_t kRecordVersion = 3;  // 3: the telemetry's one set of input rejections
 inline constexpr std::size_t kHeaderBytes = 20;
 inline constexpr std::size_t kChecksumBytes = 4;
 

@@ -9,27 +9,17 @@ namespace {
 // Decodes `record` as a Message; admitted through the gate and with valid values (messages.hpp
 // validate, at the step's time t), it replaces `slot`: the newest VALID record of a channel is
 // used, so a record of garbage values cannot displace a good one of the same step. A refused value
-// is counted in `rejected` (of the channel).
+// is counted in `rejected` by its problem and the channel.
 template <class Message>
 RecordStatus decode_into(RecordView record, core::GpsTime t, SequenceGate& gate, std::optional<Message>& slot,
-                         std::int64_t& rejected) {
+                         InputRejections& rejected) {
   Message message;
   RecordHeader header;
   if (const RecordStatus s = decode(record, message, header); s != RecordStatus::kAccepted) return s;
   if (const RecordStatus s = gate.admit(header); s != RecordStatus::kAccepted) return s;
-  if (validate(message, t).ok()) slot = message;
-  else ++rejected;
+  if (const core::Status valid = validate(message, t); valid.ok()) slot = message;
+  else rejected.count(rejection_reason(valid.problem()), RecordSchema<Message>::kChannel);
   return RecordStatus::kAccepted;
-}
-
-void add(RejectionCounters& to, const RejectionCounters& from) {
-  to.time_at_tone += from.time_at_tone;
-  to.navigation += from.navigation;
-  to.crosslink += from.crosslink;
-  to.command += from.command;
-  to.propulsion += from.propulsion;
-  to.gps += from.gps;
-  to.laser_range += from.laser_range;
 }
 
 }  // namespace
@@ -47,20 +37,20 @@ void RecordInterface::accept(RecordView record, GncInputs& in) {
   else if (record[0] != kRecordMagic[0] || record[1] != kRecordMagic[1]) status = RecordStatus::kBadMagic;
   else if (channel) {
     switch (*channel) {
-      case Channel::kTimeAtTone: status = decode_into(record, in.t, gate_, in.time_at_tone, rejected_.time_at_tone); break;
-      case Channel::kNavigation: status = decode_into(record, in.t, gate_, in.navigation, rejected_.navigation); break;
-      case Channel::kCrosslink: status = decode_into(record, in.t, gate_, in.crosslink, rejected_.crosslink); break;
-      case Channel::kGroundCommand: status = decode_into(record, in.t, gate_, in.command, rejected_.command); break;
-      case Channel::kPropulsion: status = decode_into(record, in.t, gate_, in.propulsion, rejected_.propulsion); break;
-      case Channel::kGps: status = decode_into(record, in.t, gate_, in.gps, rejected_.gps); break;
-      case Channel::kLaserRange: status = decode_into(record, in.t, gate_, in.laser_range, rejected_.laser_range); break;
+      case Channel::kTimeAtTone: status = decode_into(record, in.t, gate_, in.time_at_tone, rejected_); break;
+      case Channel::kNavigation: status = decode_into(record, in.t, gate_, in.navigation, rejected_); break;
+      case Channel::kCrosslink: status = decode_into(record, in.t, gate_, in.crosslink, rejected_); break;
+      case Channel::kGroundCommand: status = decode_into(record, in.t, gate_, in.command, rejected_); break;
+      case Channel::kPropulsion: status = decode_into(record, in.t, gate_, in.propulsion, rejected_); break;
+      case Channel::kGps: status = decode_into(record, in.t, gate_, in.gps, rejected_); break;
+      case Channel::kLaserRange: status = decode_into(record, in.t, gate_, in.laser_range, rejected_); break;
       case Channel::kManeuver:
       case Channel::kObservation:
       case Channel::kTelemetry:
       case Channel::kNavigationTelemetry: status = RecordStatus::kWrongChannel; break;  // outputs, not inputs
     }
   }
-  if (status != RecordStatus::kAccepted) count(refused_, status);
+  if (status != RecordStatus::kAccepted) rejected_.count(rejection_reason(status), channel ? static_cast<int>(*channel) : 0);
 }
 
 const OutputRecords& RecordInterface::step(core::GpsTime t, std::span<const RecordView> inputs) {
@@ -68,8 +58,7 @@ const OutputRecords& RecordInterface::step(core::GpsTime t, std::span<const Reco
   in.t = t;
   for (const RecordView record : inputs) accept(record, in);
   GncOutputs out = component_.step_validated(in);  // validated record by record above
-  out.telemetry.records = refused_;
-  add(out.telemetry.rejected, rejected_);
+  out.telemetry.rejected += rejected_;
   encode_outputs(out);
   return out_;
 }

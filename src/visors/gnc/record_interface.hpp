@@ -7,10 +7,11 @@
 // Inputs: any number of records of any channels, in any order, any of them garbage. Each is
 // dispatched by its header's channel to its decode(); a structural failure (truncated, bad
 // checksum, unknown channel, an output channel, ...) and a record older than the last one
-// admitted on its channel (SequenceGate) are refused and counted by reason (Telemetry::records);
-// the values of an admitted record are validated here, once (messages.hpp validate: stale,
-// non-finite, out of range; counted by channel, Telemetry::rejected), and of several records of
-// one channel in a step the newest valid one is used, so garbage values never displace a good
+// admitted on its channel (SequenceGate) are refused; the values of an admitted record are
+// validated here, once (messages.hpp validate: stale, non-finite, out of range), and both kinds
+// of refusal are counted in one set, by reason and channel (Telemetry::rejected,
+// gnc/input_rejections.hpp). Of several records of one channel in a step the newest valid one
+// is used, so garbage values never displace a good
 // record; the component takes them as valid (FlightComponent::step_validated).
 // Nothing crashes, nothing allocates (a refused record included), nothing throws.
 // Outputs: the step's maneuver, observation, crosslink, telemetry and navigation telemetry, each
@@ -58,7 +59,8 @@ class RecordInterface {
   [[nodiscard]] std::optional<core::GpsTime> tone(std::span<const RecordView> inputs) const;
 
   [[nodiscard]] const FlightComponent& component() const { return component_; }
-  [[nodiscard]] const RecordCounters& refused() const { return refused_; }
+  /// The inputs refused here: records by their bytes, records by their values.
+  [[nodiscard]] const InputRejections& rejected() const { return rejected_; }
 
  private:
   explicit RecordInterface(FlightComponent component) : component_(std::move(component)) {}
@@ -68,8 +70,7 @@ class RecordInterface {
 
   FlightComponent component_;
   SequenceGate gate_;
-  RecordCounters refused_;
-  RejectionCounters rejected_;  // valid records with refused values, by channel
+  InputRejections rejected_;  // records refused by their bytes or their values
   std::array<std::uint32_t, kChannels + 1> sequence_{};  // of the outputs, per channel
   OutputRecords out_;
 };

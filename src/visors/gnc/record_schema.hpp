@@ -228,7 +228,6 @@ struct RecordSchema<Telemetry> {
   static constexpr Channel kChannel = Channel::kTelemetry;
   static constexpr std::string_view kTitle = "telemetry";
   using M = Telemetry;
-  using R = RejectionCounters;
   using Payload = record::Sequence<
       record::Enumerated<"mode", record::At<&M::mode>, Mode, kModeCount, "gnc_mode.hpp order">,
       record::Flag<"active", record::At<&M::active>, "this spacecraft maneuvers">,
@@ -245,12 +244,11 @@ struct RecordSchema<Telemetry> {
       record::I32<"pending_pieces", record::At<&M::pending_pieces>, "buffered impulses not yet commanded">,
       record::I64<"plans", record::At<&M::plans>, "planner calls that produced a plan">,
       record::I64<"planning_failures", record::At<&M::planning_failures>, "">,
-      record::Part<"rejected", record::At<&M::rejected>, record::I64<"time_at_tone", record::At<&R::time_at_tone>, "values refused">,
-                   record::I64<"navigation", record::At<&R::navigation>, "">, record::I64<"crosslink", record::At<&R::crosslink>, "">,
-                   record::I64<"command", record::At<&R::command>, "">, record::I64<"propulsion", record::At<&R::propulsion>, "">,
-                   record::I64<"gps", record::At<&R::gps>, "">, record::I64<"laser_range", record::At<&R::laser_range>, "">>,
-      record::Slots<"records.by_status", kRecordStatuses, record::At<&M::records, &RecordCounters::by_status>,
-                    record::All<kRecordStatuses>, record::I64<"", record::At<>, "records refused, by RecordStatus (0 unused)">>,
+      record::Slots<"rejected.by_reason", kRejectionReasons, record::At<&M::rejected, &InputRejections::by_reason>,
+                    record::All<kRejectionReasons>,
+                    record::I64<"", record::At<>, "inputs refused, by RejectionReason (input_rejections.hpp; 0 unused)">>,
+      record::Slots<"rejected.by_channel", kChannels + 1, record::At<&M::rejected, &InputRejections::by_channel>,
+                    record::All<kChannels + 1>, record::I64<"", record::At<>, "the same by channel (0: unknown)">>,
       record::Flag<"navigation_valid", record::At<&M::navigation_valid>, "on-board navigation solution in use">,
       record::Flag<"navigation_fixed", record::At<&M::navigation_fixed>, "its last update was fixed">,
       record::Flag<"drag_valid", record::At<&M::drag_valid>, "the differential drag estimate is valid">, record::Padding<5>,
@@ -302,7 +300,7 @@ static_assert(std::tuple_size_v<RecordMessages> == kChannels, "one message per c
 template <class Message>
 inline constexpr std::size_t kPayloadBytes = RecordSchema<Message>::Payload::kBytes;
 
-// The sizes of version 2 of the format (docs/record-layout.md): a list that changes one of them
+// The sizes of version 3 of the format (docs/record-layout.md): a list that changes one of them
 // changes the wire format (see the file comment).
 static_assert(kPayloadBytes<TimeAtTone> == 32);
 static_assert(kPayloadBytes<NavigationSolution> == 264);
@@ -313,7 +311,7 @@ static_assert(kPayloadBytes<GpsMessage> == 792);
 static_assert(kPayloadBytes<LaserRange> == 8);
 static_assert(kPayloadBytes<ManeuverCommand> == 48);
 static_assert(kPayloadBytes<ObservationCommand> == 32);
-static_assert(kPayloadBytes<Telemetry> == 304);
+static_assert(kPayloadBytes<Telemetry> == 480);
 static_assert(kPayloadBytes<NavigationTelemetry> == 1240);
 
 }  // namespace visors::gnc

@@ -63,6 +63,22 @@ void record_truth_draws(const CampaignScenario& s, const TruthWorld& truth, RunR
   }
 }
 
+// One component's refused inputs (gnc/input_rejections.hpp): every reason and every channel by
+// name, zeros included, so that a summary always has the same keys.
+nlohmann::json rejections_json(const gnc::InputRejections& rejected) {
+  nlohmann::json out;
+  for (int r = 1; r < gnc::kRejectionReasons; ++r) {
+    const auto reason = static_cast<gnc::RejectionReason>(r);
+    out["by_reason"][std::string(gnc::to_string(reason))] = rejected.of(reason);
+  }
+  out["by_channel"]["unknown"] = rejected.by_channel[0];
+  for (int c = 1; c <= gnc::kChannels; ++c) {
+    const auto channel = static_cast<gnc::Channel>(c);
+    out["by_channel"][std::string(gnc::to_string(channel))] = rejected.of(channel);
+  }
+  return out;
+}
+
 }  // namespace
 
 CampaignSimulation::CampaignSimulation(const CampaignScenario& scenario, RunRecorder& recorder, TruthWorld truth,
@@ -342,12 +358,7 @@ nlohmann::json CampaignSimulation::summary(double wall_s) const {
   const gnc::Telemetry& tm_dsc = host_[0].out.telemetry;
   const gnc::Telemetry& tm_osc = host_[1].out.telemetry;
   summary["rejected_inputs"] = tm_dsc.rejected.total() + tm_osc.rejected.total();
-  for (std::size_t k = 0; k < 2; ++k) {
-    nlohmann::json refused;
-    const auto& by_status = host_[k].out.telemetry.records.by_status;
-    for (std::size_t i = 1; i < by_status.size(); ++i) refused[std::string(gnc::to_string(static_cast<gnc::RecordStatus>(i)))] = by_status[i];
-    summary["records_refused"][std::string(host_[k].name)] = refused;
-  }
+  for (std::size_t k = 0; k < 2; ++k) summary["inputs_refused"][std::string(host_[k].name)] = rejections_json(host_[k].out.telemetry.rejected);
   summary["planning_failures"] = tm_dsc.planning_failures + tm_osc.planning_failures;
   summary["navigation_mode"] = s.navigation_mode == NavigationMode::kCdgps ? "cdgps" : "ideal";
   if (sensors_.has_gps()) summary["navigation"] = metrics_.navigation_summary(host_);

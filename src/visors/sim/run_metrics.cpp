@@ -292,7 +292,7 @@ void RunMetrics::add_to_summary(nlohmann::json& summary, const std::array<std::s
 // telemetry records) with each component's rejected GPS messages (its telemetry record).
 nlohmann::json RunMetrics::navigation_summary(const HostApplication& host) const {
   nlohmann::json out = navigation_score_.summary();
-  for (std::size_t k = 0; k < 2; ++k) out[std::string(host[k].name)]["rejected_gps_messages"] = host[k].out.telemetry.rejected.gps;
+  for (std::size_t k = 0; k < 2; ++k) out[std::string(host[k].name)]["rejected_gps_messages"] = host[k].out.telemetry.rejected.of(gnc::Channel::kGps);
   return out;
 }
 

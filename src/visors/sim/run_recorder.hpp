@@ -25,9 +25,11 @@
 namespace visors::sim {
 
 /// Version of the run directory's format (docs/run-directory.md), written in summary.json as
-/// `format_version`. 2: an observation's start in summary.json is `t_s` (was `t_gps`, which was
-/// never GPS time); `format_version` itself is new (absent means 1).
-inline constexpr int kRunDirectoryFormatVersion = 2;
+/// `format_version`. 3: the refused inputs in one set, `inputs_refused` by reason and channel
+/// (was `records_refused` by record status), and `rejected_inputs` counts them all. 2: an
+/// observation's start in summary.json is `t_s` (was `t_gps`, which was never GPS time);
+/// `format_version` itself is new (absent means 1).
+inline constexpr int kRunDirectoryFormatVersion = 3;
 
 struct TimeseriesRow {
   double t_s = 0.0;

@@ -137,6 +137,16 @@ void write_channel(std::ostream& out) {
   write_table(out, rows);
 }
 
+// The index of each telemetry counter rejected.by_reason[k] and rejected.by_channel[k].
+void write_rejection_reasons(std::ostringstream& out) {
+  out << "### Telemetry's rejection counters\n\n";
+  out << "| k | `rejected.by_reason[k]` |\n|---:|---|\n";
+  for (int k = 1; k < kRejectionReasons; ++k) out << "| " << k << " | " << to_string(static_cast<RejectionReason>(k)) << " |\n";
+  out << "\n| k | `rejected.by_channel[k]` |\n|---:|---|\n| 0 | unknown |\n";
+  for (int k = 1; k <= kChannels; ++k) out << "| " << k << " | " << to_string(static_cast<Channel>(k)) << " |\n";
+  out << "\n";
+}
+
 }  // namespace
 
 std::string record_layout_tables() {
@@ -144,6 +154,7 @@ std::string record_layout_tables() {
   out << "### Header: " << kHeaderBytes << " bytes\n\n";
   write_table(out, header_layout());
   std::apply([&out](auto... messages) { (write_channel<decltype(messages)>(out), ...); }, RecordMessages{});
+  write_rejection_reasons(out);
   return out.str();
 }
 
