@@ -45,6 +45,11 @@ T take(core::Result<T> result, const std::string& prefix = "") {
   return std::move(result).value();
 }
 
+/// The same for a flight check's Status.
+inline void take(const core::Status& status, const std::string& prefix = "") {
+  if (!status.ok()) (void)take(core::Result<bool>(status.error()), prefix);
+}
+
 /// The same for a flight call's Outcome.
 template <typename T>
 T take(core::Outcome<T> outcome, const std::string& prefix = "") {

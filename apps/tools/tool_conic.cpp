@@ -87,7 +87,12 @@ Json run_conic(const Json& in) {
   if (dims_json.contains("q")) {
     const Json& q = dims_json.at("q");
     if (!q.is_array()) throw ToolInputError("dims.q", "must be an array of cone dimensions");
-    for (std::size_t k = 0; k < q.size(); ++k) dims.q.push_back(read_count(q[k], "dims.q[" + std::to_string(k) + "]"));
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      const std::string name = "dims.q[" + std::to_string(k) + "]";
+      const int dim = read_count(q[k], name);
+      if (dim < 1) throw ToolInputError(name, "must be >= 1 (a cone's dimension)");  // the library names the list only
+      dims.q.push_back(dim);
+    }
   }
   if (!in.at("c").is_array() || in.at("c").empty()) throw ToolInputError("c", "must be a non-empty array of numbers");
   dims.n = static_cast<int>(in.at("c").size());

@@ -594,43 +594,43 @@ TEST(CdgpsFilterInput, SkipsAHalfCyclePhase) {
 TEST(CdgpsSettings, NameTheFieldOfABadValue) {
   CdgpsSettings s;
   s.sdcp_sigma_m = -1.0;
-  EXPECT_EQ(check(s)->field, "sdcp_sigma_m");
+  EXPECT_EQ(check(s).path(), "sdcp_sigma_m");
 }
 
 TEST(CdgpsSettings, NameTheGraphicBiasRandomWalk) {
   CdgpsSettings s;
   s.graphic_bias_random_walk_m = -1e-3;
-  EXPECT_EQ(check(s)->field, "graphic_bias_random_walk_m");
+  EXPECT_EQ(check(s).path(), "graphic_bias_random_walk_m");
 }
 
 TEST(CdgpsSettings, NameTheAlongTrackEmpiricalSigma) {
   CdgpsSettings s;
   s.empirical_along_track_sigma_mps2 = std::nan("");
-  EXPECT_EQ(check(s)->field, "empirical_along_track_sigma_mps2");
+  EXPECT_EQ(check(s).path(), "empirical_along_track_sigma_mps2");
 }
 
 TEST(CdgpsSettings, NameTheMultipathSigma) {
   CdgpsSettings s;
   s.sdcp_multipath_sigma_m = std::nan("");
-  EXPECT_EQ(check(s)->field, "sdcp_multipath_sigma_m");
+  EXPECT_EQ(check(s).path(), "sdcp_multipath_sigma_m");
 }
 
 TEST(CdgpsSettings, NameTheMultipathCorrelationTime) {
   CdgpsSettings s;
   s.sdcp_multipath_tau_s = 0.0;
-  EXPECT_EQ(check(s)->field, "sdcp_multipath_tau_s");
+  EXPECT_EQ(check(s).path(), "sdcp_multipath_tau_s");
 }
 
 TEST(CdgpsSettings, NameTheCodeMultipathSigma) {
   CdgpsSettings s;
   s.code_multipath_sigma_m = -0.1;
-  EXPECT_EQ(check(s)->field, "code_multipath_sigma_m");
+  EXPECT_EQ(check(s).path(), "code_multipath_sigma_m");
 }
 
 TEST(CdgpsSettings, NameTheCodeMultipathCorrelationTime) {
   CdgpsSettings s;
   s.code_multipath_tau_s = std::nan("");
-  EXPECT_EQ(check(s)->field, "code_multipath_tau_s");
+  EXPECT_EQ(check(s).path(), "code_multipath_tau_s");
 }
 
 // The codes' zenith variances: GRAPHIC (code + phase) / 2 carries half the code's multipath, an SD
@@ -668,13 +668,13 @@ TEST(CdgpsSettings, WithoutCodeMultipathWeightAndGateAgree) {
 TEST(CdgpsSettings, NameTheWeightingFloor) {
   CdgpsSettings s;
   s.min_weighting_elevation_deg = 0.0;
-  EXPECT_EQ(check(s)->field, "min_weighting_elevation_deg");
+  EXPECT_EQ(check(s).path(), "min_weighting_elevation_deg");
 }
 
 TEST(CdgpsSettings, NameTheFloatTimeBeforeFixing) {
   CdgpsSettings s;
   s.min_float_s_before_fix = -1.0;
-  EXPECT_EQ(check(s)->field, "min_float_s_before_fix");
+  EXPECT_EQ(check(s).path(), "min_float_s_before_fix");
 }
 
 // The cold-start guard: no fix attempt in the first min_float_s_before_fix (30 s) after
@@ -684,7 +684,7 @@ TEST_F(CdgpsFilterRun, NoFixBeforeTheFloatTimeAfterTheColdStart) { EXPECT_GE(res
 TEST(CdgpsSettings, NameTheAcceptanceField) {
   CdgpsSettings s;
   s.acceptance.min_ratio = 0.5;
-  EXPECT_EQ(check(s)->field, "acceptance.min_ratio");
+  EXPECT_EQ(check(s).path(), "acceptance.min_ratio");
 }
 
 // A 2 mm/s along-track piece of the campaign's maneuvers, executed 3 % long and 1 deg off: told to

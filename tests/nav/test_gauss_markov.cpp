@@ -230,7 +230,7 @@ TEST(GaussMarkov, ZeroSigmaGivesZeroNoise) {
   EXPECT_TRUE(gauss_markov_chain(kDt, 600.0, 0.0).noise.isZero(0.0));
 }
 
-std::string error_field(const std::optional<core::Error>& e) { return e ? e->field : "none"; }
+std::string error_field(const core::Status& e) { return e ? "none" : e.path(); }
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();

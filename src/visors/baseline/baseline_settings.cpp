@@ -43,7 +43,7 @@ core::Result<BaselineSettings> validate(const BaselineSettings& s) {
   if (!(std::isfinite(s.epoch_tolerance_s) && s.epoch_tolerance_s >= 0.0 && s.epoch_tolerance_s < 1.0)) {
     return bad("epoch_tolerance", "must be in [0, 1) s");
   }
-  if (auto a = nav::validate(s.acceptance); !a) return core::Error{"acceptance." + a.error().field, a.error().message};
+  if (const core::Status a = nav::validate(s.acceptance); !a) return a.within("acceptance").error();
   return s;
 }
 

@@ -113,7 +113,7 @@ core::Result<bool> read_cdgps_settings(const toml::table& root, nav::CdgpsSettin
     if (acceptance->as_table() == nullptr) return core::Error{"nav.acceptance", "must be a table"};
     if (auto ok = read_acceptance(*acceptance->as_table(), out.acceptance); !ok) return ok.error();
   }
-  if (auto e = nav::check(out)) return core::Error{"nav." + e->field, e->message};
+  if (const core::Status e = nav::check(out); !e) return e.within("nav").error();
   settings = out;
   return true;
 }

@@ -73,6 +73,13 @@ class [[nodiscard]] Status {
     return s;
   }
 
+  /// The same problem and detail, said of another field (a shared check reporting for its caller).
+  [[nodiscard]] constexpr Status renamed(const char* field) const {
+    Status s = *this;
+    s.field_ = field;
+    return s;
+  }
+
   /// The full name, scopes and field joined by '.' (allocates: for the ground).
   [[nodiscard]] std::string path() const;
   /// As an Error, for ground callers and creation-time validation (this allocates).
@@ -84,6 +91,40 @@ class [[nodiscard]] Status {
   const char* detail_ = "";
   std::array<const char*, kMaxScopes> scopes_{};
 };
+
+/// "must be in [Lo, Hi]" as text with static storage, written at compile time, for a Status
+/// detail that names a range whose bounds are constants (in_range_text<1, kMaxWaypoints>()).
+template <long long Lo, long long Hi>
+struct InRangeText {
+  static constexpr std::array<char, 64> kText = [] {
+    std::array<char, 64> out{};
+    std::size_t n = 0;
+    const auto put = [&](const char* s) {
+      while (*s != '\0') out[n++] = *s++;
+    };
+    const auto put_integer = [&](long long v) {
+      if (v < 0) out[n++] = '-';
+      unsigned long long u = v < 0 ? 0ULL - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v);
+      std::array<char, 20> digits{};
+      std::size_t k = 0;
+      do {
+        digits[k++] = static_cast<char>('0' + u % 10);
+        u /= 10;
+      } while (u != 0);
+      while (k > 0) out[n++] = digits[--k];
+    };
+    put("must be in [");
+    put_integer(Lo);
+    put(", ");
+    put_integer(Hi);
+    put("]");
+    return out;
+  }();
+};
+template <long long Lo, long long Hi>
+constexpr const char* in_range_text() {
+  return InRangeText<Lo, Hi>::kText.data();
+}
 
 /// A value or the Status that refused to make it: Result's shape without an allocating error.
 template <typename T>

@@ -66,22 +66,22 @@ ForceModel::ForceModel(ForceModel&&) noexcept = default;
 ForceModel& ForceModel::operator=(ForceModel&&) noexcept = default;
 ForceModel::~ForceModel() = default;
 
-std::optional<Error> ForceModel::check_inputs(const ForceModelConfig& config, const SpacecraftProperties& spacecraft) {
+core::Status ForceModel::check_inputs(const ForceModelConfig& config, const SpacecraftProperties& spacecraft) {
   const std::pair<const char*, double> positive[] = {{"spacecraft.mass", spacecraft.mass},
                                                      {"spacecraft.drag_area", spacecraft.drag_area},
                                                      {"spacecraft.cd", spacecraft.cd},
                                                      {"spacecraft.srp_area", spacecraft.srp_area},
                                                      {"spacecraft.cr", spacecraft.cr}};
   for (const auto& [field, value] : positive) {
-    if (!(value > 0.0) || !std::isfinite(value)) return Error{field, "must be a finite number > 0"};
+    if (!(value > 0.0) || !std::isfinite(value)) return core::Status{core::Problem::kOutOfRange, field, "must be a finite number > 0"};
   }
-  if (!config.empirical_rtn.allFinite()) return Error{"empirical_rtn", "must be finite"};
-  return std::nullopt;
+  if (!config.empirical_rtn.allFinite()) return core::Status{core::Problem::kNotFinite, "empirical_rtn"};
+  return {};
 }
 
 core::Result<ForceModel> ForceModel::create(const ForceModelConfig& config, const SpacecraftProperties& spacecraft,
                                             ForceModelData data) {
-  if (auto invalid = check_inputs(config, spacecraft)) return *invalid;
+  if (const core::Status ok = check_inputs(config, spacecraft); !ok) return ok.error();
   ForceModel model;
   model.config_ = config;
   model.spacecraft_ = spacecraft;

@@ -17,7 +17,7 @@
 #include "visors/core/eop.hpp"
 #include "visors/core/gps_time.hpp"
 #include "visors/core/state_vector.hpp"
-#include "visors/core/result.hpp"
+#include "visors/core/status.hpp"
 #include "visors/dynamics/atmosphere.hpp"
 #include "visors/dynamics/force_model_config.hpp"
 #include "visors/dynamics/gravity_field.hpp"
@@ -65,8 +65,7 @@ class ForceModel {
  public:
   /// The checks of `spacecraft` and `config.empirical_rtn` that create() makes first; an error
   /// names the field. Loaders run them before reading any file.
-  static std::optional<core::Error> check_inputs(const ForceModelConfig& config,
-                                                 const SpacecraftProperties& spacecraft);
+  static core::Status check_inputs(const ForceModelConfig& config, const SpacecraftProperties& spacecraft);
 
   /// The model of `config` with `data` (no file is read); an error names the configuration
   /// field. warnings() holds data's fallbacks in the order gravity, degree truncation (when

@@ -12,7 +12,7 @@
 #include "visors/control/maneuver_buffer.hpp"
 #include "visors/control/stochastic_mpc.hpp"
 #include "visors/core/constants.hpp"
-#include "visors/core/result.hpp"
+#include "visors/core/status.hpp"
 #include "visors/gnc/differential_drag_estimator.hpp"
 #include "visors/gnc/messages.hpp"
 #include "visors/safety/escape_maneuver.hpp"
@@ -142,6 +142,6 @@ struct GncConfig {
 inline constexpr int kMaxManeuverQueuePieces = 1 << 20;
 
 /// Checks every field (names as in the struct, e.g. "standby_keeping.de_deadband_m").
-core::Result<GncConfig> validate(const GncConfig& config);
+core::Status validate(const GncConfig& config);
 
 }  // namespace visors::gnc

@@ -77,22 +77,22 @@ void fixed_double_differences(const nav::CdgpsFilter& filter, const nav::CdgpsEp
 static_assert(static_cast<int>(gnss::EphemerisStore::AcceptStatus::kInconsistent) == kEphemerisStatuses - 1,
               "one ephemeris counter per acceptance status");
 
-core::Result<bool> OnboardNavigationSettings::validate() const {
-  if (auto error = nav::check(filter)) return core::Error{"filter." + error->field, error->message};
-  if (!antenna_arp_body_m.allFinite()) return core::Error{"antenna_arp_body_m", "must be finite"};
-  if (!std::isfinite(antenna_pco_m)) return core::Error{"antenna_pco_m", "must be finite"};
-  if (!lrf_lever_body_m.allFinite()) return core::Error{"lrf_lever_body_m", "must be finite"};
-  if (!(lrf_sigma_m > 0.0) || !std::isfinite(lrf_sigma_m)) return core::Error{"lrf_sigma_m", "must be finite and > 0"};
-  if (!std::isfinite(lrf_bias_m)) return core::Error{"lrf_bias_m", "must be finite"};
-  if (!(peer_wait_s >= 0.0 && peer_wait_s <= 10.0)) return core::Error{"peer_wait_s", "must be in [0, 10] s"};
-  if (!(coast_after_s >= 1.0 && coast_after_s <= 60.0)) return core::Error{"coast_after_s", "must be in [1, 60] s"};
+core::Status OnboardNavigationSettings::validate() const {
+  if (const core::Status ok = nav::check(filter); !ok) return ok.within("filter");
+  if (!antenna_arp_body_m.allFinite()) return core::Status{core::Problem::kNotFinite, "antenna_arp_body_m", "must be finite"};
+  if (!std::isfinite(antenna_pco_m)) return core::Status{core::Problem::kNotFinite, "antenna_pco_m", "must be finite"};
+  if (!lrf_lever_body_m.allFinite()) return core::Status{core::Problem::kNotFinite, "lrf_lever_body_m", "must be finite"};
+  if (!(lrf_sigma_m > 0.0) || !std::isfinite(lrf_sigma_m)) return core::Status{core::Problem::kOutOfRange, "lrf_sigma_m", "must be finite and > 0"};
+  if (!std::isfinite(lrf_bias_m)) return core::Status{core::Problem::kNotFinite, "lrf_bias_m", "must be finite"};
+  if (!(peer_wait_s >= 0.0 && peer_wait_s <= 10.0)) return core::Status{core::Problem::kOutOfRange, "peer_wait_s", "must be in [0, 10] s"};
+  if (!(coast_after_s >= 1.0 && coast_after_s <= 60.0)) return core::Status{core::Problem::kOutOfRange, "coast_after_s", "must be in [1, 60] s"};
   if (!(valid_position_sigma_m > 0.0) || !std::isfinite(valid_position_sigma_m)) {
-    return core::Error{"valid_position_sigma_m", "must be finite and > 0"};
+    return core::Status{core::Problem::kOutOfRange, "valid_position_sigma_m", "must be finite and > 0"};
   }
   if (!(valid_velocity_sigma_mps > 0.0) || !std::isfinite(valid_velocity_sigma_mps)) {
-    return core::Error{"valid_velocity_sigma_mps", "must be finite and > 0"};
+    return core::Status{core::Problem::kOutOfRange, "valid_velocity_sigma_mps", "must be finite and > 0"};
   }
-  return true;
+  return {};
 }
 
 core::Result<OnboardNavigation> OnboardNavigation::create(const OnboardNavigationSettings& settings, Spacecraft self,

@@ -37,7 +37,7 @@
 
 #include "visors/core/earth_frames.hpp"
 #include "visors/core/eop.hpp"
-#include "visors/core/result.hpp"
+#include "visors/core/status.hpp"
 #include "visors/dynamics/force_model.hpp"
 #include "visors/gnc/messages.hpp"
 #include "visors/gnss/ephemeris_store.hpp"
@@ -72,7 +72,7 @@ struct OnboardNavigationSettings {
   core::EarthOrientation earth_orientation;  // uplinked (the IERS values at the campaign's start)
 
   /// Ok, or the field by name.
-  [[nodiscard]] core::Result<bool> validate() const;
+  [[nodiscard]] core::Status validate() const;
 };
 
 // NavigationCounters, what the navigation did so far, are part of its telemetry (messages.hpp).

@@ -29,13 +29,13 @@ Eigen::Index combinations_to_search(const IntegerLeastSquares& ils, Eigen::Index
 
 }  // namespace
 
-core::Result<AcceptanceSettings> validate(const AcceptanceSettings& s) {
+core::Status validate(const AcceptanceSettings& s) {
   if (!(s.min_success_rate > 0.0 && s.min_success_rate < 1.0)) {
-    return core::Error{"min_success_rate", "must be in (0, 1)"};
+    return core::Status{core::Problem::kOutOfRange, "min_success_rate", "must be in (0, 1)"};
   }
-  if (!(s.min_ratio >= 1.0) || !std::isfinite(s.min_ratio)) return core::Error{"min_ratio", "must be a finite number >= 1"};
-  if (s.min_partial < 1) return core::Error{"min_partial", "must be >= 1"};
-  return s;
+  if (!(s.min_ratio >= 1.0) || !std::isfinite(s.min_ratio)) return core::Status{core::Problem::kOutOfRange, "min_ratio", "must be a finite number >= 1"};
+  if (s.min_partial < 1) return core::Status{core::Problem::kOutOfRange, "min_partial", "must be >= 1"};
+  return {};
 }
 
 std::string_view to_string(FixOutcome outcome) {

@@ -23,7 +23,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/result.hpp"
+#include "visors/core/status.hpp"
 #include "visors/nav/integer_least_squares.hpp"
 
 namespace visors::nav {
@@ -39,7 +39,7 @@ struct AcceptanceSettings {
 };
 
 /// Each value checked; the error names the field.
-core::Result<AcceptanceSettings> validate(const AcceptanceSettings& settings);
+core::Status validate(const AcceptanceSettings& settings);
 
 enum class FixOutcome { kFixed, kPartial, kFloat };
 enum class FloatReason { kNone, kInvalidInput, kLowSuccessRate, kLowRatio, kSearchLimit };

@@ -143,7 +143,7 @@ struct CdgpsFilter::Impl {
 
 core::Result<CdgpsFilter> CdgpsFilter::create(const CdgpsSettings& settings, dynamics::ForceModel dsc_model,
                                               dynamics::ForceModel osc_model) {
-  if (auto e = check(settings)) return *e;
+  if (const core::Status ok = check(settings); !ok) return ok.error();
   auto graphic = AmbiguitySlotBank::create(state::kGraphicAmbiguities);
   auto sdcp = AmbiguitySlotBank::create(state::kSdcpAmbiguities);
   auto dd = DoubleDifferenceAmbiguities::create(kNavStates);

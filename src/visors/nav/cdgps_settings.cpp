@@ -11,16 +11,16 @@ bool positive(double v) { return std::isfinite(v) && v > 0.0; }
 
 }  // namespace
 
-std::optional<core::Error> check(const CdgpsSettings& s) {
-  if (s.local != Craft::kDsc && s.local != Craft::kOsc) return core::Error{"local", "must be dsc or osc"};
-  if (!positive(s.max_step_s)) return core::Error{"max_step_s", "must be a finite number > 0"};
-  if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_sigma_mps2)) return e;
-  if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_common_sigma_mps2)) {
-    return core::Error{"empirical_common_sigma_mps2", e->message};
+core::Status check(const CdgpsSettings& s) {
+  if (s.local != Craft::kDsc && s.local != Craft::kOsc) return core::Status{core::Problem::kUnknown, "local", "must be dsc or osc"};
+  if (!positive(s.max_step_s)) return core::Status{core::Problem::kOutOfRange, "max_step_s", "must be a finite number > 0"};
+  if (const core::Status e = check_gauss_markov(s.empirical_tau_s, s.empirical_sigma_mps2); !e) return e;
+  if (const core::Status e = check_gauss_markov(s.empirical_tau_s, s.empirical_common_sigma_mps2); !e) {
+    return e.renamed("empirical_common_sigma_mps2");
   }
   if (s.empirical_along_track_sigma_mps2 >= 0.0 || std::isnan(s.empirical_along_track_sigma_mps2)) {
-    if (auto e = check_gauss_markov(s.empirical_tau_s, s.empirical_along_track_sigma_mps2)) {
-      return core::Error{"empirical_along_track_sigma_mps2", e->message};
+    if (const core::Status e = check_gauss_markov(s.empirical_tau_s, s.empirical_along_track_sigma_mps2); !e) {
+      return e.renamed("empirical_along_track_sigma_mps2");
     }
   }
   const struct {
@@ -43,41 +43,41 @@ std::optional<core::Error> check(const CdgpsSettings& s) {
                 {"impulse_magnitude_sigma", s.impulse_magnitude_sigma},
                 {"impulse_direction_sigma_deg", s.impulse_direction_sigma_deg}};
   for (const auto& [field, value] : sigmas) {
-    if (!positive(value)) return core::Error{field, "must be a finite number > 0"};
+    if (!positive(value)) return core::Status{core::Problem::kOutOfRange, field, "must be a finite number > 0"};
   }
   if (!(s.graphic_bias_random_walk_m >= 0.0 && std::isfinite(s.graphic_bias_random_walk_m))) {
-    return core::Error{"graphic_bias_random_walk_m", "must be a finite number >= 0"};
+    return core::Status{core::Problem::kOutOfRange, "graphic_bias_random_walk_m", "must be a finite number >= 0"};
   }
-  if (!positive(s.phase_center_turn_rate_deg_s)) return core::Error{"phase_center_turn_rate_deg_s", "must be a finite number > 0"};
+  if (!positive(s.phase_center_turn_rate_deg_s)) return core::Status{core::Problem::kOutOfRange, "phase_center_turn_rate_deg_s", "must be a finite number > 0"};
   if (!(std::isfinite(s.phase_center_free_after_turn_s) && s.phase_center_free_after_turn_s >= 0.0)) {
-    return core::Error{"phase_center_free_after_turn_s", "must be a finite number >= 0"};
+    return core::Status{core::Problem::kOutOfRange, "phase_center_free_after_turn_s", "must be a finite number >= 0"};
   }
   if (!(std::isfinite(s.sdcp_correlation_inflation) && s.sdcp_correlation_inflation >= 1.0)) {
-    return core::Error{"sdcp_correlation_inflation", "must be a finite number >= 1"};
+    return core::Status{core::Problem::kOutOfRange, "sdcp_correlation_inflation", "must be a finite number >= 1"};
   }
   if (!(std::isfinite(s.sdcp_multipath_sigma_m) && s.sdcp_multipath_sigma_m >= 0.0)) {
-    return core::Error{"sdcp_multipath_sigma_m", "must be a finite number >= 0 [m]"};
+    return core::Status{core::Problem::kOutOfRange, "sdcp_multipath_sigma_m", "must be a finite number >= 0 [m]"};
   }
   if (!(std::isfinite(s.sdcp_multipath_tau_s) && s.sdcp_multipath_tau_s > 0.0)) {
-    return core::Error{"sdcp_multipath_tau_s", "must be a finite number > 0 [s]"};
+    return core::Status{core::Problem::kOutOfRange, "sdcp_multipath_tau_s", "must be a finite number > 0 [s]"};
   }
   if (!(std::isfinite(s.code_multipath_sigma_m) && s.code_multipath_sigma_m >= 0.0)) {
-    return core::Error{"code_multipath_sigma_m", "must be a finite number >= 0 [m]"};
+    return core::Status{core::Problem::kOutOfRange, "code_multipath_sigma_m", "must be a finite number >= 0 [m]"};
   }
   if (!(std::isfinite(s.code_multipath_tau_s) && s.code_multipath_tau_s > 0.0)) {
-    return core::Error{"code_multipath_tau_s", "must be a finite number > 0 [s]"};
+    return core::Status{core::Problem::kOutOfRange, "code_multipath_tau_s", "must be a finite number > 0 [s]"};
   }
   if (!(s.min_float_s_before_fix >= 0.0 && s.min_float_s_before_fix <= 3600.0)) {
-    return core::Error{"min_float_s_before_fix", "must be in [0, 3600] s"};
+    return core::Status{core::Problem::kOutOfRange, "min_float_s_before_fix", "must be in [0, 3600] s"};
   }
   if (!(s.min_fix_elevation_deg >= 0.0 && s.min_fix_elevation_deg < 90.0)) {
-    return core::Error{"min_fix_elevation_deg", "must be in [0, 90) deg"};
+    return core::Status{core::Problem::kOutOfRange, "min_fix_elevation_deg", "must be in [0, 90) deg"};
   }
   if (!(s.min_weighting_elevation_deg > 0.0 && s.min_weighting_elevation_deg <= 90.0)) {
-    return core::Error{"min_weighting_elevation_deg", "must be in (0, 90] deg"};
+    return core::Status{core::Problem::kOutOfRange, "min_weighting_elevation_deg", "must be in (0, 90] deg"};
   }
-  if (auto a = validate(s.acceptance); !a) return core::Error{"acceptance." + a.error().field, a.error().message};
-  return std::nullopt;
+  if (const core::Status a = validate(s.acceptance); !a) return a.within("acceptance");
+  return {};
 }
 
 namespace {

@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "visors/core/result.hpp"
+#include "visors/core/status.hpp"
 #include "visors/nav/ambiguity_acceptance.hpp"
 #include "visors/nav/navigation_state.hpp"
 
@@ -178,7 +178,7 @@ struct CdgpsSettings {
 };
 
 /// Each value checked; the error names the field.
-std::optional<core::Error> check(const CdgpsSettings& settings);
+core::Status check(const CdgpsSettings& settings);
 
 /// The variance at the zenith [m^2] of one code scalar, white noise plus multipath
 /// (code_multipath_sigma_m): per epoch (`gate`: innovation gates, clock-jump test) and as the

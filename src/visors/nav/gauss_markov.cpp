@@ -95,15 +95,15 @@ double white_equivalent_factor(double interval_s, double tau_s) {
   return (2.0 - one_minus_phi) / one_minus_phi;
 }
 
-std::optional<core::Error> check_gauss_markov(double tau, double sigma) {
+core::Status check_gauss_markov(double tau, double sigma) {
   // Written so that NaN fails the comparisons.
   if (!(tau > 0.0) || !std::isfinite(tau)) {
-    return core::Error{"empirical_tau_s", "must be a finite correlation time > 0 s"};
+    return core::Status{core::Problem::kOutOfRange, "empirical_tau_s", "must be a finite correlation time > 0 s"};
   }
   if (!(sigma >= 0.0) || !std::isfinite(sigma)) {
-    return core::Error{"empirical_sigma_mps2", "must be a finite standard deviation >= 0 m/s^2"};
+    return core::Status{core::Problem::kOutOfRange, "empirical_sigma_mps2", "must be a finite standard deviation >= 0 m/s^2"};
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace visors::nav

@@ -47,7 +47,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/result.hpp"
+#include "visors/core/status.hpp"
 
 namespace visors::nav {
 
@@ -69,7 +69,7 @@ GaussMarkovChain gauss_markov_chain(double dt, double tau, double sigma);
 double white_equivalent_factor(double interval_s, double tau_s);
 
 /// Validation at the configuration boundary: tau finite and > 0, sigma finite and >= 0; the error
-/// names the field ("empirical_tau_s", "empirical_sigma_mps2"). std::nullopt when both are valid.
-std::optional<core::Error> check_gauss_markov(double tau, double sigma);
+/// names the field ("empirical_tau_s", "empirical_sigma_mps2"); ok when both are valid.
+core::Status check_gauss_markov(double tau, double sigma);
 
 }  // namespace visors::nav

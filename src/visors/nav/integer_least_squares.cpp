@@ -3,7 +3,6 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
-#include <string>
 
 #include "visors/nav/bootstrap.hpp"
 #include "visors/nav/mlambda_search.hpp"
@@ -27,16 +26,16 @@ struct IntegerLeastSquares::Workspace {
   bool Z_formed = false;
 };
 
-core::Result<IlsSettings> validate(const IlsSettings& s) {
+core::Status validate(const IlsSettings& s) {
   if (s.candidates < 1 || s.candidates > kMaxCandidates) {
-    return core::Error{"candidates", "must be an integer in [1, " + std::to_string(kMaxCandidates) + "]"};
+    return core::Status{core::Problem::kOutOfRange, "candidates", core::in_range_text<1, kMaxCandidates>()};
   }
-  if (s.max_search_steps < 1) return core::Error{"max_search_steps", "must be >= 1"};
-  if (s.max_permutations < 0) return core::Error{"max_permutations", "must be >= 0"};
+  if (s.max_search_steps < 1) return core::Status{core::Problem::kOutOfRange, "max_search_steps", "must be >= 1"};
+  if (s.max_permutations < 0) return core::Status{core::Problem::kOutOfRange, "max_permutations", "must be >= 0"};
   if (!(s.symmetry_tolerance >= 0.0) || !std::isfinite(s.symmetry_tolerance)) {
-    return core::Error{"symmetry_tolerance", "must be a finite number >= 0"};
+    return core::Status{core::Problem::kOutOfRange, "symmetry_tolerance", "must be a finite number >= 0"};
   }
-  return s;
+  return {};
 }
 
 std::string_view to_string(IlsStatus status) {

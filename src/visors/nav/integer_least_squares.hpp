@@ -19,7 +19,7 @@
 
 #include <Eigen/Core>
 
-#include "visors/core/result.hpp"
+#include "visors/core/status.hpp"
 #include "visors/nav/ambiguity_capacity.hpp"
 #include "visors/nav/lambda_reduction.hpp"
 
@@ -33,7 +33,7 @@ struct IlsSettings {
 };
 
 /// Each value checked; the error names the field.
-core::Result<IlsSettings> validate(const IlsSettings& settings);
+core::Status validate(const IlsSettings& settings);
 
 enum class IlsStatus {
   kOk,

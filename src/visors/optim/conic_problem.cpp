@@ -1,7 +1,6 @@
 #include "visors/optim/conic_problem.hpp"
 
 #include <cmath>
-#include <string>
 
 namespace visors::optim {
 namespace {
@@ -21,14 +20,14 @@ int ConicDimensions::m() const {
   return rows;
 }
 
-core::Result<bool> validate_dimensions(const ConicDimensions& dims) {
-  if (dims.n < 1) return core::Error{"dims.n", "must be >= 1"};
-  if (dims.p < 0) return core::Error{"dims.p", "must be >= 0"};
-  if (dims.l < 0) return core::Error{"dims.l", "must be >= 0"};
-  for (std::size_t k = 0; k < dims.q.size(); ++k) {
-    if (dims.q[k] < 1) return core::Error{"dims.q[" + std::to_string(k) + "]", "must be >= 1"};
+core::Status validate_dimensions(const ConicDimensions& dims) {
+  if (dims.n < 1) return core::Status{core::Problem::kOutOfRange, "dims.n", "must be >= 1"};
+  if (dims.p < 0) return core::Status{core::Problem::kOutOfRange, "dims.p", "must be >= 0"};
+  if (dims.l < 0) return core::Status{core::Problem::kOutOfRange, "dims.l", "must be >= 0"};
+  for (const int dim : dims.q) {
+    if (dim < 1) return core::Status{core::Problem::kOutOfRange, "dims.q", "every cone's dimension must be >= 1"};
   }
-  return true;
+  return {};
 }
 
 core::Status validate_problem(const ConicProblem& problem, const ConicDimensions& dims,

@@ -35,7 +35,7 @@ struct ConicProblem {
 };
 
 /// Checks the dimensions themselves (n >= 1, p >= 0, l >= 0, every q_k >= 1).
-core::Result<bool> validate_dimensions(const ConicDimensions& dims);
+core::Status validate_dimensions(const ConicDimensions& dims);
 
 /// Checks the data against `dims`: sizes, finiteness, P symmetric (relative tolerance
 /// `symmetry_tolerance`). Names the field ("G", "h", "P", ...) on rejection. Positive

@@ -53,7 +53,7 @@ bool solve_for_direction(const astro::ControlInputMatrix& gamma, const RelativeO
 
 }  // namespace
 
-core::Outcome<EscapeSettings> validate(const EscapeSettings& s) {
+core::Status validate(const EscapeSettings& s) {
   if (!(s.epsilon_m >= 0.0) || !std::isfinite(s.epsilon_m)) return core::Status{core::Problem::kOutOfRange, "epsilon_m", "must be a finite number >= 0 m"};
   if (!(s.da_target_m > 0.0) || !std::isfinite(s.da_target_m)) return core::Status{core::Problem::kOutOfRange, "da_target_m", "must be a finite number > 0 m"};
   if (!(s.q_sigma >= 0.0) || s.q_sigma > 10.0) return core::Status{core::Problem::kOutOfRange, "q_sigma", "must be in [0, 10]"};
@@ -65,7 +65,7 @@ core::Outcome<EscapeSettings> validate(const EscapeSettings& s) {
     return core::Status{core::Problem::kOutOfRange, "search_window_orbits", "must be in [0, 10] orbits"};
   }
   if (!(s.dv_sigma_mps >= 0.0) || !std::isfinite(s.dv_sigma_mps)) return core::Status{core::Problem::kOutOfRange, "dv_sigma_mps", "must be a finite number >= 0 m/s"};
-  return s;
+  return {};
 }
 
 namespace {
@@ -73,7 +73,7 @@ namespace {
 core::Status check_escape_inputs(const astro::KeplerianElements& chief_mean_t0, const RelativeOrbitalElements& roe,
                                        const RoeCovariance& covariance, double t_earliest,
                                        const EscapeSettings& settings, const core::EarthGravityConstants& gravity) {
-  if (const core::Status checked = validate(settings).status(); !checked) return checked;
+  if (const core::Status checked = validate(settings); !checked) return checked;
   if (const core::Status inputs = validate_safety_inputs(chief_mean_t0, roe, covariance, gravity); !inputs) return inputs;
   if (!(t_earliest >= 0.0) || !std::isfinite(t_earliest)) return core::Status{core::Problem::kOutOfRange, "t_earliest", "must be a finite number >= 0 s"};
   return {};

@@ -59,7 +59,7 @@ struct EscapeSettings {
 };
 
 /// Each value checked; the error names the field ("epsilon_m", "da_target_m", ...).
-core::Outcome<EscapeSettings> validate(const EscapeSettings& settings);
+core::Status validate(const EscapeSettings& settings);
 
 struct EscapeManeuver {
   control::Impulse impulse;                         // t since t0 [s], dv_rtn [m/s]

@@ -200,7 +200,7 @@ core::Outcome<SafetyAssessment> evaluate_passive_safety(const astro::KeplerianEl
                                                        const RoeCovariance& covariance,
                                                        const PassiveSafetySettings& settings,
                                                        const core::EarthGravityConstants& gravity) {
-  if (const core::Status checked = validate(settings).status(); !checked) return checked;
+  if (const core::Status checked = validate(settings); !checked) return checked;
   if (const core::Status inputs = validate_safety_inputs(chief_mean, roe, covariance, gravity); !inputs) return inputs;
 
   const SeparationModel model(chief_mean, roe, covariance, settings.plane, gravity);

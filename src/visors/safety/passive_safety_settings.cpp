@@ -4,7 +4,7 @@
 
 namespace visors::safety {
 
-core::Outcome<PassiveSafetySettings> validate(const PassiveSafetySettings& s) {
+core::Status validate(const PassiveSafetySettings& s) {
   if (!(s.epsilon_m >= 0.0) || !std::isfinite(s.epsilon_m)) return core::Status{core::Problem::kOutOfRange, "epsilon_m", "must be a finite number >= 0 m"};
   if (!(s.horizon_orbits > 0.0) || s.horizon_orbits > 100.0) {
     return core::Status{core::Problem::kOutOfRange, "horizon_orbits", "must be in (0, 100] orbits"};
@@ -16,7 +16,7 @@ core::Outcome<PassiveSafetySettings> validate(const PassiveSafetySettings& s) {
   if (s.samples_per_orbit < 8 || s.samples_per_orbit > 100000) {
     return core::Status{core::Problem::kOutOfRange, "samples_per_orbit", "must be in [8, 100000]"};
   }
-  return s;
+  return {};
 }
 
 }  // namespace visors::safety

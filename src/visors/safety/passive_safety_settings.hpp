@@ -24,6 +24,6 @@ struct PassiveSafetySettings {
 };
 
 /// Each value checked; the error names the field ("epsilon_m", "horizon_orbits", ...).
-core::Outcome<PassiveSafetySettings> validate(const PassiveSafetySettings& settings);
+core::Status validate(const PassiveSafetySettings& settings);
 
 }  // namespace visors::safety

@@ -72,7 +72,7 @@ std::optional<Error> load_tables(const ForceModelConfig& config, ForceModelData&
 }  // namespace
 
 core::Result<ForceModel> load_force_model(const ForceModelConfig& config, const SpacecraftProperties& spacecraft) {
-  if (auto invalid = ForceModel::check_inputs(config, spacecraft)) return *invalid;
+  if (const core::Status ok = ForceModel::check_inputs(config, spacecraft); !ok) return ok.error();
   ForceModelData data;
   auto field = gravity_field_for(config.gravity, data.gravity_fallback);
   if (!field) return field.error();
