@@ -107,22 +107,21 @@ TEST(FlightComponent, PassiveSpacecraftNeverFires) {
   EXPECT_EQ(maneuvers, 0);
 }
 
-TEST(FlightComponent, NanNavigationIsCountedAndNotUsed) {
+// One step with a navigation solution whose chief velocity is NaN.
+Telemetry nan_navigation_step() {
   auto c = make(Spacecraft::kOsc, true);
   test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
   auto in = h.inputs(0.0);
   in.navigation->chief_gcrf.v.y() = std::numeric_limits<double>::quiet_NaN();
-  const auto out = c.step(in);
-  EXPECT_EQ(out.telemetry.rejected.of(Channel::kNavigation), 1);
+  return c.step(in).telemetry;
+}
+
+TEST(FlightComponent, NanNavigationIsCountedAndNotUsed) {
+  EXPECT_EQ(nan_navigation_step().rejected.of(Channel::kNavigation), 1);
 }
 
 TEST(FlightComponent, NanNavigationIsCountedAsNotFinite) {
-  auto c = make(Spacecraft::kOsc, true);
-  test::FormationHarness h(test::mission_chief(), test::roe_m(0, 0, 0, 200, 0, 200), kT0);
-  auto in = h.inputs(0.0);
-  in.navigation->chief_gcrf.v.y() = std::numeric_limits<double>::quiet_NaN();
-  const auto out = c.step(in);
-  EXPECT_EQ(out.telemetry.rejected.of(RejectionReason::kNotFinite), 1);
+  EXPECT_EQ(nan_navigation_step().rejected.of(RejectionReason::kNotFinite), 1);
 }
 
 TEST(FlightComponent, NoEstimateMeansGncIncapable) {

@@ -4,7 +4,6 @@
 // noise: the mission's receiver as simulated in Guffanti et al., AAS 23-149, 2023, sec. 5 (20 cm
 // code, 2 mm phase, undifferenced).
 
-#include <optional>
 
 #include "visors/core/status.hpp"
 #include "visors/nav/ambiguity_acceptance.hpp"

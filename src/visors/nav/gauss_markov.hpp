@@ -43,7 +43,6 @@
 // The series branch is scaled by powers of dt and the closed-form branch by powers of tau, the
 // smaller of the two in each, so that neither underflows nor overflows for tiny or large x.
 
-#include <optional>
 
 #include <Eigen/Core>
 
