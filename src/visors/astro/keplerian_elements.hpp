@@ -34,7 +34,7 @@ core::Outcome<KeplerianElements> validate_keplerian(const KeplerianElements& ele
 /// Two-body Cartesian state of validated elements (no check; see keplerian_to_cartesian).
 core::StateVector cartesian_from_keplerian(const KeplerianElements& elements, double mu);
 
-/// Checked conversion: invalid elements or mu <= 0 ("mu") give an Error.
+/// Checked conversion: invalid elements or mu <= 0 ("mu") give a failed Outcome.
 core::Outcome<core::StateVector> keplerian_to_cartesian(const KeplerianElements& elements,
                                                     double mu = core::EarthGravityConstants{}.mu);
 

@@ -2,11 +2,12 @@
 // The flight layers' one status type: ok, or a problem as a code, the offending input's name and
 // what is wrong with it, every text a string literal (static storage), so that refusing an input
 // or failing a plan costs no heap allocation in a flight step. What the channel messages'
-// validation, the GPS epochs' checks, the planners' and the safety check's step-time calls and the
-// orbit conversions they make return: `Status`, or `Outcome<T>` when a value comes back.
+// validation, the GPS epochs' checks, the planners' and the safety check's step-time calls, the
+// orbit conversions they make and the flight settings' validators return: `Status`, or
+// `Outcome<T>` when a value comes back.
 // A caller that adds context does so with `within("chief_mean_t0")`, which prepends a scope
 // (a literal too) instead of composing a string. `error()` turns either into a core::Error
-// (core/result.hpp) for the ground and for creation-time validation, whose texts may be composed:
+// (core/result.hpp) for the ground and for a component's create(), whose texts may be composed:
 // that conversion allocates.
 
 #include <array>
@@ -82,7 +83,7 @@ class [[nodiscard]] Status {
 
   /// The full name, scopes and field joined by '.' (allocates: for the ground).
   [[nodiscard]] std::string path() const;
-  /// As an Error, for ground callers and creation-time validation (this allocates).
+  /// As an Error, for ground callers and a component's create() (this allocates).
   [[nodiscard]] Error error() const { return Error{path(), std::string(message())}; }
 
  private:

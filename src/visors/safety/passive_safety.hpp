@@ -25,7 +25,7 @@
 // d(t) - q sigma_d(t), and min_separation_margin is its minimum over the horizon (refined like the
 // separation, and never larger than min_separation - q sigma at t_min). safe = margin >= epsilon.
 //
-// No heap allocation per call (fixed-size Eigen only); invalid input returns an Error.
+// No heap allocation per call (fixed-size Eigen only); invalid input returns a core::Status (no allocation either).
 //
 // Checks (tests/safety/test_passive_safety.cpp): the closed form below (re-derived there) equals
 // 2e6-point sampling to 5e-10 m; for the science orbit it gives 18.91598 m, and near-circular
